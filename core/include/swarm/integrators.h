@@ -1,0 +1,30 @@
+#pragma once
+/// One step of each method on an isolated system. All share the signature
+/// void(System&, double dt) so that any two can run side by side from one initial state.
+
+#include <vector>
+
+#include "swarm/method.h"
+#include "swarm/system.h"
+
+namespace swarm {
+
+/// a_i = -J sum_k m_k (r_i - r_k), summed over every pair (eq. 1, no centre-of-mass shortcut).
+void pairwise_accelerations(const System& s, std::vector<Vec3>& a);
+
+/// The exact map of the paper over dt: every particle moves on its analytic orbit about the
+/// centre of mass, which itself moves uniformly.
+void step_analytic(System& s, double dt);
+/// x += v dt, then v += a(x_old) dt.
+void step_euler(System& s, double dt);
+/// v += a dt, then x += v dt (the paper's Euler-Cromer).
+void step_euler_cromer(System& s, double dt);
+/// Velocity Verlet (kick-drift-kick).
+void step_verlet(System& s, double dt);
+/// Classical fourth-order Runge-Kutta.
+void step_rk4(System& s, double dt);
+
+/// Dispatches to the step function of method m.
+void step(Method m, System& s, double dt);
+
+}  // namespace swarm

@@ -1,0 +1,49 @@
+#pragma once
+/// The shared preset format (JSON, version 1): one file runs the same in the CLI, the desktop
+/// app and the browser. The README's "Preset reference" documents every key.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "swarm/initial_conditions.h"
+#include "swarm/protocol.h"
+
+namespace swarm {
+
+inline constexpr int kPresetVersion = 1;
+
+struct Preset {
+  std::string name;
+  std::string description;
+  double J = 1.0;
+  std::variant<std::vector<Particle>, SwarmSpec> particles = SwarmSpec{};
+  std::optional<double> container_radius;
+  Method method = Method::analytic;
+  CollisionMode collisions = CollisionMode::paper;
+  double dt = 1e-3;
+  double duration = 1.0;  ///< with an expansion: stages * tau, derived
+  std::optional<ExpansionProtocol> expansion;
+  std::optional<long> sample_every;  ///< none: about 2000 samples over the run
+};
+
+/// Either a valid preset or one message naming the field and the rule it breaks,
+/// e.g. "particles[3].m: must be > 0".
+struct PresetParse {
+  std::optional<Preset> preset;
+  std::string error;
+};
+
+PresetParse parse_preset(std::string_view json_text);
+/// Checks a preset built in code (the UI) against the same rules as parse_preset.
+std::string preset_error(const Preset& p);
+std::string preset_to_json(const Preset& p, int indent = 2);
+
+/// The initial system: the explicit particles, or the generated swarm, at t = 0 with J set.
+System initial_system(const Preset& p);
+RunPlan run_plan(const Preset& p);
+long step_count(const Preset& p);
+
+}  // namespace swarm

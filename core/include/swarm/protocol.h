@@ -1,0 +1,99 @@
+#pragma once
+/// Runs a scenario the way the paper does: a fixed container sampled at every interval, or
+/// the stepwise adiabatic expansion with thermalisation and averaging windows.
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "swarm/engine.h"
+#include "swarm/fit.h"
+#include "swarm/thermometry.h"
+
+namespace swarm {
+
+/// The container radius grows by `factor` every `tau`; within each stage the first
+/// thermalize_fraction of tau is left alone and P, T are averaged over the rest.
+struct ExpansionProtocol {
+  double factor = 1.1;
+  long stages = 10;
+  double tau = 1.0;
+  double thermalize_fraction = 0.8;
+};
+
+struct RunPlan {
+  EngineConfig engine;
+  double dt = 1e-3;
+  long steps = 1000;                       ///< for expansions: stages * steps_per_stage
+  long sample_every = 1;
+  std::optional<ExpansionProtocol> expansion;
+};
+
+/// Steps per expansion stage: round(tau / dt).
+long steps_per_stage(const ExpansionProtocol& e, double dt);
+
+struct Sample {
+  double t = 0;
+  double P = 0, T = 0;  ///< over the steps since the previous sample; 0 without a container
+  double KE = 0, PE = 0, E = 0;
+  long hits = 0;
+  double R = 0;  ///< container radius, 0 when isolated
+};
+
+struct Stage {
+  double R = 0, V = 0;
+  double P = 0, T = 0;  ///< averaged over the last (1 - thermalize_fraction) of the stage
+  double E = 0;         ///< total energy at the end of the stage
+  long hits = 0;        ///< wall hits in the averaging window
+};
+
+struct StageFits {
+  PowerLawFit P_V, T_V, P_T;
+};
+
+struct RunSummary {
+  double M = 0, omega = 0;  ///< omega = sqrt(|J| M)
+  double E0 = 0, E_end = 0, energy_drift = 0;
+  long wall_hits = 0, steps = 0;
+  double t_end = 0;
+};
+
+/// A run that can be advanced piecewise (the UI) or to the end (the CLI).
+class ProtocolRun {
+ public:
+  ProtocolRun(System initial, const RunPlan& plan);
+  ProtocolRun(std::unique_ptr<Engine> engine, const RunPlan& plan);
+
+  /// Advances up to n steps; returns how many were taken.
+  long advance(long n);
+  /// Runs to the end, calling progress(fraction done) now and then.
+  void finish(const std::function<void(double)>& progress = {});
+  bool finished() const { return steps_done_ >= plan_.steps; }
+  long steps_done() const { return steps_done_; }
+
+  Engine& engine() { return *engine_; }
+  const RunPlan& plan() const { return plan_; }
+  const std::vector<Sample>& samples() const { return samples_; }
+  const std::vector<Stage>& stages() const { return stages_; }
+  StageFits fits() const;
+  RunSummary summary();
+
+ private:
+  void step_once();
+  Sample sample_now();
+
+  std::unique_ptr<Engine> engine_;
+  RunPlan plan_;
+  long steps_done_ = 0;
+  long wall_hits_ = 0;
+  double E0_ = 0, energy_scale_ = 1;
+  WallMeter sample_meter_, stage_meter_;
+  std::vector<Sample> samples_;
+  std::vector<Stage> stages_;
+};
+
+/// Relative change (E_end - E0) / |E0|, or over KE0 + |PE0| when E0 is zero.
+double relative_energy_change(double E0, double E_end, double energy_scale);
+
+}  // namespace swarm

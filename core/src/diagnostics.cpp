@@ -1,0 +1,43 @@
+#include "swarm/diagnostics.h"
+
+namespace swarm {
+
+double kinetic_energy(const System& s) {
+  double ke = 0;
+  for (const auto& p : s.particles) ke += 0.5 * p.m * p.v.squaredNorm();
+  return ke;
+}
+
+double potential_energy_pairwise(const System& s) {
+  double sum = 0;  // over i < k, which is half the double sum of eq. 8
+  const auto& ps = s.particles;
+  for (std::size_t i = 0; i < ps.size(); ++i)
+    for (std::size_t k = i + 1; k < ps.size(); ++k)
+      sum += ps[i].m * ps[k].m * (ps[i].r - ps[k].r).squaredNorm();
+  return 0.5 * s.J * sum;
+}
+
+double potential_energy_cm(const System& s) {
+  const Vec3 R = cm_position(s);
+  double sum = 0;
+  for (const auto& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
+  return 0.5 * spring_rate(s) * sum;
+}
+
+double total_energy(const System& s) { return kinetic_energy(s) + potential_energy_cm(s); }
+
+Vec3 total_momentum(const System& s) {
+  Vec3 P = Vec3::Zero();
+  for (const auto& p : s.particles) P += p.m * p.v;
+  return P;
+}
+
+Vec3 angular_momentum_cm(const System& s) {
+  const Vec3 R = cm_position(s);
+  const Vec3 V = cm_velocity(s);
+  Vec3 L = Vec3::Zero();
+  for (const auto& p : s.particles) L += p.m * (p.r - R).cross(p.v - V);
+  return L;
+}
+
+}  // namespace swarm

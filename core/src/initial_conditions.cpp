@@ -1,0 +1,58 @@
+#include "swarm/initial_conditions.h"
+
+#include <cmath>
+#include <random>
+
+namespace swarm {
+namespace {
+
+// std::uniform_real_distribution and std::normal_distribution differ between standard
+// libraries, so the native and WebAssembly builds would draw different swarms from one seed.
+class Random {
+ public:
+  explicit Random(std::uint64_t seed) : engine_(seed) {}
+  /// Uniform in [0, 1) with 53 random bits.
+  double uniform() { return double(engine_() >> 11) * 0x1.0p-53; }
+  double uniform(double a, double b) { return a + (b - a) * uniform(); }
+  /// Standard normal by the Box-Muller transform.
+  double normal() {
+    const double u1 = 1.0 - uniform();  // in (0, 1], so the log is finite
+    const double u2 = uniform();
+    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
+  }
+  /// Uniform in the ball of radius r, by rejection from the enclosing cube.
+  Vec3 in_ball(double r) {
+    for (;;) {
+      const Vec3 p(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+      if (p.squaredNorm() <= 1) return r * p;
+    }
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+}  // namespace
+
+System generate_swarm(const SwarmSpec& spec) {
+  Random rng(spec.seed);
+  System s;
+  s.particles.resize(std::size_t(spec.count));
+  for (auto& p : s.particles) p.m = rng.uniform(spec.mass_min, spec.mass_max);
+  for (auto& p : s.particles) p.r = rng.in_ball(spec.position_radius);
+  for (auto& p : s.particles) {
+    if (spec.velocities == SwarmSpec::Velocities::ball) {
+      p.v = rng.in_ball(spec.speed);
+    } else {
+      const double sigma = std::sqrt(spec.temperature / p.m);
+      p.v = sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
+    }
+  }
+  if (spec.cm_at_rest) {
+    const Vec3 V = cm_velocity(s);
+    for (auto& p : s.particles) p.v -= V;
+  }
+  return s;
+}
+
+}  // namespace swarm

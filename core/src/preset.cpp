@@ -1,0 +1,375 @@
+#include "swarm/preset.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "swarm/regime.h"
+
+namespace swarm {
+namespace {
+
+using json = nlohmann::json;
+
+constexpr long kMaxParticles = 10'000'000;
+constexpr long kMaxPairwiseParticles = 20'000;
+constexpr double kMaxSteps = 1e9;
+constexpr double kMaxRunawayExponent = 700;  // exp(700) is near the largest double
+
+struct Invalid {
+  std::string message;
+};
+
+[[noreturn]] void fail(const std::string& field, const std::string& rule) {
+  throw Invalid{field + ": " + rule};
+}
+
+std::string format(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+std::string join(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+/// Reads one JSON object and refuses keys it does not know.
+class Fields {
+ public:
+  Fields(const json& j, std::string path, std::initializer_list<const char*> allowed)
+      : j_(j), path_(std::move(path)) {
+    if (!j.is_object()) fail(path_.empty() ? "preset" : path_, "must be a JSON object");
+    for (const auto& [key, value] : j.items()) {
+      bool known = false;
+      std::string list;
+      for (const char* a : allowed) {
+        known = known || key == a;
+        list += (list.empty() ? "" : ", ") + std::string(a);
+      }
+      if (!known) fail(join(path_, key), "unknown key (allowed here: " + list + ")");
+    }
+  }
+
+  bool has(const char* key) const { return j_.contains(key) && !j_.at(key).is_null(); }
+  const json& at(const char* key) const { return j_.at(key); }
+  std::string path(const char* key) const { return join(path_, key); }
+
+  double number(const char* key) const {
+    if (!has(key)) fail(path(key), "missing (a number is required)");
+    return number_value(at(key), path(key));
+  }
+  double number(const char* key, double fallback) const {
+    return has(key) ? number_value(at(key), path(key)) : fallback;
+  }
+  long integer(const char* key, long lo, long hi) const {
+    if (!has(key)) fail(path(key), "missing (an integer is required)");
+    const json& v = at(key);
+    if (!v.is_number_integer())
+      fail(path(key), v.is_number() ? "must be a whole number" : "must be an integer");
+    const long long x = v.is_number_unsigned() ? (long long)std::min<unsigned long long>(
+                                                     v.get<unsigned long long>(), 1ull << 62)
+                                               : v.get<long long>();
+    if (x < lo || x > hi)
+      fail(path(key), "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
+    return long(x);
+  }
+  std::string text(const char* key, const std::string& fallback) const {
+    if (!has(key)) return fallback;
+    if (!at(key).is_string()) fail(path(key), "must be a string");
+    return at(key).get<std::string>();
+  }
+  bool flag(const char* key, bool fallback) const {
+    if (!has(key)) return fallback;
+    if (!at(key).is_boolean()) fail(path(key), "must be true or false");
+    return at(key).get<bool>();
+  }
+
+  static double number_value(const json& v, const std::string& path) {
+    if (!v.is_number()) fail(path, "must be a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) fail(path, "must be a finite number");
+    return x;
+  }
+
+ private:
+  const json& j_;
+  std::string path_;
+};
+
+void require(bool ok, const std::string& field, const std::string& rule) {
+  if (!ok) fail(field, rule);
+}
+
+Vec3 vector3(const json& v, const std::string& path) {
+  if (!v.is_array() || v.size() != 3) fail(path, "must be an array of 3 numbers [x, y, z]");
+  return {Fields::number_value(v[0], path + "[0]"), Fields::number_value(v[1], path + "[1]"),
+          Fields::number_value(v[2], path + "[2]")};
+}
+
+std::vector<Particle> particle_list(const json& list) {
+  require(!list.empty(), "particles", "must hold at least one particle");
+  require(long(list.size()) <= kMaxParticles, "particles",
+          "must hold at most " + std::to_string(kMaxParticles) + " particles");
+  std::vector<Particle> out;
+  out.reserve(list.size());
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = "particles[" + std::to_string(i) + "]";
+    const Fields f(list[i], path, {"m", "r", "v"});
+    Particle p;
+    p.m = f.number("m");
+    require(p.m > 0, f.path("m"), "must be > 0");
+    if (!f.has("r")) fail(f.path("r"), "missing (an array of 3 numbers is required)");
+    if (!f.has("v")) fail(f.path("v"), "missing (an array of 3 numbers is required)");
+    p.r = vector3(f.at("r"), f.path("r"));
+    p.v = vector3(f.at("v"), f.path("v"));
+    out.push_back(p);
+  }
+  return out;
+}
+
+SwarmSpec swarm_spec(const json& j) {
+  const Fields f(j, "particles",
+                 {"count", "mass", "position_radius", "velocity", "cm_at_rest", "seed"});
+  SwarmSpec s;
+  s.count = f.integer("count", 1, kMaxParticles);
+  if (f.has("mass") && f.at("mass").is_object()) {
+    const Fields m(f.at("mass"), "particles.mass", {"min", "max"});
+    s.mass_min = m.number("min");
+    s.mass_max = m.number("max");
+    require(s.mass_min > 0, m.path("min"), "must be > 0");
+    require(s.mass_max >= s.mass_min, m.path("max"), "must be >= particles.mass.min");
+  } else if (f.has("mass")) {
+    if (!f.at("mass").is_number())
+      fail(f.path("mass"), "must be a number (equal masses) or {\"min\": a, \"max\": b}");
+    s.mass_min = s.mass_max = f.number("mass");
+    require(s.mass_min > 0, f.path("mass"), "must be > 0");
+  }
+  s.position_radius = f.number("position_radius");
+  require(s.position_radius > 0, f.path("position_radius"), "must be > 0");
+  if (!f.has("velocity"))
+    fail(f.path("velocity"), "missing ({\"speed\": s} or {\"temperature\": T} is required)");
+  const Fields v(f.at("velocity"), "particles.velocity", {"speed", "temperature"});
+  require(v.has("speed") != v.has("temperature"), "particles.velocity",
+          "give exactly one of \"speed\" (uniform in a ball) or \"temperature\" (Maxwellian)");
+  if (v.has("speed")) {
+    s.velocities = SwarmSpec::Velocities::ball;
+    s.speed = v.number("speed");
+    require(s.speed >= 0, v.path("speed"), "must be >= 0");
+  } else {
+    s.velocities = SwarmSpec::Velocities::maxwell;
+    s.temperature = v.number("temperature");
+    require(s.temperature >= 0, v.path("temperature"), "must be >= 0");
+  }
+  s.cm_at_rest = f.flag("cm_at_rest", false);
+  s.seed = std::uint64_t(f.has("seed") ? f.integer("seed", 0, (1L << 53)) : 1);
+  return s;
+}
+
+Preset parse(const json& j) {
+  const Fields f(j, "", {"version", "name", "description", "J", "particles", "container",
+                         "method", "collisions", "dt", "duration", "expansion", "sample_every"});
+  if (f.has("version"))
+    require(f.at("version") == kPresetVersion, "version",
+            "must be " + std::to_string(kPresetVersion) + " (the only preset version so far)");
+  Preset p;
+  p.name = f.text("name", "");
+  p.description = f.text("description", "");
+  p.J = f.number("J");
+
+  if (!f.has("particles"))
+    fail("particles", "missing (a list of particles or a generator object is required)");
+  if (f.at("particles").is_array())
+    p.particles = particle_list(f.at("particles"));
+  else if (f.at("particles").is_object())
+    p.particles = swarm_spec(f.at("particles"));
+  else
+    fail("particles", "must be a list of particles or a generator object");
+
+  if (f.has("container")) {
+    const Fields c(f.at("container"), "container", {"radius"});
+    p.container_radius = c.number("radius");
+    require(*p.container_radius > 0, "container.radius", "must be > 0");
+  }
+
+  const std::string method = f.text("method", "analytic");
+  const auto m = method_named(method);
+  require(m.has_value(), "method",
+          "unknown method \"" + method +
+              "\" (use analytic, euler, euler-cromer, verlet or rk4)");
+  p.method = *m;
+  const std::string collisions = f.text("collisions", "paper");
+  const auto c = collision_mode_named(collisions);
+  require(c.has_value(), "collisions", "must be \"paper\" or \"exact\"");
+  p.collisions = *c;
+  require(!(p.collisions == CollisionMode::exact && p.method != Method::analytic), "collisions",
+          "\"exact\" needs method \"analytic\" (the wall time is solved from the analytic orbit)");
+
+  p.dt = f.number("dt");
+  require(p.dt > 0, "dt", "must be > 0");
+
+  if (f.has("expansion")) {
+    require(p.container_radius.has_value(), "expansion", "needs a container");
+    require(!f.has("duration"), "duration",
+            "leave it out when an expansion is given (the run lasts stages * tau)");
+    const Fields e(f.at("expansion"), "expansion", {"factor", "stages", "tau", "thermalize"});
+    ExpansionProtocol x;
+    x.factor = e.number("factor");
+    require(x.factor >= 1, e.path("factor"), "must be >= 1 (the container only grows)");
+    x.stages = e.integer("stages", 1, 1'000'000);
+    x.tau = e.number("tau");
+    require(x.tau >= p.dt, e.path("tau"), "must be >= dt");
+    x.thermalize_fraction = e.number("thermalize", 0.8);
+    require(x.thermalize_fraction >= 0 && x.thermalize_fraction < 1, e.path("thermalize"),
+            "must be in [0, 1)");
+    p.expansion = x;
+    p.duration = double(x.stages) * double(steps_per_stage(x, p.dt)) * p.dt;
+  } else {
+    p.duration = f.number("duration");
+    require(p.duration > 0, "duration", "must be > 0");
+  }
+  const double steps = p.expansion ? double(p.expansion->stages) *
+                                         double(steps_per_stage(*p.expansion, p.dt))
+                                   : std::round(p.duration / p.dt);
+  require(steps >= 1 && steps <= kMaxSteps, p.expansion ? "expansion" : "duration",
+          "must give between 1 and 1e9 steps of dt (got " + format(steps) + ")");
+  if (f.has("sample_every")) p.sample_every = f.integer("sample_every", 1, kMaxParticles * 100);
+  return p;
+}
+
+/// Rules that look at the particles and the rest of the preset together.
+void check_consistency(const Preset& p) {
+  long count = 0;
+  double max_mass_sum = 0;
+  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
+    count = long(list->size());
+    for (const auto& q : *list) max_mass_sum += q.m;
+    if (p.container_radius) {
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        const double r = (*list)[i].r.norm();
+        require(r <= *p.container_radius, "particles[" + std::to_string(i) + "].r",
+                "starts outside the container (|r| = " + format(r) + " > container.radius = " +
+                    format(*p.container_radius) + ")");
+      }
+    }
+  } else {
+    const auto& s = std::get<SwarmSpec>(p.particles);
+    count = s.count;
+    max_mass_sum = double(s.count) * s.mass_max;
+    if (p.container_radius)
+      require(s.position_radius <= *p.container_radius, "particles.position_radius",
+              "must be <= container.radius (particles must start inside the container)");
+  }
+  if (is_pairwise(p.method))
+    require(count <= kMaxPairwiseParticles, "method",
+            "\"" + std::string(name_of(p.method)) + "\" sums over every pair: use at most " +
+                std::to_string(kMaxPairwiseParticles) + " particles (got " +
+                std::to_string(count) + ")");
+  if (!p.container_radius && p.J < 0) {
+    const double growth = std::sqrt(-p.J * max_mass_sum) * p.duration;
+    require(growth <= kMaxRunawayExponent, "duration",
+            "an isolated repulsive system grows as exp(Omega t): Omega * duration must be <= " +
+                format(kMaxRunawayExponent) + " (got " + format(growth) + ")");
+  }
+}
+
+json to_json(const Preset& p) {
+  json j;
+  j["version"] = kPresetVersion;
+  if (!p.name.empty()) j["name"] = p.name;
+  if (!p.description.empty()) j["description"] = p.description;
+  j["J"] = p.J;
+  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
+    json arr = json::array();
+    for (const auto& q : *list)
+      arr.push_back({{"m", q.m},
+                     {"r", {q.r.x(), q.r.y(), q.r.z()}},
+                     {"v", {q.v.x(), q.v.y(), q.v.z()}}});
+    j["particles"] = arr;
+  } else {
+    const auto& s = std::get<SwarmSpec>(p.particles);
+    json g;
+    g["count"] = s.count;
+    if (s.mass_min == s.mass_max)
+      g["mass"] = s.mass_min;
+    else
+      g["mass"] = {{"min", s.mass_min}, {"max", s.mass_max}};
+    g["position_radius"] = s.position_radius;
+    if (s.velocities == SwarmSpec::Velocities::ball)
+      g["velocity"] = {{"speed", s.speed}};
+    else
+      g["velocity"] = {{"temperature", s.temperature}};
+    g["cm_at_rest"] = s.cm_at_rest;
+    g["seed"] = s.seed;
+    j["particles"] = g;
+  }
+  j["container"] = p.container_radius ? json{{"radius", *p.container_radius}} : json(nullptr);
+  j["method"] = std::string(name_of(p.method));
+  j["collisions"] = std::string(name_of(p.collisions));
+  j["dt"] = p.dt;
+  if (p.expansion) {
+    j["expansion"] = {{"factor", p.expansion->factor},
+                      {"stages", p.expansion->stages},
+                      {"tau", p.expansion->tau},
+                      {"thermalize", p.expansion->thermalize_fraction}};
+  } else {
+    j["duration"] = p.duration;
+  }
+  if (p.sample_every) j["sample_every"] = *p.sample_every;
+  return j;
+}
+
+}  // namespace
+
+PresetParse parse_preset(std::string_view json_text) {
+  PresetParse out;
+  json j;
+  try {
+    j = json::parse(json_text.begin(), json_text.end());
+  } catch (const json::parse_error& e) {
+    out.error = std::string("preset: not valid JSON (") + e.what() + ")";
+    return out;
+  }
+  try {
+    Preset p = parse(j);
+    check_consistency(p);
+    out.preset = std::move(p);
+  } catch (const Invalid& e) {
+    out.error = e.message;
+  } catch (const json::exception& e) {
+    out.error = std::string("preset: ") + e.what();
+  }
+  return out;
+}
+
+std::string preset_error(const Preset& p) { return parse_preset(preset_to_json(p)).error; }
+
+std::string preset_to_json(const Preset& p, int indent) { return to_json(p).dump(indent); }
+
+System initial_system(const Preset& p) {
+  System s;
+  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles))
+    s.particles = *list;
+  else
+    s = generate_swarm(std::get<SwarmSpec>(p.particles));
+  s.J = p.J;
+  s.t = 0;
+  return s;
+}
+
+long step_count(const Preset& p) {
+  if (p.expansion) return p.expansion->stages * steps_per_stage(*p.expansion, p.dt);
+  return std::max(1L, std::lround(p.duration / p.dt));
+}
+
+RunPlan run_plan(const Preset& p) {
+  RunPlan plan;
+  plan.engine = {p.method, p.collisions, p.container_radius};
+  plan.dt = p.dt;
+  plan.steps = step_count(p);
+  plan.sample_every = p.sample_every.value_or(std::max(1L, plan.steps / 2000));
+  plan.expansion = p.expansion;
+  return plan;
+}
+
+}  // namespace swarm

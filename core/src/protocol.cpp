@@ -1,0 +1,111 @@
+#include "swarm/protocol.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "swarm/diagnostics.h"
+
+namespace swarm {
+
+long steps_per_stage(const ExpansionProtocol& e, double dt) {
+  return std::max(1L, std::lround(e.tau / dt));
+}
+
+double relative_energy_change(double E0, double E_end, double energy_scale) {
+  const double scale = E0 != 0 ? std::abs(E0) : energy_scale;
+  return scale > 0 ? (E_end - E0) / scale : 0.0;
+}
+
+ProtocolRun::ProtocolRun(System initial, const RunPlan& plan)
+    : ProtocolRun(make_engine(std::move(initial), plan.engine), plan) {}
+
+ProtocolRun::ProtocolRun(std::unique_ptr<Engine> engine, const RunPlan& plan)
+    : engine_(std::move(engine)), plan_(plan) {
+  const System& s = engine_->system();
+  E0_ = total_energy(s);
+  energy_scale_ = kinetic_energy(s) + std::abs(potential_energy_cm(s));
+  samples_.push_back(sample_now());
+}
+
+Sample ProtocolRun::sample_now() {
+  const System& s = engine_->system();
+  Sample out;
+  out.t = s.t;
+  const WallReading w = sample_meter_.reading();
+  out.P = w.P;
+  out.T = w.T;
+  out.hits = w.hits;
+  out.KE = kinetic_energy(s);
+  out.PE = potential_energy_cm(s);
+  out.E = out.KE + out.PE;
+  out.R = engine_->container_radius().value_or(0.0);
+  sample_meter_.reset();
+  return out;
+}
+
+void ProtocolRun::step_once() {
+  const double R = engine_->container_radius().value_or(0.0);
+  const WallTally tally = engine_->step(plan_.dt);
+  ++steps_done_;
+  wall_hits_ += tally.hits;
+  sample_meter_.add(tally, plan_.dt, R);
+
+  if (plan_.expansion) {
+    const ExpansionProtocol& e = *plan_.expansion;
+    const long per_stage = steps_per_stage(e, plan_.dt);
+    const long in_stage = (steps_done_ - 1) % per_stage;  // index of the step just taken
+    if (in_stage >= std::lround(e.thermalize_fraction * double(per_stage)))
+      stage_meter_.add(tally, plan_.dt, R);
+    if (in_stage == per_stage - 1) {
+      const WallReading w = stage_meter_.reading();
+      stages_.push_back({R, sphere_volume(R), w.P, w.T, total_energy(engine_->system()), w.hits});
+      stage_meter_.reset();
+      if (long(stages_.size()) < e.stages) engine_->set_container_radius(R * e.factor);
+    }
+  }
+  if (steps_done_ % plan_.sample_every == 0 || steps_done_ == plan_.steps)
+    samples_.push_back(sample_now());
+}
+
+long ProtocolRun::advance(long n) {
+  long taken = 0;
+  while (taken < n && !finished()) {
+    step_once();
+    ++taken;
+  }
+  return taken;
+}
+
+void ProtocolRun::finish(const std::function<void(double)>& progress) {
+  const long chunk = std::max(1L, plan_.steps / 1000);
+  while (!finished()) {
+    advance(chunk);
+    if (progress) progress(double(steps_done_) / double(plan_.steps));
+  }
+}
+
+StageFits ProtocolRun::fits() const {
+  std::vector<double> V, P, T;
+  for (const Stage& s : stages_) {
+    V.push_back(s.V);
+    P.push_back(s.P);
+    T.push_back(s.T);
+  }
+  return {fit_power_law(V, P), fit_power_law(V, T), fit_power_law(T, P)};
+}
+
+RunSummary ProtocolRun::summary() {
+  const System& s = engine_->system();
+  RunSummary out;
+  out.M = total_mass(s);
+  out.omega = std::sqrt(std::abs(s.J) * out.M);
+  out.E0 = E0_;
+  out.E_end = total_energy(s);
+  out.energy_drift = relative_energy_change(E0_, out.E_end, energy_scale_);
+  out.wall_hits = wall_hits_;
+  out.steps = steps_done_;
+  out.t_end = s.t;
+  return out;
+}
+
+}  // namespace swarm

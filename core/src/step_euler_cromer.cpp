@@ -1,0 +1,16 @@
+#include "swarm/integrators.h"
+
+namespace swarm {
+
+void step_euler_cromer(System& s, double dt) {
+  std::vector<Vec3> a;
+  pairwise_accelerations(s, a);
+  for (std::size_t i = 0; i < s.particles.size(); ++i) {
+    auto& p = s.particles[i];
+    p.v += a[i] * dt;
+    p.r += p.v * dt;  // with the new velocity: this is what keeps the energy bounded
+  }
+  s.t += dt;
+}
+
+}  // namespace swarm
