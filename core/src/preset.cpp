@@ -329,6 +329,9 @@ PresetParse parse_preset(std::string_view json_text) {
   } catch (const json::parse_error& e) {
     out.error = std::string("preset: not valid JSON (") + e.what() + ")";
     return out;
+  } catch (const json::exception& e) {  // e.g. a number beyond the range of a double
+    out.error = std::string("preset: a number cannot be read (") + e.what() + ")";
+    return out;
   }
   try {
     Preset p = parse(j);

@@ -1,0 +1,106 @@
+#include <cstdio>
+#include <fstream>
+#include <new>
+#include <stdexcept>
+
+#include "atomic_file.h"
+#include "cli.h"
+#include "preset_file.h"
+#include "progress_bar.h"
+#include "result_json.h"
+
+namespace swarmlab {
+namespace {
+
+/// Finds out before a long run, not after it, that an output file cannot be written.
+std::string check_writable(const std::string& path) {
+  if (path.empty()) return {};
+  const std::string probe = path + ".probe";
+  {
+    std::ofstream out(probe);
+    if (!out) return path + ": cannot write here";
+  }
+  std::remove(probe.c_str());
+  return {};
+}
+
+void print_table(const swarm::RunSummary& s, const swarm::ProtocolRun& run) {
+  std::printf("%-14s %.6g\n%-14s %.6g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %ld\n"
+              "%-14s %ld\n%-14s %.6g\n",
+              "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift",
+              s.energy_drift, "wall_hits", s.wall_hits, "steps", s.steps, "t_end", s.t_end);
+  if (!run.stages().empty()) {
+    std::printf("\n%6s %12s %12s %12s %12s %14s\n", "stage", "R", "V", "P", "T", "E");
+    for (std::size_t i = 0; i < run.stages().size(); ++i) {
+      const swarm::Stage& st = run.stages()[i];
+      std::printf("%6zu %12.5g %12.5g %12.5g %12.5g %14.8g\n", i, st.R, st.V, st.P, st.T, st.E);
+    }
+    const swarm::StageFits f = run.fits();
+    auto line = [](const char* name, const swarm::PowerLawFit& fit) {
+      if (fit.valid)
+        std::printf("fit %-4s exponent %+.4f +- %.4f   R^2 = %.4f\n", name, fit.slope,
+                    fit.slope_stderr, fit.r_squared);
+      else
+        std::printf("fit %-4s (fewer than 3 stages with P, T > 0)\n", name);
+    };
+    std::printf("\n");
+    line("P-V", f.P_V);
+    line("T-V", f.T_V);
+    line("P-T", f.P_T);
+  } else {
+    const auto& samples = run.samples();
+    const std::size_t rows = std::min<std::size_t>(samples.size(), 11);
+    std::printf("\n%12s %12s %12s %14s %14s %14s\n", "t", "P", "T", "KE", "PE", "E");
+    for (std::size_t r = 0; r < rows; ++r) {
+      const swarm::Sample& x = samples[r * (samples.size() - 1) / std::max<std::size_t>(1, rows - 1)];
+      std::printf("%12.5g %12.5g %12.5g %14.8g %14.8g %14.10g\n", x.t, x.P, x.T, x.KE, x.PE, x.E);
+    }
+  }
+}
+
+}  // namespace
+
+int run_command(const RunOptions& options) {
+  const swarm::PresetParse parsed = read_preset_file(options.preset_path);
+  if (!parsed.preset) {
+    std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
+    return 1;
+  }
+  for (const std::string* path : {&options.out_path, &options.csv_path}) {
+    if (const std::string err = check_writable(*path); !err.empty()) {
+      std::fprintf(stderr, "error: %s\n", err.c_str());
+      return 1;
+    }
+  }
+  try {
+    const swarm::Preset& preset = *parsed.preset;
+    swarm::ProtocolRun run(swarm::initial_system(preset), swarm::run_plan(preset));
+    ProgressBar bar("running", !options.quiet);
+    run.finish([&](double fraction) { bar.update(fraction); });
+    bar.finish();
+
+    // Build both outputs before writing either, so a failure leaves no file behind.
+    const std::string json = options.out_path.empty() ? "" : result_json(preset, run);
+    const std::string csv = options.csv_path.empty() ? "" : samples_csv(run);
+    if (!options.out_path.empty())
+      if (const std::string err = write_file_atomically(options.out_path, json); !err.empty()) {
+        std::fprintf(stderr, "error: %s\n", err.c_str());
+        return 1;
+      }
+    if (!options.csv_path.empty())
+      if (const std::string err = write_file_atomically(options.csv_path, csv); !err.empty()) {
+        std::remove(options.out_path.c_str());
+        std::fprintf(stderr, "error: %s\n", err.c_str());
+        return 1;
+      }
+    if (!options.quiet) print_table(run.summary(), run);
+    return 0;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "error: not enough memory for this preset\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  }
+  return 1;
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,47 @@
+// swarmlab: the desktop window by default, headless subcommands for scripts and CI.
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "cli.h"
+#ifdef SWARMLAB_HAS_DESKTOP
+#include "desktop/desktop.h"
+#endif
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Swarm Lab: N particles coupled pairwise by F = -J m1 m2 r, solved exactly.\n"
+      "Without a subcommand it opens the desktop window (optionally with PRESET.json)."};
+  app.require_subcommand(0, 1);
+
+  std::string window_preset;
+  int frames = 0;
+  std::string screenshot;
+  app.add_option("preset", window_preset, "Preset to open in the window")->check(CLI::ExistingFile);
+  app.add_option("--frames", frames, "Run this many frames, then exit (0: run until closed)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--screenshot", screenshot, "After the last frame, save the window as PNG");
+
+  swarmlab::RunOptions run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Run a preset headless and report the results");
+  run_cmd->add_option("preset", run.preset_path, "Preset file (JSON)")->required();
+  run_cmd->add_option("--out", run.out_path,
+                      "Write RESULT.json: summary, samples, stages, fits and the final state");
+  run_cmd->add_option("--csv", run.csv_path, "Write the samples as CSV (t,P,T,KE,PE,E,hits,R)");
+  run_cmd->add_flag("--quiet,-q", run.quiet, "No progress bar and no table on the terminal");
+
+  std::string validate_path;
+  CLI::App* validate_cmd = app.add_subcommand("validate", "Check a preset and say what is wrong");
+  validate_cmd->add_option("preset", validate_path, "Preset file (JSON)")->required();
+
+  CLI11_PARSE(app, argc, argv);
+
+  if (*run_cmd) return swarmlab::run_command(run);
+  if (*validate_cmd) return swarmlab::validate_command(validate_path);
+#ifdef SWARMLAB_HAS_DESKTOP
+  return swarmlab::run_desktop({window_preset, frames, screenshot});
+#else
+  std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
+  return 2;
+#endif
+}

@@ -1,0 +1,66 @@
+#include "result_json.h"
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace swarmlab {
+namespace {
+
+using json = nlohmann::json;
+
+json fit_json(const swarm::PowerLawFit& f) {
+  if (!f.valid) return nullptr;
+  return {{"slope", f.slope},         {"slope_stderr", f.slope_stderr},
+          {"intercept", f.intercept}, {"r_squared", f.r_squared},
+          {"residuals", f.residuals}, {"points_used", f.used}};
+}
+
+json vec(const swarm::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+std::string result_json(const swarm::Preset& preset, swarm::ProtocolRun& run) {
+  const swarm::RunSummary s = run.summary();
+  json j;
+  j["preset"] = json::parse(swarm::preset_to_json(preset));
+  j["summary"] = {{"M", s.M},
+                  {"omega", s.omega},
+                  {"E0", s.E0},
+                  {"E_end", s.E_end},
+                  {"energy_drift", s.energy_drift},
+                  {"wall_hits", s.wall_hits},
+                  {"steps", s.steps},
+                  {"t_end", s.t_end}};
+  json samples = json::array();
+  for (const swarm::Sample& x : run.samples())
+    samples.push_back({{"t", x.t}, {"P", x.P}, {"T", x.T}, {"KE", x.KE}, {"PE", x.PE},
+                       {"E", x.E}, {"hits", x.hits}, {"R", x.R}});
+  j["samples"] = samples;
+  json stages = json::array();
+  for (const swarm::Stage& x : run.stages())
+    stages.push_back({{"R", x.R}, {"V", x.V}, {"P", x.P}, {"T", x.T}, {"E", x.E},
+                      {"hits", x.hits}});
+  j["stages"] = stages;
+  if (!run.stages().empty()) {
+    const swarm::StageFits f = run.fits();
+    j["fits"] = {{"P_V", fit_json(f.P_V)}, {"T_V", fit_json(f.T_V)}, {"P_T", fit_json(f.P_T)}};
+  }
+  const swarm::System& sys = run.engine().system();
+  json particles = json::array();
+  for (const swarm::Particle& p : sys.particles)
+    particles.push_back({{"m", p.m}, {"r", vec(p.r)}, {"v", vec(p.v)}});
+  j["final"] = {{"t", sys.t}, {"particles", particles}};
+  return j.dump(1) + "\n";
+}
+
+std::string samples_csv(const swarm::ProtocolRun& run) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "t,P,T,KE,PE,E,hits,R\n";
+  for (const swarm::Sample& x : run.samples())
+    out << x.t << ',' << x.P << ',' << x.T << ',' << x.KE << ',' << x.PE << ',' << x.E << ','
+        << x.hits << ',' << x.R << '\n';
+  return out.str();
+}
+
+}  // namespace swarmlab
