@@ -8,6 +8,7 @@
 #include "preset_file.h"
 #include "progress_bar.h"
 #include "result_json.h"
+#include "swarm/side_by_side.h"
 
 namespace swarmlab {
 namespace {
@@ -24,7 +25,8 @@ std::string check_writable(const std::string& path) {
   return {};
 }
 
-void print_table(const swarm::RunSummary& s, const swarm::ProtocolRun& run) {
+void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
+  const swarm::ProtocolRun& run = runs.primary();
   std::printf("%-14s %.6g\n%-14s %.6g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %ld\n"
               "%-14s %ld\n%-14s %.6g\n",
               "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift",
@@ -56,6 +58,13 @@ void print_table(const swarm::RunSummary& s, const swarm::ProtocolRun& run) {
       std::printf("%12.5g %12.5g %12.5g %14.8g %14.8g %14.10g\n", x.t, x.P, x.T, x.KE, x.PE, x.E);
     }
   }
+  for (const auto& track : runs.tracks()) {
+    const swarm::RunSummary o = track.run->summary();
+    std::printf("\nside by side: %-13s E_end %.10g  energy_drift %.3e  max |r - r_%s| %.3e\n",
+                std::string(swarm::name_of(track.method)).c_str(), o.E_end, o.energy_drift,
+                std::string(swarm::name_of(runs.primary().plan().engine.method)).c_str(),
+                track.samples.back().position_error);
+  }
 }
 
 }  // namespace
@@ -74,13 +83,14 @@ int run_command(const RunOptions& options) {
   }
   try {
     const swarm::Preset& preset = *parsed.preset;
-    swarm::ProtocolRun run(swarm::initial_system(preset), swarm::run_plan(preset));
+    swarm::SideBySide runs(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare);
+    swarm::ProtocolRun& run = runs.primary();
     ProgressBar bar("running", !options.quiet);
-    run.finish([&](double fraction) { bar.update(fraction); });
+    runs.finish([&](double fraction) { bar.update(fraction); });
     bar.finish();
 
     // Build both outputs before writing either, so a failure leaves no file behind.
-    const std::string json = options.out_path.empty() ? "" : result_json(preset, run);
+    const std::string json = options.out_path.empty() ? "" : result_json(preset, runs);
     const std::string csv = options.csv_path.empty() ? "" : samples_csv(run);
     if (!options.out_path.empty())
       if (const std::string err = write_file_atomically(options.out_path, json); !err.empty()) {
@@ -93,7 +103,7 @@ int run_command(const RunOptions& options) {
         std::fprintf(stderr, "error: %s\n", err.c_str());
         return 1;
       }
-    if (!options.quiet) print_table(run.summary(), run);
+    if (!options.quiet) print_table(run.summary(), runs);
     return 0;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: not enough memory for this preset\n");

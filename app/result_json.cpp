@@ -17,20 +17,19 @@ json fit_json(const swarm::PowerLawFit& f) {
 
 json vec(const swarm::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
+json summary_json(const swarm::RunSummary& s) {
+  return {{"M", s.M},           {"omega", s.omega},       {"E0", s.E0},
+          {"E_end", s.E_end},   {"energy_drift", s.energy_drift},
+          {"wall_hits", s.wall_hits}, {"steps", s.steps}, {"t_end", s.t_end}};
+}
+
 }  // namespace
 
-std::string result_json(const swarm::Preset& preset, swarm::ProtocolRun& run) {
-  const swarm::RunSummary s = run.summary();
+std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
+  swarm::ProtocolRun& run = runs.primary();
   json j;
   j["preset"] = json::parse(swarm::preset_to_json(preset));
-  j["summary"] = {{"M", s.M},
-                  {"omega", s.omega},
-                  {"E0", s.E0},
-                  {"E_end", s.E_end},
-                  {"energy_drift", s.energy_drift},
-                  {"wall_hits", s.wall_hits},
-                  {"steps", s.steps},
-                  {"t_end", s.t_end}};
+  j["summary"] = summary_json(run.summary());
   json samples = json::array();
   for (const swarm::Sample& x : run.samples())
     samples.push_back({{"t", x.t}, {"P", x.P}, {"T", x.T}, {"KE", x.KE}, {"PE", x.PE},
@@ -44,6 +43,18 @@ std::string result_json(const swarm::Preset& preset, swarm::ProtocolRun& run) {
   if (!run.stages().empty()) {
     const swarm::StageFits f = run.fits();
     j["fits"] = {{"P_V", fit_json(f.P_V)}, {"T_V", fit_json(f.T_V)}, {"P_T", fit_json(f.P_T)}};
+  }
+  if (!runs.tracks().empty()) {
+    json comparisons = json::array();
+    for (const auto& track : runs.tracks()) {
+      json samples = json::array();
+      for (const swarm::ComparisonSample& c : track.samples)
+        samples.push_back({{"t", c.t}, {"E", c.E}, {"position_error", c.position_error}});
+      comparisons.push_back({{"method", std::string(swarm::name_of(track.method))},
+                             {"summary", summary_json(track.run->summary())},
+                             {"samples", samples}});
+    }
+    j["comparisons"] = comparisons;
   }
   const swarm::System& sys = run.engine().system();
   json particles = json::array();

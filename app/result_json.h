@@ -4,11 +4,12 @@
 #include <string>
 
 #include "swarm/preset.h"
+#include "swarm/side_by_side.h"
 
 namespace swarmlab {
 
-/// summary, samples, stages, fits (when there are stages) and the final state.
-std::string result_json(const swarm::Preset& preset, swarm::ProtocolRun& run);
+/// summary, samples, stages, fits (when there are stages), comparisons and the final state.
+std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs);
 /// One row per sample: t,P,T,KE,PE,E,hits,R.
 std::string samples_csv(const swarm::ProtocolRun& run);
 

@@ -168,7 +168,8 @@ SwarmSpec swarm_spec(const json& j) {
 
 Preset parse(const json& j) {
   const Fields f(j, "", {"version", "name", "description", "J", "particles", "container",
-                         "method", "collisions", "dt", "duration", "expansion", "sample_every"});
+                         "method", "collisions", "dt", "duration", "expansion", "sample_every",
+                         "compare"});
   if (f.has("version"))
     require(f.at("version") == kPresetVersion, "version",
             "must be " + std::to_string(kPresetVersion) + " (the only preset version so far)");
@@ -234,6 +235,21 @@ Preset parse(const json& j) {
   require(steps >= 1 && steps <= kMaxSteps, p.expansion ? "expansion" : "duration",
           "must give between 1 and 1e9 steps of dt (got " + format(steps) + ")");
   if (f.has("sample_every")) p.sample_every = f.integer("sample_every", 1, kMaxParticles * 100);
+  if (f.has("compare")) {
+    const json& list = f.at("compare");
+    if (!list.is_array()) fail("compare", "must be a list of method names");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string path = "compare[" + std::to_string(i) + "]";
+      if (!list[i].is_string()) fail(path, "must be a method name");
+      const auto other = method_named(list[i].get<std::string>());
+      require(other.has_value(), path,
+              "unknown method \"" + list[i].get<std::string>() +
+                  "\" (use analytic, euler, euler-cromer, verlet or rk4)");
+      require(!(p.collisions == CollisionMode::exact && *other != Method::analytic), path,
+              "collisions \"exact\" needs method \"analytic\"");
+      p.compare.push_back(*other);
+    }
+  }
   return p;
 }
 
@@ -260,6 +276,10 @@ void check_consistency(const Preset& p) {
       require(s.position_radius <= *p.container_radius, "particles.position_radius",
               "must be <= container.radius (particles must start inside the container)");
   }
+  for (Method m : p.compare)
+    require(!is_pairwise(m) || count <= kMaxPairwiseParticles, "compare",
+            "\"" + std::string(name_of(m)) + "\" sums over every pair: use at most " +
+                std::to_string(kMaxPairwiseParticles) + " particles");
   if (is_pairwise(p.method))
     require(count <= kMaxPairwiseParticles, "method",
             "\"" + std::string(name_of(p.method)) + "\" sums over every pair: use at most " +
@@ -316,6 +336,11 @@ json to_json(const Preset& p) {
     j["duration"] = p.duration;
   }
   if (p.sample_every) j["sample_every"] = *p.sample_every;
+  if (!p.compare.empty()) {
+    json list = json::array();
+    for (Method m : p.compare) list.push_back(std::string(name_of(m)));
+    j["compare"] = list;
+  }
   return j;
 }
 

@@ -27,6 +27,7 @@ struct Preset {
   double duration = 1.0;  ///< with an expansion: stages * tau, derived
   std::optional<ExpansionProtocol> expansion;
   std::optional<long> sample_every;  ///< none: about 2000 samples over the run
+  std::vector<Method> compare;       ///< methods run side by side from the same start
 };
 
 /// Either a valid preset or one message naming the field and the rule it breaks,

