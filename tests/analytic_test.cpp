@@ -6,6 +6,7 @@
 #include "swarm/diagnostics.h"
 #include "swarm/integrators.h"
 #include "swarm/regime.h"
+#include "swarm/side_by_side.h"
 #include "test_systems.h"
 
 using namespace swarm;
@@ -32,7 +33,7 @@ TEST_CASE("a circular two-body orbit turns at omega = sqrt(J M)") {
     step_rk4(num, exact.period() / steps);
     CHECK((num.particles[0].r - num.particles[1].r).norm() == Approx(d).epsilon(1e-9));
   }
-  CHECK(testing::max_position_difference(num, s) < 1e-9);
+  CHECK(max_position_difference(num, s) < 1e-9);
 }
 
 TEST_CASE("the analytic state is the oscillator solution about the moving CM, at any t") {

@@ -5,6 +5,7 @@
 
 #include "swarm/analytic.h"
 #include "swarm/diagnostics.h"
+#include "swarm/side_by_side.h"
 #include "test_systems.h"
 
 using namespace swarm;
@@ -15,7 +16,7 @@ namespace {
 double error_after(Method m, const System& s, double t_end, int steps) {
   System n = s;
   for (int i = 0; i < steps; ++i) step(m, n, t_end / steps);
-  return testing::max_position_difference(n, AnalyticSolution(s).at(t_end));
+  return max_position_difference(n, AnalyticSolution(s).at(t_end));
 }
 
 }  // namespace

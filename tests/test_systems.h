@@ -33,11 +33,4 @@ inline System random_swarm(long n, double J, std::uint64_t seed, double radius =
   return s;
 }
 
-inline double max_position_difference(const System& a, const System& b) {
-  double worst = 0;
-  for (std::size_t i = 0; i < a.particles.size(); ++i)
-    worst = std::max(worst, (a.particles[i].r - b.particles[i].r).norm());
-  return worst;
-}
-
 }  // namespace swarm::testing

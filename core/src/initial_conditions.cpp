@@ -20,10 +20,19 @@ class Random {
     const double u2 = uniform();
     return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
   }
+  /// Three draws in a fixed order: the order in which function arguments are evaluated is
+  /// unspecified (g++ and clang differ), so Vec3(draw(), draw(), draw()) is not reproducible.
+  template <class Draw>
+  static Vec3 triple(Draw draw) {
+    const double x = draw();
+    const double y = draw();
+    const double z = draw();
+    return {x, y, z};
+  }
   /// Uniform in the ball of radius r, by rejection from the enclosing cube.
   Vec3 in_ball(double r) {
     for (;;) {
-      const Vec3 p(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+      const Vec3 p = triple([this] { return uniform(-1, 1); });
       if (p.squaredNorm() <= 1) return r * p;
     }
   }
@@ -45,7 +54,7 @@ System generate_swarm(const SwarmSpec& spec) {
       p.v = rng.in_ball(spec.speed);
     } else {
       const double sigma = std::sqrt(spec.temperature / p.m);
-      p.v = sigma * Vec3(rng.normal(), rng.normal(), rng.normal());
+      p.v = sigma * Random::triple([&rng] { return rng.normal(); });
     }
   }
   if (spec.cm_at_rest) {
