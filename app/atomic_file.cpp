@@ -1,8 +1,9 @@
 #include "atomic_file.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <fstream>
-#include <unistd.h>
 
 namespace swarmlab {
 

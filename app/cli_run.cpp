@@ -27,10 +27,11 @@ std::string check_writable(const std::string& path) {
 
 void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
   const swarm::ProtocolRun& run = runs.primary();
-  std::printf("%-14s %.6g\n%-14s %.6g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %ld\n"
-              "%-14s %ld\n%-14s %.6g\n",
-              "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift",
-              s.energy_drift, "wall_hits", s.wall_hits, "steps", s.steps, "t_end", s.t_end);
+  std::printf(
+      "%-14s %.6g\n%-14s %.6g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %ld\n"
+      "%-14s %ld\n%-14s %.6g\n",
+      "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift", s.energy_drift,
+      "wall_hits", s.wall_hits, "steps", s.steps, "t_end", s.t_end);
   if (!run.stages().empty()) {
     std::printf("\n%6s %12s %12s %12s %12s %14s\n", "stage", "R", "V", "P", "T", "E");
     for (std::size_t i = 0; i < run.stages().size(); ++i) {
@@ -54,7 +55,8 @@ void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
     const std::size_t rows = std::min<std::size_t>(samples.size(), 11);
     std::printf("\n%12s %12s %12s %14s %14s %14s\n", "t", "P", "T", "KE", "PE", "E");
     for (std::size_t r = 0; r < rows; ++r) {
-      const swarm::Sample& x = samples[r * (samples.size() - 1) / std::max<std::size_t>(1, rows - 1)];
+      const swarm::Sample& x =
+          samples[r * (samples.size() - 1) / std::max<std::size_t>(1, rows - 1)];
       std::printf("%12.5g %12.5g %12.5g %14.8g %14.8g %14.10g\n", x.t, x.P, x.T, x.KE, x.PE, x.E);
     }
   }

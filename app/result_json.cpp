@@ -10,17 +10,21 @@ using json = nlohmann::json;
 
 json fit_json(const swarm::PowerLawFit& f) {
   if (!f.valid) return nullptr;
-  return {{"slope", f.slope},         {"slope_stderr", f.slope_stderr},
-          {"intercept", f.intercept}, {"r_squared", f.r_squared},
-          {"residuals", f.residuals}, {"points_used", f.used}};
+  return {{"slope", f.slope},         {"slope_stderr", f.slope_stderr}, {"intercept", f.intercept},
+          {"r_squared", f.r_squared}, {"residuals", f.residuals},       {"points_used", f.used}};
 }
 
 json vec(const swarm::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 json summary_json(const swarm::RunSummary& s) {
-  return {{"M", s.M},           {"omega", s.omega},       {"E0", s.E0},
-          {"E_end", s.E_end},   {"energy_drift", s.energy_drift},
-          {"wall_hits", s.wall_hits}, {"steps", s.steps}, {"t_end", s.t_end}};
+  return {{"M", s.M},
+          {"omega", s.omega},
+          {"E0", s.E0},
+          {"E_end", s.E_end},
+          {"energy_drift", s.energy_drift},
+          {"wall_hits", s.wall_hits},
+          {"steps", s.steps},
+          {"t_end", s.t_end}};
 }
 
 }  // namespace
@@ -32,13 +36,19 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
   j["summary"] = summary_json(run.summary());
   json samples = json::array();
   for (const swarm::Sample& x : run.samples())
-    samples.push_back({{"t", x.t}, {"P", x.P}, {"T", x.T}, {"KE", x.KE}, {"PE", x.PE},
-                       {"E", x.E}, {"hits", x.hits}, {"R", x.R}});
+    samples.push_back({{"t", x.t},
+                       {"P", x.P},
+                       {"T", x.T},
+                       {"KE", x.KE},
+                       {"PE", x.PE},
+                       {"E", x.E},
+                       {"hits", x.hits},
+                       {"R", x.R}});
   j["samples"] = samples;
   json stages = json::array();
   for (const swarm::Stage& x : run.stages())
-    stages.push_back({{"R", x.R}, {"V", x.V}, {"P", x.P}, {"T", x.T}, {"E", x.E},
-                      {"hits", x.hits}});
+    stages.push_back(
+        {{"R", x.R}, {"V", x.V}, {"P", x.P}, {"T", x.T}, {"E", x.E}, {"hits", x.hits}});
   j["stages"] = stages;
   if (!run.stages().empty()) {
     const swarm::StageFits f = run.fits();

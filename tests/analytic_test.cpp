@@ -1,7 +1,8 @@
 #include "swarm/analytic.h"
 
-#include <cmath>
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include "swarm/diagnostics.h"
 #include "swarm/integrators.h"

@@ -17,7 +17,8 @@ TEST_CASE("two bodies by hand: KE, PE = J m1 m2 d^2 / 2, momentum, angular momen
   CHECK(potential_energy_cm(s) == Approx(12.0));
   CHECK(total_energy(s) == Approx(14.0));
   CHECK((total_momentum(s) - Vec3(1, 3, 0)).norm() < 1e-15);
-  // CM at x = 1.5 moving at (0.25, 0.75); relative: (-1.5,0,0)x(0.75,-0.75,0) and (0.5,0,0)x(-0.25,0.25,0).
+  // CM at x = 1.5 moving at (0.25, 0.75); relative: (-1.5,0,0)x(0.75,-0.75,0) and
+  // (0.5,0,0)x(-0.25,0.25,0).
   const Vec3 L = angular_momentum_cm(s);
   CHECK(L.z() == Approx(1.0 * 1.5 * 0.75 + 3.0 * 0.5 * 0.25));
 }

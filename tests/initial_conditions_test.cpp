@@ -1,7 +1,8 @@
 #include "swarm/initial_conditions.h"
 
-#include <cmath>
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include "swarm/diagnostics.h"
 

@@ -1,7 +1,8 @@
 #include "swarm/integrators.h"
 
-#include <cmath>
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include "swarm/analytic.h"
 #include "swarm/diagnostics.h"
@@ -61,7 +62,8 @@ TEST_CASE("Euler's energy drifts while Euler-Cromer's stays bounded") {
     step_euler(euler, dt);
     step_euler_cromer(cromer, dt);
     const double dev = std::abs(total_energy(cromer) - E0) / std::abs(E0);
-    (i < 200 * 5 ? cromer_early : cromer_late) = std::max(i < 200 * 5 ? cromer_early : cromer_late, dev);
+    (i < 200 * 5 ? cromer_early : cromer_late) =
+        std::max(i < 200 * 5 ? cromer_early : cromer_late, dev);
   }
   // Euler multiplies the energy by about (1 + (omega dt)^2) per step: exp(40 periods * 200 *
   // (2 pi / 200)^2) is e^{7.9}.

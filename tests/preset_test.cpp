@@ -1,6 +1,7 @@
 #include "swarm/preset.h"
 
 #include <doctest/doctest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -93,7 +94,8 @@ TEST_CASE("every bad input gets one message naming the field and the rule") {
       {with("particles", "[{\"m\": 0, \"r\": [0,0,0], \"v\": [0,0,0]}]"),
        "particles[0].m: must be > 0"},
       {with("particles",
-            "[{\"m\": 1, \"r\": [0,0,0], \"v\": [0,0,0]}, {\"m\": -1, \"r\": [0,0,0], \"v\": [0,0,0]}]"),
+            "[{\"m\": 1, \"r\": [0,0,0], \"v\": [0,0,0]}, {\"m\": -1, \"r\": [0,0,0], \"v\": "
+            "[0,0,0]}]"),
        "particles[1].m: must be > 0"},
       {with("particles", "[{\"m\": 1, \"r\": [0,0], \"v\": [0,0,0]}]"),
        "particles[0].r: must be an array of 3 numbers"},
@@ -113,8 +115,7 @@ TEST_CASE("every bad input gets one message naming the field and the rule") {
             "\"velocity\": {\"speed\": 1}}"),
        "particles.mass.max: must be >= particles.mass.min"},
       {with("particles", "7"), "particles: must be a list of particles or a generator object"},
-      {with("expansion", "{\"factor\": 0.5, \"stages\": 3, \"tau\": 1}"),
-       "duration: leave it out"},
+      {with("expansion", "{\"factor\": 0.5, \"stages\": 3, \"tau\": 1}"), "duration: leave it out"},
       {R"({"J": 1, "particles": [{"m": 1, "r": [0,0,0], "v": [0,0,0]}], "dt": 0.1,
            "expansion": {"factor": 1.1, "stages": 3, "tau": 1}})",
        "expansion: needs a container"},

@@ -1,7 +1,8 @@
 #include "swarm/protocol.h"
 
-#include <cmath>
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include "swarm/diagnostics.h"
 #include "test_systems.h"

@@ -1,5 +1,6 @@
-#include <cmath>
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"

@@ -1,7 +1,8 @@
 #include "swarm/thermometry.h"
 
-#include <cmath>
 #include <doctest/doctest.h>
+
+#include <cmath>
 
 using namespace swarm;
 using doctest::Approx;

@@ -40,11 +40,15 @@ bool is_pairwise(Method m) { return m != Method::analytic; }
 
 int order_of(Method m) {
   switch (m) {
-    case Method::analytic: return 0;
+    case Method::analytic:
+      return 0;
     case Method::euler:
-    case Method::euler_cromer: return 1;
-    case Method::verlet: return 2;
-    case Method::rk4: return 4;
+    case Method::euler_cromer:
+      return 1;
+    case Method::verlet:
+      return 2;
+    case Method::rk4:
+      return 4;
   }
   return 0;
 }

@@ -167,9 +167,9 @@ SwarmSpec swarm_spec(const json& j) {
 }
 
 Preset parse(const json& j) {
-  const Fields f(j, "", {"version", "name", "description", "J", "particles", "container",
-                         "method", "collisions", "dt", "duration", "expansion", "sample_every",
-                         "compare"});
+  const Fields f(j, "",
+                 {"version", "name", "description", "J", "particles", "container", "method",
+                  "collisions", "dt", "duration", "expansion", "sample_every", "compare"});
   if (f.has("version"))
     require(f.at("version") == kPresetVersion, "version",
             "must be " + std::to_string(kPresetVersion) + " (the only preset version so far)");
@@ -196,8 +196,7 @@ Preset parse(const json& j) {
   const std::string method = f.text("method", "analytic");
   const auto m = method_named(method);
   require(m.has_value(), "method",
-          "unknown method \"" + method +
-              "\" (use analytic, euler, euler-cromer, verlet or rk4)");
+          "unknown method \"" + method + "\" (use analytic, euler, euler-cromer, verlet or rk4)");
   p.method = *m;
   const std::string collisions = f.text("collisions", "paper");
   const auto c = collision_mode_named(collisions);
@@ -229,9 +228,9 @@ Preset parse(const json& j) {
     p.duration = f.number("duration");
     require(p.duration > 0, "duration", "must be > 0");
   }
-  const double steps = p.expansion ? double(p.expansion->stages) *
-                                         double(steps_per_stage(*p.expansion, p.dt))
-                                   : std::round(p.duration / p.dt);
+  const double steps =
+      p.expansion ? double(p.expansion->stages) * double(steps_per_stage(*p.expansion, p.dt))
+                  : std::round(p.duration / p.dt);
   require(steps >= 1 && steps <= kMaxSteps, p.expansion ? "expansion" : "duration",
           "must give between 1 and 1e9 steps of dt (got " + format(steps) + ")");
   if (f.has("sample_every")) p.sample_every = f.integer("sample_every", 1, kMaxParticles * 100);
@@ -264,8 +263,8 @@ void check_consistency(const Preset& p) {
       for (std::size_t i = 0; i < list->size(); ++i) {
         const double r = (*list)[i].r.norm();
         require(r <= *p.container_radius, "particles[" + std::to_string(i) + "].r",
-                "starts outside the container (|r| = " + format(r) + " > container.radius = " +
-                    format(*p.container_radius) + ")");
+                "starts outside the container (|r| = " + format(r) +
+                    " > container.radius = " + format(*p.container_radius) + ")");
       }
     }
   } else {
@@ -283,8 +282,8 @@ void check_consistency(const Preset& p) {
   if (is_pairwise(p.method))
     require(count <= kMaxPairwiseParticles, "method",
             "\"" + std::string(name_of(p.method)) + "\" sums over every pair: use at most " +
-                std::to_string(kMaxPairwiseParticles) + " particles (got " +
-                std::to_string(count) + ")");
+                std::to_string(kMaxPairwiseParticles) + " particles (got " + std::to_string(count) +
+                ")");
   if (!p.container_radius && p.J < 0) {
     const double growth = std::sqrt(-p.J * max_mass_sum) * p.duration;
     require(growth <= kMaxRunawayExponent, "duration",
@@ -302,9 +301,8 @@ json to_json(const Preset& p) {
   if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
     json arr = json::array();
     for (const auto& q : *list)
-      arr.push_back({{"m", q.m},
-                     {"r", {q.r.x(), q.r.y(), q.r.z()}},
-                     {"v", {q.v.x(), q.v.y(), q.v.z()}}});
+      arr.push_back(
+          {{"m", q.m}, {"r", {q.r.x(), q.r.y(), q.r.z()}}, {"v", {q.v.x(), q.v.y(), q.v.z()}}});
     j["particles"] = arr;
   } else {
     const auto& s = std::get<SwarmSpec>(p.particles);

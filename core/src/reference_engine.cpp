@@ -88,7 +88,7 @@ class ReferenceEngine final : public Engine {
           continue;
         }
         if (position_after(p, left).norm() <= Rw) continue;  // grazing exits are missed
-        double lo = 0, hi = left;  // inside at lo, outside at hi
+        double lo = 0, hi = left;                            // inside at lo, outside at hi
         for (int it = 0; it < 64 && hi - lo > 0; ++it) {
           const double mid = 0.5 * (lo + hi);
           (position_after(p, mid).norm() > Rw ? hi : lo) = mid;

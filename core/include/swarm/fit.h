@@ -6,9 +6,9 @@
 namespace swarm {
 
 struct PowerLawFit {
-  double slope = 0;            ///< the exponent b
-  double slope_stderr = 0;     ///< standard error of b
-  double intercept = 0;        ///< ln a
+  double slope = 0;         ///< the exponent b
+  double slope_stderr = 0;  ///< standard error of b
+  double intercept = 0;     ///< ln a
   double r_squared = 0;
   std::vector<double> residuals;  ///< ln y - (intercept + slope ln x), one per point used
   std::vector<int> used;          ///< indices of the points used (x > 0 and y > 0)

@@ -25,7 +25,7 @@ struct ExpansionProtocol {
 struct RunPlan {
   EngineConfig engine;
   double dt = 1e-3;
-  long steps = 1000;                       ///< for expansions: stages * steps_per_stage
+  long steps = 1000;  ///< for expansions: stages * steps_per_stage
   long sample_every = 1;
   std::optional<ExpansionProtocol> expansion;
 };

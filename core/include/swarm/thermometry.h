@@ -11,8 +11,8 @@
 namespace swarm {
 
 struct WallReading {
-  double P = 0;   ///< pressure, force per area
-  double T = 0;   ///< temperature, energy units; 0 when nothing hit the wall
+  double P = 0;  ///< pressure, force per area
+  double T = 0;  ///< temperature, energy units; 0 when nothing hit the wall
   long hits = 0;
 };
 

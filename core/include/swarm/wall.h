@@ -8,8 +8,8 @@ namespace swarm {
 /// Sums over the wall hits of one step or of an interval.
 struct WallTally {
   long hits = 0;
-  double radial_impulse = 0;      ///< sum |dp_r| = sum 2 m |v_r|, momentum units
-  double hit_kinetic_energy = 0;  ///< sum of 1/2 m v^2 of the particles as they hit
+  double radial_impulse = 0;          ///< sum |dp_r| = sum 2 m |v_r|, momentum units
+  double hit_kinetic_energy = 0;      ///< sum of 1/2 m v^2 of the particles as they hit
   Vec3 wall_momentum = Vec3::Zero();  ///< momentum taken up by the wall: minus the system's change
 
   void add(const WallTally& other);
