@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "swarm/engine.h"
+#include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
 #include "swarm/regime.h"
 
@@ -115,6 +116,7 @@ std::unique_ptr<Engine> make_reference_engine(System initial, const EngineConfig
 }
 
 std::unique_ptr<Engine> make_engine(System initial, const EngineConfig& config) {
+  if (fast_engine_applies(config)) return make_fast_engine(std::move(initial), config);
   return make_reference_engine(std::move(initial), config);
 }
 

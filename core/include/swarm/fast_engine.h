@@ -1,0 +1,52 @@
+#pragma once
+/// The fast engine: Appendix A (paper collisions, analytic method) at a cost that grows with
+/// the number of wall hits rather than with N times the number of steps.
+///
+/// Each lab position is split as r_i(t) = h_i(t) + g(t). h_i is a free oscillator about the
+/// origin (x'' = -k x) that changes only at particle i's own wall hits; g = R_cm - H, with
+/// H = sum m_i h_i / M, is one shared 3-vector. A hit of particle j changes v_j by dv: that is
+/// h_j's velocity alone, plus m_j dv / M on the shared R_cm and H velocities, whose difference
+/// g' does not change. So a hit costs O(1), not O(N).
+///
+/// |h_i(t)|^2 is a constant plus a sinusoid in 2 omega t (exponentials for J < 0, a quadratic
+/// for J = 0), so the first time particle i can come within a margin G of the wall is known
+/// in closed form; a particle is checked only in the steps it is due, which are kept in a ring
+/// of per-step buckets. Positions are materialised only when system() is called.
+///
+/// The margin G must bound |g|. A "frame" is one choice of the h_i; when |g| grows (always in
+/// the repulsive case, where g and the h_i both grow like exp(Omega t) while r_i stays inside)
+/// the engine re-bases: it folds g into every h_i (O(N), rare) and starts a new frame. The
+/// schedules made in an older frame stay valid while that frame's own g stays within its
+/// margin, which is checked every step; when it does not, the particles still scheduled in it
+/// are rescheduled.
+///
+/// The engine reproduces the reference engine's wall hits step by step (same predicate on the
+/// same prediction, evaluated from an algebraically identical state) up to rounding.
+
+#include <cstdint>
+#include <memory>
+
+#include "swarm/engine.h"
+
+namespace swarm {
+
+/// Whether make_fast_engine can run this configuration: the analytic method with paper
+/// collisions, or an isolated system.
+bool fast_engine_applies(const EngineConfig& config);
+
+/// Throws std::invalid_argument when !fast_engine_applies(config).
+std::unique_ptr<Engine> make_fast_engine(System initial, const EngineConfig& config);
+
+/// Work counters of a fast engine, for benchmarks and tests.
+struct FastEngineStats {
+  std::int64_t checks = 0;       ///< particles whose hit predicate was evaluated
+  std::int64_t hits = 0;         ///< wall hits
+  std::int64_t rebases = 0;      ///< O(N) re-bases that started a new frame
+  std::int64_t reschedules = 0;  ///< O(N) full reschedules (radius or dt changed)
+  std::int64_t expired = 0;      ///< particles rescheduled because their frame expired
+};
+
+/// The counters of engine if it is a fast engine, else nothing.
+std::optional<FastEngineStats> fast_engine_stats(const Engine& engine);
+
+}  // namespace swarm

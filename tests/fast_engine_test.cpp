@@ -1,0 +1,159 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "swarm/analytic.h"
+#include "swarm/diagnostics.h"
+#include "swarm/engine.h"
+#include "swarm/fast_engine.h"
+#include "swarm/preset.h"
+#include "test_systems.h"
+
+using namespace swarm;
+using doctest::Approx;
+
+namespace {
+
+/// Masses in [4, 5], positions in the unit ball, speeds up to `speed`, J = sign / M so that
+/// sqrt(|J| M) = 1: an amplitude above the container radius, so the wall is hit often.
+System crowded_swarm(long n, double sign, std::uint64_t seed, double speed = 1.5) {
+  System s = testing::random_swarm(n, 1.0, seed, 1.0, speed);
+  s.J = sign / total_mass(s);
+  return s;
+}
+
+Preset shipped_preset(const std::string& name) {
+  std::ifstream in(std::string(SWARM_PRESET_DIR) + "/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  const PresetParse parsed = parse_preset(text.str());
+  REQUIRE_MESSAGE(parsed.preset, parsed.error);
+  return *parsed.preset;
+}
+
+double max_state_difference(const System& a, const System& b) {
+  double worst = 0;
+  for (std::size_t i = 0; i < a.particles.size(); ++i) {
+    worst = std::max(worst, (a.particles[i].r - b.particles[i].r).norm());
+    worst = std::max(worst, (a.particles[i].v - b.particles[i].v).norm());
+  }
+  return worst;
+}
+
+/// Runs both engines side by side and requires the same hits in every step.
+void require_same_run(const System& s, double R, double dt, int steps) {
+  const EngineConfig config{Method::analytic, CollisionMode::paper, R};
+  auto reference = make_reference_engine(s, config);
+  auto fast = make_fast_engine(s, config);
+  long hits = 0;
+  double impulse_ref = 0, impulse_fast = 0;
+  for (int i = 0; i < steps; ++i) {
+    const WallTally a = reference->step(dt), b = fast->step(dt);
+    REQUIRE(a.hits == b.hits);
+    hits += a.hits;
+    impulse_ref += a.radial_impulse;
+    impulse_fast += b.radial_impulse;
+  }
+  CHECK(hits > steps / 4);
+  CHECK(impulse_fast == Approx(impulse_ref).epsilon(1e-12));
+  CHECK(fast->time() == reference->time());
+  CHECK(max_state_difference(reference->system(), fast->system()) < 1e-9);
+}
+
+}  // namespace
+
+TEST_CASE("the fast engine hits the wall exactly when the reference engine does") {
+  SUBCASE("attractive") { require_same_run(crowded_swarm(2000, +1.0, 3), 1.0, 1e-3, 4000); }
+  SUBCASE("repulsive") { require_same_run(crowded_swarm(2000, -1.0, 5), 1.0, 1e-3, 4000); }
+  SUBCASE("J = 0") { require_same_run(crowded_swarm(2000, 0.0, 7), 1.0, 1e-3, 4000); }
+  SUBCASE("coarse steps") { require_same_run(crowded_swarm(2000, +1.0, 9), 1.0, 1e-2, 3000); }
+}
+
+TEST_CASE("the fast engine reproduces the reference on the shipped expansion presets") {
+  for (const char* name : {"fig2-attractive-expansion.json", "fig3-repulsive-fireball.json"}) {
+    CAPTURE(name);
+    Preset preset = shipped_preset(name);
+    std::get<SwarmSpec>(preset.particles).count = 2000;
+    preset.J *= 2;  // the same omega with half the particles
+    // Three stages of the expansion, 300 steps each: wall moves included.
+    preset.expansion->tau = 300 * preset.dt;
+    preset.expansion->stages = 3;
+    const RunPlan plan = run_plan(preset);
+    ProtocolRun reference(make_reference_engine(initial_system(preset), plan.engine), plan);
+    ProtocolRun fast(make_fast_engine(initial_system(preset), plan.engine), plan);
+    while (!reference.finished()) {
+      reference.advance(1);
+      fast.advance(1);
+      REQUIRE(reference.samples().back().hits == fast.samples().back().hits);
+    }
+    fast.finish();
+    REQUIRE(reference.stages().size() == fast.stages().size());
+    for (std::size_t i = 0; i < reference.stages().size(); ++i) {
+      CHECK(fast.stages()[i].hits == reference.stages()[i].hits);
+      CHECK(fast.stages()[i].P == Approx(reference.stages()[i].P).epsilon(1e-10));
+      CHECK(fast.stages()[i].T == Approx(reference.stages()[i].T).epsilon(1e-10));
+    }
+    CHECK(fast.summary().wall_hits == reference.summary().wall_hits);
+    CHECK(max_state_difference(reference.engine().system(), fast.engine().system()) < 1e-9);
+  }
+}
+
+TEST_CASE("the fast engine conserves energy to 1e-10 over 100,000 steps in a fixed container") {
+  for (double sign : {+1.0, -1.0}) {
+    CAPTURE(sign);
+    const System s = crowded_swarm(200, sign, 21);
+    auto engine = make_fast_engine(s, {Method::analytic, CollisionMode::paper, 1.0});
+    const double E0 = total_energy(s);
+    long hits = 0;
+    for (int i = 0; i < 100000; ++i) hits += engine->step(1e-3).hits;
+    CHECK(hits > 10000);
+    CHECK(std::abs(total_energy(engine->system()) - E0) / std::abs(E0) < 1e-10);
+    for (const auto& p : engine->system().particles) CHECK(p.r.norm() < 1.01);
+  }
+}
+
+TEST_CASE("the fast engine gives the wall the momentum the system loses") {
+  const System s = crowded_swarm(300, -1.0, 4);
+  auto engine = make_fast_engine(s, {Method::analytic, CollisionMode::paper, 1.0});
+  Vec3 to_wall = Vec3::Zero();
+  for (int i = 0; i < 5000; ++i) to_wall += engine->step(1e-3).wall_momentum;
+  const Vec3 lost = total_momentum(s) - total_momentum(engine->system());
+  CHECK(to_wall.norm() > 1.0);
+  CHECK((to_wall - lost).norm() < 1e-10 * to_wall.norm());
+}
+
+TEST_CASE("an isolated system in the fast engine follows the analytic solution") {
+  for (double J : {+1.0, -1.0, 0.0}) {
+    CAPTURE(J);
+    const System s = testing::four_masses(J * 0.1);
+    auto engine = make_fast_engine(s, {Method::analytic, CollisionMode::paper, std::nullopt});
+    for (int i = 0; i < 3000; ++i) engine->step(1e-2);
+    const System truth = AnalyticSolution(s).at(30.0);
+    CHECK(engine->time() == Approx(30.0));
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+      const double scale = 1 + truth.particles[i].r.norm() + truth.particles[i].v.norm();
+      CHECK((engine->system().particles[i].r - truth.particles[i].r).norm() < 1e-10 * scale);
+      CHECK((engine->system().particles[i].v - truth.particles[i].v).norm() < 1e-10 * scale);
+    }
+  }
+}
+
+TEST_CASE("make_engine picks the fast engine only where it applies") {
+  const System s = crowded_swarm(10, 1.0, 1);
+  CHECK(fast_engine_stats(*make_engine(s, {Method::analytic, CollisionMode::paper, 1.0})));
+  CHECK_FALSE(fast_engine_stats(*make_engine(s, {Method::analytic, CollisionMode::exact, 1.0})));
+  CHECK_FALSE(fast_engine_stats(*make_engine(s, {Method::verlet, CollisionMode::paper, 1.0})));
+  CHECK_THROWS(make_fast_engine(s, {Method::rk4, CollisionMode::paper, 1.0}));
+}
+
+TEST_CASE("the fast engine only checks particles that can reach the wall") {
+  // A large swarm with a few hundred hits per step must not touch every particle every step.
+  const System s = crowded_swarm(20000, -1.0, 11, 1.0);
+  auto engine = make_fast_engine(s, {Method::analytic, CollisionMode::paper, 1.0});
+  for (int i = 0; i < 2000; ++i) engine->step(1e-2);
+  const FastEngineStats stats = *fast_engine_stats(*engine);
+  CHECK(stats.hits > 2000 * 50);
+  CHECK(double(stats.checks + stats.expired) < 0.1 * 20000.0 * 2000.0);
+}
