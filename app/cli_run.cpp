@@ -7,6 +7,8 @@
 #include "cli.h"
 #include "preset_file.h"
 #include "progress_bar.h"
+#include "report/plot_files.h"
+#include "report/report.h"
 #include "result_json.h"
 #include "swarm/side_by_side.h"
 
@@ -83,6 +85,14 @@ int run_command(const RunOptions& options) {
       return 1;
     }
   }
+  if (!options.plots_dir.empty()) {
+    std::string err = options.png ? report::png_unavailable_reason() : "";
+    if (err.empty()) err = report::prepare_plot_dir(options.plots_dir);
+    if (!err.empty()) {
+      std::fprintf(stderr, "error: %s\n", err.c_str());
+      return 1;
+    }
+  }
   try {
     const swarm::Preset& preset = *parsed.preset;
     swarm::SideBySide runs(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare);
@@ -94,6 +104,15 @@ int run_command(const RunOptions& options) {
     // Build both outputs before writing either, so a failure leaves no file behind.
     const std::string json = options.out_path.empty() ? "" : result_json(preset, runs);
     const std::string csv = options.csv_path.empty() ? "" : samples_csv(run);
+    std::vector<report::NamedFigure> figures;
+    if (!options.plots_dir.empty()) figures = report::run_figures(report::record_of(preset, runs));
+    // The figures go first: their writer cleans up after itself, so a failure leaves no file.
+    if (!options.plots_dir.empty())
+      if (const std::string err = report::write_figures(options.plots_dir, figures, options.png);
+          !err.empty()) {
+        std::fprintf(stderr, "error: %s\n", err.c_str());
+        return 1;
+      }
     if (!options.out_path.empty())
       if (const std::string err = write_file_atomically(options.out_path, json); !err.empty()) {
         std::fprintf(stderr, "error: %s\n", err.c_str());
@@ -105,7 +124,11 @@ int run_command(const RunOptions& options) {
         std::fprintf(stderr, "error: %s\n", err.c_str());
         return 1;
       }
-    if (!options.quiet) print_table(run.summary(), runs);
+    if (!options.quiet) {
+      print_table(run.summary(), runs);
+      if (!options.plots_dir.empty())
+        std::printf("\nwrote %zu figures to %s\n", figures.size(), options.plots_dir.c_str());
+    }
     return 0;
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "error: not enough memory for this preset\n");

@@ -28,7 +28,23 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out", run.out_path,
                       "Write RESULT.json: summary, samples, stages, fits and the final state");
   run_cmd->add_option("--csv", run.csv_path, "Write the samples as CSV (t,P,T,KE,PE,E,hits,R)");
+  CLI::Option* plots = run_cmd->add_option(
+      "--plots", run.plots_dir,
+      "Write the run's figures into this directory: SVG, and the CSV behind each");
+  run_cmd->add_flag("--png", run.png, "With --plots: a PNG of each figure too (needs rsvg-convert)")
+      ->needs(plots);
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress bar and no table on the terminal");
+
+  swarmlab::ReportOptions report;
+  CLI::App* report_cmd = app.add_subcommand(
+      "report",
+      "Draw saved runs (RESULT.json from run --out): one run gives its figures, several are "
+      "overlaid stage by stage (T-V, P-V, P-T)");
+  report_cmd->add_option("results", report.result_paths, "RESULT.json files")->required();
+  report_cmd->add_option("--plots", report.plots_dir, "Directory for the figures (SVG + CSV)")
+      ->required();
+  report_cmd->add_flag("--png", report.png, "A PNG of each figure too (needs rsvg-convert)");
+  report_cmd->add_flag("--quiet,-q", report.quiet, "Say nothing on success");
 
   std::string validate_path;
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a preset and say what is wrong");
@@ -38,6 +54,7 @@ int main(int argc, char** argv) {
 
   if (*run_cmd) return swarmlab::run_command(run);
   if (*validate_cmd) return swarmlab::validate_command(validate_path);
+  if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop({window_preset, frames, screenshot});
 #else

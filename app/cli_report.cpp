@@ -1,0 +1,42 @@
+#include <cstdio>
+
+#include "cli.h"
+#include "report/plot_files.h"
+#include "report/report.h"
+
+namespace swarmlab {
+
+int report_command(const ReportOptions& options) {
+  std::vector<report::RunRecord> runs;
+  for (const std::string& path : options.result_paths) {
+    report::RecordRead read = report::read_result_file(path);
+    if (!read.record) {
+      std::fprintf(stderr, "error: %s\n", read.error.c_str());
+      return 1;
+    }
+    runs.push_back(std::move(*read.record));
+  }
+  std::string err = options.png ? report::png_unavailable_reason() : "";
+  if (err.empty()) err = report::prepare_plot_dir(options.plots_dir);
+  if (!err.empty()) {
+    std::fprintf(stderr, "error: %s\n", err.c_str());
+    return 1;
+  }
+  // One run: everything it has. Several: their stages overlaid, the paper's Fig. 5.
+  const std::vector<report::NamedFigure> figures =
+      runs.size() == 1 ? report::run_figures(runs.front()) : report::overlay_figures(runs);
+  if (figures.empty()) {
+    std::fprintf(stderr, "error: nothing to overlay: fewer than one of these runs has stages\n");
+    return 1;
+  }
+  if (const std::string e = report::write_figures(options.plots_dir, figures, options.png);
+      !e.empty()) {
+    std::fprintf(stderr, "error: %s\n", e.c_str());
+    return 1;
+  }
+  if (!options.quiet)
+    std::printf("wrote %zu figures to %s\n", figures.size(), options.plots_dir.c_str());
+  return 0;
+}
+
+}  // namespace swarmlab

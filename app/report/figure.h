@@ -1,0 +1,46 @@
+#pragma once
+// What a report figure holds, independent of how it is drawn: panels stacked vertically, each
+// with two axes and a few data series. svg_plot.h draws it, figure_csv.h writes its numbers.
+
+#include <string>
+#include <vector>
+
+namespace swarmlab::report {
+
+struct Axis {
+  std::string label;          ///< the quantity, e.g. "volume V"
+  std::string unit;           ///< e.g. "length³"; empty for a pure number
+  bool log = false;           ///< logarithmic scale (values <= 0 are left out)
+  bool include_zero = false;  ///< stretch a linear range to show 0, e.g. a pressure
+};
+
+enum class Mark { line, points, line_and_points };
+
+struct Series {
+  std::string name;  ///< legend entry; empty: not in the legend
+  std::vector<double> x, y;
+  Mark mark = Mark::line;
+  int colour = 0;  ///< index into the palette, so the same quantity keeps its colour
+  bool dashed = false;
+  bool thin = false;  ///< a guide line (e.g. a residual's connecting line) drawn lighter
+};
+
+struct Panel {
+  Axis x, y;
+  std::vector<Series> series{};
+  double height = 1;          ///< relative to the other panels of the figure
+  bool zero_line = false;     ///< a horizontal line at y = 0 (residuals, drifts)
+  bool equal_aspect = false;  ///< one unit is as long on x as on y (orbits)
+  std::string note{};         ///< a short line drawn above the panel, at its left
+};
+
+struct Figure {
+  std::string title;
+  std::string subtitle;  ///< e.g. the preset's name, drawn smaller under the title
+  std::vector<Panel> panels;
+  /// All panels share the x axis: one range, tick labels and axis label only at the bottom.
+  bool shared_x = false;
+  double width = 760;  ///< pixels; the height follows from the panels
+};
+
+}  // namespace swarmlab::report

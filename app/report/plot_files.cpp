@@ -1,0 +1,116 @@
+#include "plot_files.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#ifndef __EMSCRIPTEN__
+#include <spawn.h>
+#include <sys/wait.h>
+extern char** environ;
+#endif
+
+#include "figure_csv.h"
+#include "svg_plot.h"
+
+namespace swarmlab::report {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kRenderer = "rsvg-convert";
+
+std::string write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.flush();
+  return out ? "" : path.string() + ": write failed (disk full?)";
+}
+
+/// Runs rsvg-convert as a child process: librsvg is the SVG renderer Debian ships, and a
+/// process keeps its libraries out of the binary.
+std::string render_png(const fs::path& svg, const fs::path& png) {
+#ifdef __EMSCRIPTEN__
+  (void)svg, (void)png;
+  return "PNG output is not available in the wasm build";
+#else
+  const std::string in = svg.string(), out = png.string();
+  const char* argv[] = {kRenderer, "--background-color=white", "-o", out.c_str(), in.c_str(),
+                        nullptr};
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, kRenderer, nullptr, nullptr, const_cast<char* const*>(argv), environ) != 0)
+    return std::string("cannot run ") + kRenderer;
+  int status = 0;
+  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    return std::string(kRenderer) + " failed on " + in;
+  return {};
+#endif
+}
+
+}  // namespace
+
+std::string prepare_plot_dir(const std::string& dir) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    return dir + ": exists and is not a directory";
+  fs::create_directories(dir, ec);
+  if (ec) return dir + ": cannot create the directory (" + ec.message() + ")";
+  const fs::path probe = fs::path(dir) / (".swarmlab-probe-" + std::to_string(::getpid()));
+  {
+    std::ofstream out(probe);
+    if (!out) return dir + ": cannot write files here";
+  }
+  fs::remove(probe, ec);
+  return {};
+}
+
+std::string png_unavailable_reason() {
+#ifdef __EMSCRIPTEN__
+  return "--png is not available in the wasm build";
+#else
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  for (std::size_t a = 0; a <= dirs.size();) {
+    std::size_t b = dirs.find(':', a);
+    if (b == std::string::npos) b = dirs.size();
+    const fs::path candidate = fs::path(dirs.substr(a, b - a)) / kRenderer;
+    if (::access(candidate.c_str(), X_OK) == 0) return {};
+    a = b + 1;
+  }
+  return std::string("--png needs ") + kRenderer + " (Debian package librsvg2-bin)";
+#endif
+}
+
+std::string write_figures(const std::string& dir, const std::vector<NamedFigure>& figures,
+                          bool png) {
+  const fs::path temp = fs::path(dir) / (".swarmlab-plots-" + std::to_string(::getpid()));
+  std::error_code ec;
+  fs::remove_all(temp, ec);
+  if (!fs::create_directory(temp, ec)) return dir + ": cannot create a temporary directory";
+  std::vector<std::string> files;
+  auto fail = [&](const std::string& message) {
+    fs::remove_all(temp, ec);
+    return message;
+  };
+  for (const NamedFigure& f : figures) {
+    const std::string svg = f.name + ".svg", csv = f.name + ".csv";
+    if (std::string e = write_text(temp / svg, svg_of(f.figure)); !e.empty()) return fail(e);
+    if (std::string e = write_text(temp / csv, csv_of(f.figure)); !e.empty()) return fail(e);
+    files.push_back(svg), files.push_back(csv);
+    if (png) {
+      if (std::string e = render_png(temp / svg, temp / (f.name + ".png")); !e.empty())
+        return fail(e);
+      files.push_back(f.name + ".png");
+    }
+  }
+  // Renames within one directory tree: each file appears whole.
+  for (const std::string& name : files) {
+    fs::rename(temp / name, fs::path(dir) / name, ec);
+    if (ec) return fail(dir + "/" + name + ": cannot move into place (" + ec.message() + ")");
+  }
+  fs::remove_all(temp, ec);
+  return {};
+}
+
+}  // namespace swarmlab::report

@@ -1,0 +1,62 @@
+#include "run_record.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace swarmlab::report {
+namespace {
+
+using json = nlohmann::json;
+
+swarm::RunSummary summary_from(const json& j) {
+  swarm::RunSummary s;
+  s.M = j.at("M"), s.omega = j.at("omega"), s.E0 = j.at("E0"), s.E_end = j.at("E_end");
+  s.energy_drift = j.at("energy_drift"), s.wall_hits = j.at("wall_hits"), s.steps = j.at("steps");
+  s.t_end = j.at("t_end");
+  return s;
+}
+
+}  // namespace
+
+RunRecord record_of(const swarm::Preset& preset, swarm::SideBySide& runs) {
+  swarm::ProtocolRun& run = runs.primary();
+  RunRecord r{preset, run.summary(), run.samples(), run.stages(), {}};
+  for (const auto& track : runs.tracks())
+    r.comparisons.push_back({std::string(swarm::name_of(track.method)),
+                             track.run->summary().energy_drift, track.samples});
+  return r;
+}
+
+RecordRead read_result_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return {std::nullopt, path + ": cannot open the file"};
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    const json j = json::parse(text.str());
+    swarm::PresetParse parsed = swarm::parse_preset(j.at("preset").dump());
+    if (!parsed.preset) return {std::nullopt, path + ": preset: " + parsed.error};
+    RunRecord r;
+    r.preset = *parsed.preset;
+    r.summary = summary_from(j.at("summary"));
+    for (const json& x : j.at("samples"))
+      r.samples.push_back({x.at("t"), x.at("P"), x.at("T"), x.at("KE"), x.at("PE"), x.at("E"),
+                           x.at("hits"), x.at("R")});
+    for (const json& x : j.at("stages"))
+      r.stages.push_back({x.at("R"), x.at("V"), x.at("P"), x.at("T"), x.at("E"), x.at("hits")});
+    if (j.contains("comparisons"))
+      for (const json& c : j.at("comparisons")) {
+        ComparisonTrack track{c.at("method"), c.at("summary").at("energy_drift"), {}};
+        for (const json& x : c.at("samples"))
+          track.samples.push_back({x.at("t"), x.at("E"), x.at("position_error")});
+        r.comparisons.push_back(std::move(track));
+      }
+    return {std::move(r), {}};
+  } catch (const json::exception& e) {
+    return {std::nullopt,
+            path + ": not a RESULT.json from swarmlab run --out (" + std::string(e.what()) + ")"};
+  }
+}
+
+}  // namespace swarmlab::report

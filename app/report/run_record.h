@@ -1,0 +1,37 @@
+#pragma once
+// Everything a report draws from one run, whether the run just finished in this process or
+// was saved earlier as RESULT.json (so that two saved runs can be overlaid without re-running).
+
+#include <string>
+#include <vector>
+
+#include "swarm/preset.h"
+#include "swarm/side_by_side.h"
+
+namespace swarmlab::report {
+
+struct ComparisonTrack {
+  std::string method;
+  double energy_drift = 0;
+  std::vector<swarm::ComparisonSample> samples;
+};
+
+struct RunRecord {
+  swarm::Preset preset;
+  swarm::RunSummary summary;
+  std::vector<swarm::Sample> samples;
+  std::vector<swarm::Stage> stages;
+  std::vector<ComparisonTrack> comparisons;  ///< measured against preset.method
+};
+
+RunRecord record_of(const swarm::Preset& preset, swarm::SideBySide& runs);
+
+struct RecordRead {
+  std::optional<RunRecord> record;
+  std::string error;  ///< names the file and what is wrong with it
+};
+
+/// Reads a RESULT.json written by `swarmlab run --out`.
+RecordRead read_result_file(const std::string& path);
+
+}  // namespace swarmlab::report

@@ -1,0 +1,325 @@
+#include "svg_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "axis_ticks.h"
+
+namespace swarmlab::report {
+namespace {
+
+// Pixel layout. The plot area of a panel is kPanelUnit * Panel::height pixels tall.
+constexpr double kPanelUnit = 400;
+constexpr double kLeft = 88, kRight = 28, kTop = 48, kBottom = 58;
+constexpr double kSharedGap = 14;  // between panels that share the x axis
+constexpr double kNoteSpace = 20;  // above a panel that carries a note
+constexpr double kSubtitleSpace = 18;
+constexpr double kTickLength = 5;
+constexpr double kLegendRow = 19, kLegendPad = 8, kLegendSample = 26;
+constexpr double kCharWidth = 6.9;  // an average 12 px DejaVu Sans character, for sizing boxes
+
+// The matplotlib palette, which the paper's own figures appear to use (blue solid, orange
+// dashed in its Fig. 5).
+const char* const kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
+                                "#9467bd", "#8c564b", "#e377c2", "#7f7f7f"};
+const char* const kFont = "DejaVu Sans, Verdana, Arial, sans-serif";
+
+const char* colour_of(int index) { return kPalette[std::abs(index) % 8]; }
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '&')
+      out += "&amp;";
+    else if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string px(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.1f", v);
+  return buffer;
+}
+
+std::size_t glyph_count(const std::string& utf8) {
+  return std::size_t(std::count_if(utf8.begin(), utf8.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  }));
+}
+
+bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0); }
+
+struct Extent {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -std::numeric_limits<double>::infinity();
+  void add(double v) { lo = std::min(lo, v), hi = std::max(hi, v); }
+  bool empty() const { return !(lo <= hi); }
+};
+
+Extent x_extent(const Panel& p) {
+  Extent e;
+  for (const Series& s : p.series)
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (usable(s.x[i], p.x.log) && usable(s.y[i], p.y.log)) e.add(s.x[i]);
+  return e;
+}
+
+Extent y_extent(const Panel& p) {
+  Extent e;
+  for (const Series& s : p.series)
+    for (std::size_t i = 0; i < s.y.size(); ++i)
+      if (usable(s.x[i], p.x.log) && usable(s.y[i], p.y.log)) e.add(s.y[i]);
+  return e;
+}
+
+AxisRange range_of(Extent e, const Axis& axis) {
+  if (e.empty()) e = axis.log ? Extent{1, 10} : Extent{0, 1};
+  return padded_range(e.lo, e.hi, axis.log, axis.include_zero);
+}
+
+/// Maps data to pixels inside one panel's plot area.
+struct Frame {
+  double left, top, width, height;
+  AxisRange xr, yr;
+  bool xlog, ylog;
+
+  static double fraction(double v, const AxisRange& r, bool log) {
+    return log ? (std::log10(v) - std::log10(r.lo)) / (std::log10(r.hi) - std::log10(r.lo))
+               : (v - r.lo) / (r.hi - r.lo);
+  }
+  double x(double v) const { return left + width * fraction(v, xr, xlog); }
+  double y(double v) const { return top + height * (1 - fraction(v, yr, ylog)); }
+};
+
+/// Widens the narrower range so that one data unit spans as many pixels on x as on y.
+void equalise_aspect(Frame& f) {
+  const double x_span = f.xr.hi - f.xr.lo, y_span = f.yr.hi - f.yr.lo;
+  const double scale = std::min(f.width / x_span, f.height / y_span);  // pixels per unit
+  const double x_mid = 0.5 * (f.xr.lo + f.xr.hi), y_mid = 0.5 * (f.yr.lo + f.yr.hi);
+  f.xr = {x_mid - 0.5 * f.width / scale, x_mid + 0.5 * f.width / scale};
+  f.yr = {y_mid - 0.5 * f.height / scale, y_mid + 0.5 * f.height / scale};
+}
+
+std::string axis_title(const Axis& axis, const std::string& scale_suffix) {
+  std::string in_brackets = axis.unit;
+  if (!scale_suffix.empty()) in_brackets += (in_brackets.empty() ? "" : ", ") + scale_suffix;
+  return in_brackets.empty() ? axis.label : axis.label + " (" + in_brackets + ")";
+}
+
+void draw_series(std::ostringstream& svg, const Series& s, const Frame& f) {
+  const char* colour = colour_of(s.colour);
+  const bool lines = s.mark != Mark::points;
+  // Markers on a long line series would only blur it.
+  const bool points =
+      s.mark == Mark::points || (s.mark == Mark::line_and_points && s.x.size() <= 300);
+  if (lines) {
+    // Invalid points (a zero on a log axis) break the line rather than bridge the gap.
+    std::vector<std::string> runs(1);
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!usable(s.x[i], f.xlog) || !usable(s.y[i], f.ylog)) {
+        if (!runs.back().empty()) runs.emplace_back();
+        continue;
+      }
+      runs.back() += px(f.x(s.x[i])) + "," + px(f.y(s.y[i])) + " ";
+    }
+    for (const std::string& run : runs) {
+      if (run.empty()) continue;
+      svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\""
+          << (s.thin ? "1" : "1.8") << "\" stroke-linejoin=\"round\""
+          << (s.thin ? " stroke-opacity=\"0.55\"" : "")
+          << (s.dashed ? " stroke-dasharray=\"7 4\"" : "") << " points=\"" << run << "\"/>\n";
+    }
+  }
+  if (points) {
+    svg << "<g fill=\"" << colour << "\">";
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      if (usable(s.x[i], f.xlog) && usable(s.y[i], f.ylog))
+        svg << "<circle cx=\"" << px(f.x(s.x[i])) << "\" cy=\"" << px(f.y(s.y[i]))
+            << "\" r=\"2.7\"/>";
+    svg << "</g>\n";
+  }
+}
+
+/// The corner of the panel whose legend box would cover the fewest drawn points.
+void place_legend(std::ostringstream& svg, const Panel& panel, const Frame& f) {
+  std::vector<const Series*> entries;
+  double text_width = 0;
+  for (const Series& s : panel.series)
+    if (!s.name.empty()) {
+      entries.push_back(&s);
+      text_width = std::max(text_width, kCharWidth * double(glyph_count(s.name)));
+    }
+  if (entries.empty()) return;
+  const double w = kLegendPad * 3 + kLegendSample + text_width;
+  const double h = kLegendPad * 2 + kLegendRow * double(entries.size()) - 4;
+  const double inset = 8;
+  struct Corner {
+    double x, y;
+  };
+  const Corner corners[] = {{f.left + f.width - w - inset, f.top + inset},
+                            {f.left + inset, f.top + inset},
+                            {f.left + f.width - w - inset, f.top + f.height - h - inset},
+                            {f.left + inset, f.top + f.height - h - inset}};
+  std::size_t best = 0;
+  long fewest = std::numeric_limits<long>::max();
+  for (std::size_t c = 0; c < 4; ++c) {
+    long covered = 0;
+    for (const Series& s : panel.series)
+      for (std::size_t i = 0; i < s.x.size(); ++i) {
+        if (!usable(s.x[i], f.xlog) || !usable(s.y[i], f.ylog)) continue;
+        // Lines cover the space between their points too: look along each segment.
+        const bool segment = s.mark != Mark::points && i + 1 < s.x.size() &&
+                             usable(s.x[i + 1], f.xlog) && usable(s.y[i + 1], f.ylog);
+        const int samples = segment ? 12 : 1;
+        for (int k = 0; k < samples; ++k) {
+          const double a = double(k) / samples;
+          const double X = segment ? (1 - a) * f.x(s.x[i]) + a * f.x(s.x[i + 1]) : f.x(s.x[i]);
+          const double Y = segment ? (1 - a) * f.y(s.y[i]) + a * f.y(s.y[i + 1]) : f.y(s.y[i]);
+          if (X >= corners[c].x && X <= corners[c].x + w && Y >= corners[c].y &&
+              Y <= corners[c].y + h)
+            ++covered;
+        }
+      }
+    if (covered < fewest) fewest = covered, best = c;
+  }
+  const Corner at = corners[best];
+  svg << "<rect x=\"" << px(at.x) << "\" y=\"" << px(at.y) << "\" width=\"" << px(w)
+      << "\" height=\"" << px(h)
+      << "\" fill=\"white\" fill-opacity=\"0.88\" stroke=\"#bbbbbb\" rx=\"3\"/>\n";
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const Series& s = *entries[i];
+    const double row = at.y + kLegendPad + kLegendRow * (double(i) + 0.5) - 2;
+    const double x0 = at.x + kLegendPad, x1 = x0 + kLegendSample;
+    if (s.mark != Mark::points)
+      svg << "<line x1=\"" << px(x0) << "\" y1=\"" << px(row) << "\" x2=\"" << px(x1) << "\" y2=\""
+          << px(row) << "\" stroke=\"" << colour_of(s.colour) << "\" stroke-width=\""
+          << (s.thin ? "1" : "1.8") << "\"" << (s.dashed ? " stroke-dasharray=\"7 4\"" : "")
+          << "/>";
+    if (s.mark != Mark::line)
+      svg << "<circle cx=\"" << px(0.5 * (x0 + x1)) << "\" cy=\"" << px(row) << "\" r=\"3\" fill=\""
+          << colour_of(s.colour) << "\"/>";
+    svg << "<text x=\"" << px(x1 + kLegendPad) << "\" y=\"" << px(row + 4) << "\" font-size=\"12\">"
+        << escaped(s.name) << "</text>\n";
+  }
+}
+
+void draw_panel(std::ostringstream& svg, const Panel& panel, const Frame& f, bool x_labels,
+                int index) {
+  const AxisTicks xt = ticks_for(f.xr, f.xlog), yt = ticks_for(f.yr, f.ylog);
+  const std::string clip = "plot" + std::to_string(index);
+  svg << "<clipPath id=\"" << clip << "\"><rect x=\"" << px(f.left) << "\" y=\"" << px(f.top)
+      << "\" width=\"" << px(f.width) << "\" height=\"" << px(f.height) << "\"/></clipPath>\n";
+
+  // Grid first, so that data and frame lie on top of it.
+  svg << "<g stroke=\"#e8e8e8\" stroke-width=\"1\">";
+  for (double v : xt.values)
+    svg << "<line x1=\"" << px(f.x(v)) << "\" y1=\"" << px(f.top) << "\" x2=\"" << px(f.x(v))
+        << "\" y2=\"" << px(f.top + f.height) << "\"/>";
+  for (double v : yt.values)
+    svg << "<line x1=\"" << px(f.left) << "\" y1=\"" << px(f.y(v)) << "\" x2=\""
+        << px(f.left + f.width) << "\" y2=\"" << px(f.y(v)) << "\"/>";
+  svg << "</g>\n";
+  if (panel.zero_line && !f.ylog && f.yr.lo < 0 && f.yr.hi > 0)
+    svg << "<line x1=\"" << px(f.left) << "\" y1=\"" << px(f.y(0)) << "\" x2=\""
+        << px(f.left + f.width) << "\" y2=\"" << px(f.y(0))
+        << "\" stroke=\"#555555\" stroke-width=\"1\" stroke-dasharray=\"3 3\"/>\n";
+
+  svg << "<g clip-path=\"url(#" << clip << ")\">\n";
+  for (const Series& s : panel.series) draw_series(svg, s, f);
+  svg << "</g>\n";
+  svg << "<rect x=\"" << px(f.left) << "\" y=\"" << px(f.top) << "\" width=\"" << px(f.width)
+      << "\" height=\"" << px(f.height) << "\" fill=\"none\" stroke=\"#333333\"/>\n";
+
+  const double bottom = f.top + f.height;
+  svg << "<g stroke=\"#333333\">";
+  for (double v : yt.values)
+    svg << "<line x1=\"" << px(f.left - kTickLength) << "\" y1=\"" << px(f.y(v)) << "\" x2=\""
+        << px(f.left) << "\" y2=\"" << px(f.y(v)) << "\"/>";
+  for (double v : xt.values)
+    svg << "<line x1=\"" << px(f.x(v)) << "\" y1=\"" << px(bottom) << "\" x2=\"" << px(f.x(v))
+        << "\" y2=\"" << px(bottom + kTickLength) << "\"/>";
+  svg << "</g>\n<g font-size=\"12\" fill=\"#222222\">";
+  for (std::size_t i = 0; i < yt.values.size(); ++i)
+    svg << "<text x=\"" << px(f.left - kTickLength - 3) << "\" y=\"" << px(f.y(yt.values[i]) + 4)
+        << "\" text-anchor=\"end\">" << escaped(yt.labels[i]) << "</text>";
+  if (x_labels)
+    for (std::size_t i = 0; i < xt.values.size(); ++i)
+      svg << "<text x=\"" << px(f.x(xt.values[i])) << "\" y=\"" << px(bottom + kTickLength + 14)
+          << "\" text-anchor=\"middle\">" << escaped(xt.labels[i]) << "</text>";
+  svg << "</g>\n";
+
+  const double y_mid = f.top + 0.5 * f.height;
+  svg << "<text x=\"20\" y=\"" << px(y_mid) << "\" transform=\"rotate(-90 20 " << px(y_mid)
+      << ")\" text-anchor=\"middle\" font-size=\"14\">"
+      << escaped(axis_title(panel.y, yt.scale_suffix)) << "</text>\n";
+  if (x_labels)
+    svg << "<text x=\"" << px(f.left + 0.5 * f.width) << "\" y=\"" << px(bottom + 44)
+        << "\" text-anchor=\"middle\" font-size=\"14\">"
+        << escaped(axis_title(panel.x, xt.scale_suffix)) << "</text>\n";
+  if (!panel.note.empty())
+    svg << "<text x=\"" << px(f.left) << "\" y=\"" << px(f.top - 6)
+        << "\" font-size=\"12\" fill=\"#444444\">" << escaped(panel.note) << "</text>\n";
+  place_legend(svg, panel, f);
+}
+
+}  // namespace
+
+std::string svg_of(const Figure& figure) {
+  const double width = figure.width;
+  const double plot_width = width - kLeft - kRight;
+
+  Extent shared;
+  if (figure.shared_x)
+    for (const Panel& p : figure.panels) {
+      const Extent e = x_extent(p);
+      if (!e.empty()) shared.add(e.lo), shared.add(e.hi);
+    }
+
+  std::vector<Frame> frames;
+  double y = kTop + (figure.subtitle.empty() ? 0 : kSubtitleSpace);
+  for (std::size_t i = 0; i < figure.panels.size(); ++i) {
+    const Panel& p = figure.panels[i];
+    if (!p.note.empty()) y += kNoteSpace;
+    Frame f{kLeft,
+            y,
+            plot_width,
+            kPanelUnit * p.height,
+            range_of(figure.shared_x ? shared : x_extent(p), p.x),
+            range_of(y_extent(p), p.y),
+            p.x.log,
+            p.y.log};
+    if (p.equal_aspect && !p.x.log && !p.y.log) equalise_aspect(f);
+    frames.push_back(f);
+    const bool last = i + 1 == figure.panels.size();
+    y += f.height + (figure.shared_x && !last ? kSharedGap : kBottom);
+  }
+  const double height = y + 6;
+
+  std::ostringstream svg;
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << px(width) << "\" height=\""
+      << px(height) << "\" viewBox=\"0 0 " << px(width) << " " << px(height) << "\" font-family=\""
+      << kFont << "\">\n";
+  svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  svg << "<text x=\"" << px(width / 2) << "\" y=\"28\" text-anchor=\"middle\" font-size=\"17\">"
+      << escaped(figure.title) << "</text>\n";
+  if (!figure.subtitle.empty())
+    svg << "<text x=\"" << px(width / 2) << "\" y=\"48\" text-anchor=\"middle\" font-size=\"13\" "
+        << "fill=\"#555555\">" << escaped(figure.subtitle) << "</text>\n";
+  for (std::size_t i = 0; i < figure.panels.size(); ++i) {
+    const bool x_labels = !figure.shared_x || i + 1 == figure.panels.size();
+    draw_panel(svg, figure.panels[i], frames[i], x_labels, int(i));
+  }
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+}  // namespace swarmlab::report
