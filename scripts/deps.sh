@@ -4,7 +4,7 @@
 set -euo pipefail
 
 declare -A groups=(
-  [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev"
+  [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin"
   [desktop]="libimgui-dev libsdl2-dev libstb-dev fonts-dejavu-core xvfb xauth"
   [web]="emscripten nodejs npm chromium"
 )

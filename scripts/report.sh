@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Regenerates every figure of docs/paper-reproduction.md into docs/figures/, one command per
+# figure set, from the shipped presets (a few minutes in all; the Fig. 5 long run dominates).
+# Usage: scripts/report.sh [--png]     (--png: a PNG beside each SVG; needs rsvg-convert)
+# SWARMLAB=path/to/swarmlab picks the binary; by default build/app/swarmlab, built if missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=${SWARMLAB:-build/app/swarmlab}
+[ -x "$bin" ] || scripts/build.sh --target swarmlab
+figures=docs/figures
+results=$(mktemp -d)
+trap 'rm -rf "$results"' EXIT
+
+run() {
+  local preset=$1
+  shift
+  echo "== $preset" >&2
+  "$bin" run "assets/presets/$preset.json" --plots "$figures/$preset" --quiet "$@"
+}
+
+run fig1-four-masses "$@"                # Section II: closed ellipses, one common period
+run methods-vs-analytic "$@"             # Section III: Euler drifts, Euler-Cromer stays bounded
+run fig2-attractive-expansion "$@"       # Fig. 2 and Appendix C, attractive
+run fig3-repulsive-fireball "$@"         # Fig. 3 and Appendix C, repulsive
+run fig4-equilibration-10pi "$@"         # Fig. 4: P and T at every step, normalised
+run fig5-short-equilibration --out "$results/short.json" "$@"
+run fig5-long-equilibration --out "$results/long.json" "$@"
+echo "== fig5-overlay" >&2                # Fig. 5: long (solid) and short (dashed) overlaid
+"$bin" report "$results/long.json" "$results/short.json" --plots "$figures/fig5-overlay" --quiet "$@"
