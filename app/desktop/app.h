@@ -1,0 +1,50 @@
+#pragma once
+// One frame of Swarm Lab: advance the simulation, lay out the panels, draw the 3D view. The
+// same App runs on the desktop (main_loop.cpp from a loop) and in the browser (from
+// emscripten_set_main_loop); it knows nothing of windows or files.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app_state.h"
+#include "particle_renderer.h"
+
+namespace swarmlab {
+
+class App {
+ public:
+  /// Opens preset_location through the store, or a shipped preset when it is empty. Needs a
+  /// current OpenGL context. On a bad preset, error() says why.
+  App(std::unique_ptr<PresetStore> store, const std::string& preset_location,
+      bool fixed_frame_time);
+
+  const std::string& error() const { return error_; }
+  AppState& state() { return state_; }
+  bool quit_requested() const { return quit_; }
+
+  /// Between ImGui::NewFrame() and ImGui::Render(): runs the simulation for one frame that
+  /// took real_seconds and builds the whole UI.
+  void update(double real_seconds);
+  /// After ImGui::Render() and before ImGui's draw data: draws the particles into the 3D view.
+  void render_scene(float framebuffer_scale, float window_height);
+
+ private:
+  void advance_simulation(double real_seconds);
+  void layout_windows();
+  void handle_view_input();
+  void update_camera();
+  void build_particles();
+  void pick_particle(float x, float y);
+
+  AppState state_;
+  ParticleRenderer renderer_;
+  std::vector<ParticleInstance> particles_, ghosts_;
+  std::string error_;
+  bool quit_ = false;
+  bool dragging_ = false;
+  float drag_distance_ = 0;
+  double step_ms_ = 0.05;  // smoothed cost of one step of every method, for the time budget
+};
+
+}  // namespace swarmlab

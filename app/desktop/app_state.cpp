@@ -1,0 +1,105 @@
+#include "app_state.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "swarm/regime.h"
+
+namespace swarmlab {
+namespace {
+
+constexpr std::size_t kSmallSystem = 20;  // up to here every particle gets a trail
+
+std::size_t particle_count(const swarm::Preset& p) {
+  if (const auto* list = std::get_if<std::vector<swarm::Particle>>(&p.particles))
+    return list->size();
+  return std::size_t(std::get<swarm::SwarmSpec>(p.particles).count);
+}
+
+}  // namespace
+
+void AppState::open(const swarm::Preset& p, std::string from) {
+  origin = preset = draft = p;
+  location = std::move(from);
+  shipped_id.clear();
+  draft_error.clear();
+  draft_error_section = Section::none;
+  modified = false;
+  selected.reset();
+  restart();
+
+  // Start at a pace a class can follow: a period in five seconds, an expansion stage in ten.
+  const swarm::System& s = run->system();
+  const double rate = swarm::rate_of(swarm::spring_rate(s));
+  if (p.expansion)
+    speed = p.expansion->tau / 10;
+  else if (rate > 0)
+    speed = 2 * M_PI / rate / 5;
+  else
+    speed = p.duration / 20;
+  speed = std::clamp(speed, 1e-3, 1e4);
+
+  view.follow_cm = !p.container_radius;
+  view.springs = particle_count(p) <= 6 ? SpringOverlay::pairs : SpringOverlay::off;
+  plots.tab = !p.compare.empty() ? 3 : p.expansion ? 2 : p.container_radius ? 0 : 1;
+  plots.average_window = 20.0 * double(run->primary().plan().sample_every) * p.dt;
+  plots.scroll_window = 0;
+  reframe = true;
+}
+
+bool AppState::apply_draft(Section section) {
+  const std::string error = swarm::preset_error(draft);
+  if (!error.empty()) {
+    draft_error = error;
+    draft_error_section = section;
+    return false;
+  }
+  draft_error.clear();
+  draft_error_section = Section::none;
+  preset = draft;
+  modified = swarm::preset_to_json(preset) != swarm::preset_to_json(origin);
+  restart();
+  return true;
+}
+
+void AppState::revert_draft() {
+  draft = preset;
+  draft_error.clear();
+  draft_error_section = Section::none;
+}
+
+void AppState::restart() {
+  run = std::make_unique<LiveRun>(preset);
+  step_debt = 0;
+  colour_scale = ColourScale{};
+  const swarm::System& s = run->system();
+  if (selected && *selected >= s.particles.size()) selected.reset();
+
+  // The scene: the container, or the swarm's extent about its centre of mass.
+  const swarm::Vec3 cm = swarm::cm_position(s);
+  double extent = 0, heaviest = 0;
+  for (const auto& q : s.particles) {
+    extent = std::max(extent, (q.r - cm).norm());
+    heaviest = std::max(heaviest, q.m);
+  }
+  scene_radius =
+      float(preset.container_radius ? *preset.container_radius : std::max(extent * 1.15, 1e-3));
+  heaviest_mass = heaviest;
+  // Spheres that would just about touch if the particles filled the scene evenly.
+  const double n = double(s.particles.size());
+  particle_radius = float(
+      std::clamp(0.45 * scene_radius / std::cbrt(n), 0.004 * scene_radius, 0.06 * scene_radius));
+  update_followed();
+}
+
+void AppState::update_followed() {
+  std::vector<std::size_t> followed;
+  const std::size_t n = run->system().particles.size();
+  if (n <= kSmallSystem)
+    for (std::size_t i = 0; i < n; ++i) followed.push_back(i);
+  else if (selected)
+    followed.push_back(*selected);
+  run->follow(followed);
+}
+
+}  // namespace swarmlab

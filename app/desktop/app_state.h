@@ -1,0 +1,105 @@
+#pragma once
+// What the window shows and edits: the preset being run, the edited draft of it, the live run,
+// the camera and the display options. Panels read and change this; app.cpp draws it.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "colour_map.h"
+#include "live_run.h"
+#include "preset_store.h"
+
+namespace swarmlab {
+
+enum class SpringOverlay { off, pairs, to_cm };
+
+struct ViewOptions {
+  ColourBy colour_by = ColourBy::speed;
+  float particle_size = 1.0f;  ///< multiplies the automatic size
+  bool container = true;
+  bool centre_of_mass = true;
+  bool trails = true;
+  bool orbit = true;   ///< the analytic orbit ahead of the selected particle
+  bool ghosts = true;  ///< analytic positions beside a numerical run
+  bool axes = true;
+  bool follow_cm = false;
+  SpringOverlay springs = SpringOverlay::off;
+};
+
+struct PlotOptions {
+  double average_window = 0;  ///< running average of P and T over this time; 0: none
+  double scroll_window = 0;   ///< show the last stretch of this length; 0: the whole run
+  bool log_log = true;        ///< P-V, T-V, P-T on log-log axes
+  int tab = -1;               ///< tab to select on the next frame, -1: leave as is
+};
+
+struct Layout {
+  bool controls = true, plots = true, help = false;
+  float ui_scale = 1.0f;
+  float pending_ui_scale = 1.0f;  ///< applied between frames by the main loop
+  ViewRect view;                  ///< the 3D view: the window minus the panels
+};
+
+/// Frame timing, smoothed, in milliseconds.
+struct FrameStats {
+  double frame_ms = 16, simulation_ms = 0, scene_ms = 0;
+  double speed_ratio = 1;  ///< simulated speed achieved / requested (< 1: the budget ran out)
+  long frames = 0;
+};
+
+/// Which part of the controls an edit came from, to show a refusal next to it.
+enum class Section { none, scenario, system, container, simulation };
+
+struct AppState {
+  std::unique_ptr<PresetStore> store;
+  std::vector<ShippedPreset> shipped;
+
+  swarm::Preset origin;  ///< as opened: "Reset to preset" returns here
+  swarm::Preset preset;  ///< running, always valid
+  swarm::Preset draft;   ///< edited in the panels; applied only when valid
+  std::string draft_error;
+  Section draft_error_section = Section::none;
+  bool modified = false;   ///< preset differs from origin
+  std::string location;    ///< the path field of open and save
+  std::string shipped_id;  ///< the shipped preset opened last, empty after opening a file
+  std::string status;      ///< last open or save result
+  bool status_is_error = false;
+
+  std::unique_ptr<LiveRun> run;
+  bool playing = true;
+  double speed = 1;        ///< simulated time per second of wall time
+  double step_debt = 0;    ///< fractional steps carried to the next frame
+  bool step_once = false;  ///< single step requested while paused
+  /// Frames run with a fixed wall-clock step and no time budget (--frames, screenshots), so
+  /// that the picture does not depend on the machine's speed.
+  bool fixed_frame_time = false;
+
+  OrbitCamera camera;
+  bool reframe = true;  ///< fit the camera to the scene on the next frame
+  float scene_radius = 1;
+  float particle_radius = 0.05f;  ///< world radius of the heaviest particle at size 1
+  double heaviest_mass = 1;
+  std::optional<std::size_t> selected;
+  ColourScale colour_scale;
+  ViewOptions view;
+  PlotOptions plots;
+  Layout layout;
+  FrameStats stats;
+
+  /// Opens a valid preset: it becomes origin, preset and draft; the run restarts.
+  void open(const swarm::Preset& p, std::string location);
+  /// Validates the draft; applies it and restarts the run, or keeps the running preset and
+  /// records the reason next to `section`. Returns whether it was applied.
+  bool apply_draft(Section section);
+  /// Drops a refused draft: the panels show the running preset again.
+  void revert_draft();
+  /// Restarts the run from the running preset's initial state.
+  void restart();
+  /// The trails to keep: the selected particle, and every particle of a small system.
+  void update_followed();
+};
+
+}  // namespace swarmlab

@@ -1,0 +1,96 @@
+// The desktop entry point: a window, the shipped presets from disk, and the frame loop; with
+// --frames a fixed number of frames, a timing summary and optionally a screenshot.
+
+#include "desktop.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "main_loop.h"
+#include "preset_store.h"
+#include "screenshot.h"
+
+namespace swarmlab {
+namespace {
+
+/// The shipped presets: in the source tree of this build, else next to the binary.
+std::string shipped_preset_directory() {
+  if (std::filesystem::is_directory(SWARMLAB_PRESET_DIR)) return SWARMLAB_PRESET_DIR;
+  std::string beside;
+  if (char* base = SDL_GetBasePath()) {
+    beside = std::string(base) + "presets";
+    SDL_free(base);
+  }
+  return beside;
+}
+
+std::string screenshot_error;
+std::string screenshot_path;
+
+void take_screenshot(Frontend& f) {
+  int width = 0, height = 0;
+  SDL_GL_GetDrawableSize(f.window.window, &width, &height);
+  screenshot_error = save_screenshot(screenshot_path, width, height);
+}
+
+}  // namespace
+
+int run_desktop(const DesktopOptions& options) {
+  std::string error;
+  Frontend f;
+  f.window = open_window("Swarm Lab", 1280, 720, error);
+  if (!f.window.window) {
+    std::fprintf(stderr, "error: %s\n", error.c_str());
+    return 1;
+  }
+  f.app = std::make_unique<App>(make_file_preset_store(shipped_preset_directory()),
+                                options.preset_path, options.frames > 0);
+  if (!f.app->error().empty()) {
+    std::fprintf(stderr, "error: %s\n", f.app->error().c_str());
+    f.app.reset();
+    close_window(f.window);
+    return 1;
+  }
+
+  // The first frames build fonts and buffers; the timing summary leaves them out.
+  constexpr int kWarmUp = 5;
+  double timed_ms = 0;
+  int timed_frames = 0;
+  for (int frame = 1; f.running; ++frame) {
+    const bool last = options.frames > 0 && frame == options.frames;
+    screenshot_path = options.screenshot_path;
+    const auto start = std::chrono::steady_clock::now();
+    run_frame(f, last && !screenshot_path.empty() ? take_screenshot : nullptr);
+    if (frame > kWarmUp) {
+      timed_ms +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
+      ++timed_frames;
+    }
+    if (last) break;
+  }
+
+  int status = 0;
+  if (options.frames > 0) {
+    const FrameStats& stats = f.app->state().stats;
+    std::printf(
+        "swarmlab: %d frames, %zu particles, mean frame time %.2f ms (step %.2f ms, "
+        "particle upload %.2f ms, smoothed)\n",
+        options.frames, f.app->state().run->system().particles.size(),
+        timed_frames > 0 ? timed_ms / timed_frames : 0.0, stats.simulation_ms, stats.scene_ms);
+    if (!options.screenshot_path.empty()) {
+      if (screenshot_error.empty()) {
+        std::printf("swarmlab: screenshot written to %s\n", options.screenshot_path.c_str());
+      } else {
+        std::fprintf(stderr, "error: %s\n", screenshot_error.c_str());
+        status = 1;
+      }
+    }
+  }
+  f.app.reset();  // GL objects go before the context
+  close_window(f.window);
+  return status;
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,18 @@
+#pragma once
+// The desktop window of swarmlab: Dear ImGui over SDL2 and OpenGL 3.3.
+
+#include <string>
+
+namespace swarmlab {
+
+struct DesktopOptions {
+  std::string preset_path;      ///< preset to open; empty: the first shipped preset
+  int frames;                   ///< run this many frames, then exit; 0: until the window closes
+  std::string screenshot_path;  ///< after the last frame, save the window as PNG; empty: none
+};
+
+/// Opens the window and runs until it is closed (or for options.frames frames).
+/// Returns the process exit code.
+int run_desktop(const DesktopOptions& options);
+
+}  // namespace swarmlab

@@ -1,0 +1,10 @@
+#pragma once
+// The UI font (DejaVu Sans, compiled into the binary) and the UI scale for projectors.
+
+namespace swarmlab {
+
+/// Rebuilds ImGui's font atlas and style for a UI scale (1 = 16 px text). Call between frames;
+/// the renderer's font texture must be recreated afterwards.
+void apply_ui_scale(float scale);
+
+}  // namespace swarmlab

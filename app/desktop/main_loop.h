@@ -1,0 +1,25 @@
+#pragma once
+// The one loop body of the window, shared by the desktop (a plain loop in desktop.cpp) and the
+// browser (emscripten_set_main_loop_arg calling run_frame).
+
+#include <chrono>
+#include <memory>
+
+#include "app.h"
+#include "sdl_window.h"
+
+namespace swarmlab {
+
+struct Frontend {
+  SdlWindow window;
+  std::unique_ptr<App> app;
+  std::chrono::steady_clock::time_point last_frame = std::chrono::steady_clock::now();
+  bool running = true;
+};
+
+/// Handles the pending events, runs and draws one frame and presents it; before presenting,
+/// calls before_present (e.g. to read the pixels for a screenshot) when given. Returns false
+/// once the window should close.
+bool run_frame(Frontend& frontend, void (*before_present)(Frontend&) = nullptr);
+
+}  // namespace swarmlab

@@ -1,0 +1,31 @@
+#pragma once
+// The panels of the window. Each draws one part of the controls into the current ImGui window
+// and edits the AppState; edits to the preset go through AppState::apply_draft.
+
+#include "app_state.h"
+
+namespace swarmlab {
+
+void draw_scenario_panel(AppState& state);
+void draw_system_panel(AppState& state);
+void draw_container_panel(AppState& state);
+void draw_simulation_panel(AppState& state);
+void draw_view_panel(AppState& state);
+/// The live plots (right-hand panel).
+void draw_plots_panel(AppState& state);
+/// The read-outs over the 3D view, each with its equation on hover.
+void draw_readouts(AppState& state);
+/// Play, pause, step, reset, speed and the clock, over the top of the 3D view.
+void draw_transport_bar(AppState& state);
+
+// Helpers shared by the panels.
+
+/// Shows the reason the last edit in `section` was refused, with a button to drop it.
+void show_refusal(AppState& state, Section section);
+/// A "(?)" that explains the control before it on hover.
+void help_marker(const char* text);
+/// Whether the item just drawn was changed and released (slider let go, Enter, focus left):
+/// typed and dragged values are applied then, not at every keystroke.
+bool committed();
+
+}  // namespace swarmlab

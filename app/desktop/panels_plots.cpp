@@ -1,0 +1,282 @@
+// The live plots: wall pressure and temperature with a running average, the energies, the
+// expansion's P-V, T-V and P-T with power-law fits, and the errors of the numerical methods.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "panels.h"
+#include "plot_widget.h"
+
+namespace swarmlab {
+namespace {
+
+constexpr ImU32 kPressure = IM_COL32(255, 150, 50, 255);
+constexpr ImU32 kPressureRaw = IM_COL32(255, 150, 50, 90);
+constexpr ImU32 kTemperature = IM_COL32(90, 180, 255, 255);
+constexpr ImU32 kTemperatureRaw = IM_COL32(90, 180, 255, 90);
+constexpr ImU32 kKinetic = IM_COL32(255, 205, 70, 255);
+constexpr ImU32 kPotential = IM_COL32(120, 200, 255, 255);
+constexpr ImU32 kTotal = IM_COL32(240, 240, 240, 255);
+constexpr ImU32 kFit = IM_COL32(255, 255, 255, 200);
+
+ImU32 colour_of(swarm::Method m) {
+  switch (m) {
+    case swarm::Method::analytic:
+      return IM_COL32(235, 235, 235, 255);
+    case swarm::Method::euler:
+      return IM_COL32(255, 95, 95, 255);
+    case swarm::Method::euler_cromer:
+      return IM_COL32(100, 220, 120, 255);
+    case swarm::Method::verlet:
+      return IM_COL32(190, 140, 255, 255);
+    case swarm::Method::rk4:
+      return IM_COL32(80, 220, 220, 255);
+  }
+  return IM_COL32_WHITE;
+}
+
+/// The sample series of the primary run, with P and T averaged over a trailing time window.
+/// Rebuilt only when a sample arrives or the window changes.
+struct SampleSeries {
+  const LiveRun* run = nullptr;
+  std::size_t count = 0;
+  double window = -1;
+  std::vector<double> t, P, T, P_mean, T_mean;  // from the second sample on
+  std::vector<double> t_all, KE, PE, E, drift;  // every sample
+
+  void update(LiveRun& live, double average_window) {
+    const auto& samples = live.primary().samples();
+    if (run == &live && count == samples.size() && window == average_window) return;
+    run = &live;
+    count = samples.size();
+    window = average_window;
+    for (auto* v : {&t, &P, &T, &P_mean, &T_mean, &t_all, &KE, &PE, &E, &drift}) v->clear();
+    const double E0 = samples.front().E;
+    double P_sum = 0, hit_T_sum = 0, hit_sum = 0;
+    std::size_t first = 1;  // the first sample (t = 0) has no interval behind it
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+      const swarm::Sample& s = samples[i];
+      P_sum += s.P;
+      hit_T_sum += s.T * double(s.hits);
+      hit_sum += double(s.hits);
+      while (first < i && samples[first].t <= s.t - average_window) {
+        P_sum -= samples[first].P;
+        hit_T_sum -= samples[first].T * double(samples[first].hits);
+        hit_sum -= double(samples[first].hits);
+        ++first;
+      }
+      t.push_back(s.t);
+      P.push_back(s.P);
+      T.push_back(s.hits > 0 ? s.T : std::nan(""));
+      P_mean.push_back(P_sum / double(i - first + 1));
+      // The temperature is a mean over wall hits, so its average weighs intervals by hits.
+      T_mean.push_back(hit_sum > 0.5 ? hit_T_sum / hit_sum : std::nan(""));
+    }
+    for (const swarm::Sample& s : samples) {
+      t_all.push_back(s.t);
+      KE.push_back(s.KE);
+      PE.push_back(s.PE);
+      E.push_back(s.E);
+      drift.push_back(E0 != 0 ? (s.E - E0) / std::abs(E0) : s.E - E0);
+    }
+  }
+};
+
+SampleSeries series;
+
+std::optional<double> window_start(const AppState& state, double now) {
+  if (state.plots.scroll_window <= 0) return std::nullopt;
+  return std::max(0.0, now - state.plots.scroll_window);
+}
+
+void draw_wall_tab(AppState& state, float plot_height) {
+  const float width = 0.42f * ImGui::GetContentRegionAvail().x;
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputDouble("average over", &state.plots.average_window, 0, 0, "%.4g");
+  state.plots.average_window = std::max(0.0, state.plots.average_window);
+  help_marker(
+      "Running average of P and T over this much simulated time (0: none). P and T "
+      "from a single interval are noisy: few particles hit the wall in each one.");
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputDouble("show last", &state.plots.scroll_window, 0, 0, "%.4g");
+  state.plots.scroll_window = std::max(0.0, state.plots.scroll_window);
+  help_marker("Scroll: show only this much of the most recent time (0: the whole run).");
+
+  series.update(*state.run, state.plots.average_window);
+  const std::string empty = state.preset.container_radius
+                                ? "waiting for the first samples"
+                                : "no container: switch one on to measure P and T";
+  PlotSpec p;
+  p.title = "Wall pressure";
+  p.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
+  p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
+  p.y_from_zero = true;
+  p.empty_message = empty;
+  p.series = {{"each sample", &series.t, &series.P, kPressureRaw, false, 1.0f},
+              {"running average", &series.t, &series.P_mean, kPressure, false, 2.5f}};
+  draw_plot("pressure", p, plot_height);
+
+  PlotSpec t = p;
+  t.title = "Wall temperature";
+  t.y = {"T (energy, k_B = 1)", false, std::nullopt, std::nullopt};
+  t.series = {{"each sample", &series.t, &series.T, kTemperatureRaw, false, 1.0f},
+              {"running average", &series.t, &series.T_mean, kTemperature, false, 2.5f}};
+  draw_plot("temperature", t, plot_height);
+}
+
+void draw_energy_tab(AppState& state, float plot_height) {
+  series.update(*state.run, state.plots.average_window);
+  const std::vector<double>& t_all = series.t_all;
+  PlotSpec e;
+  e.title = "Energies";
+  e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
+  e.y = {"energy", false, std::nullopt, std::nullopt};
+  e.y_from_zero = true;
+  e.series = {{"KE", &t_all, &series.KE, kKinetic, false, 2.0f},
+              {"PE", &t_all, &series.PE, kPotential, false, 2.0f},
+              {"E = KE + PE", &t_all, &series.E, kTotal, false, 2.5f}};
+  draw_plot("energies", e, plot_height);
+
+  PlotSpec d;
+  d.title = "Energy change";
+  d.x = e.x;
+  d.y = {"(E - E\u2080) / |E\u2080|", false, std::nullopt, std::nullopt};
+  d.series = {{std::string(swarm::name_of(state.preset.method)), &t_all, &series.drift,
+               colour_of(state.preset.method), false, 2.0f}};
+  draw_plot("drift", d, plot_height);
+}
+
+void draw_expansion_tab(AppState& state, float plot_height) {
+  if (!state.preset.expansion) {
+    ImGui::TextWrapped(
+        "This preset has no expansion. Under Container, switch on a container "
+        "and the stepwise expansion to measure P and T stage by stage.");
+    return;
+  }
+  ImGui::Checkbox("log-log axes", &state.plots.log_log);
+  help_marker(
+      "On log-log axes a power law y = a x^b is a straight line of slope b. The fit is "
+      "least squares of ln y on ln x over the stages with P, T > 0 (paper Appendix C).");
+  const auto& stages = state.run->primary().stages();
+  static std::vector<double> V, P, T;
+  V.clear(), P.clear(), T.clear();
+  for (const swarm::Stage& s : stages) {
+    V.push_back(s.V);
+    P.push_back(s.P);
+    T.push_back(s.T);
+  }
+  const swarm::StageFits fits = state.run->primary().fits();
+  const bool log = state.plots.log_log;
+  auto plot = [&](const char* id, const char* title, const char* x_label,
+                  const std::vector<double>& x, const char* y_label, const std::vector<double>& y,
+                  const swarm::PowerLawFit& fit, const char* law, ImU32 colour) {
+    PlotSpec s;
+    s.title = title;
+    s.x = {x_label, log, std::nullopt, std::nullopt};
+    s.y = {y_label, log, std::nullopt, std::nullopt};
+    s.y_from_zero = !log;
+    s.empty_message = "the first stage ends at t = tau";
+    s.series = {{"stages", &x, &y, colour, true, 2.0f}};
+    if (fit.valid) {
+      char label[96];
+      std::snprintf(label, sizeof label, "%s^%.3f \u00b1 %.3f", law, fit.slope, fit.slope_stderr);
+      s.fits.push_back({label, std::exp(fit.intercept), fit.slope, kFit});
+    }
+    draw_plot(id, s, plot_height);
+    if (fit.valid && ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::Text("ln y = %.4g + (%.4g \u00b1 %.2g) ln x,  R\u00b2 = %.4f over %zu stages",
+                  fit.intercept, fit.slope, fit.slope_stderr, fit.r_squared, fit.used.size());
+      ImGui::EndTooltip();
+    }
+  };
+  plot("pv", "P against V", "V (length\u00b3)", V, "P (force/area)", P, fits.P_V, "P \u221d V",
+       kPressure);
+  plot("tv", "T against V", "V (length\u00b3)", V, "T (energy)", T, fits.T_V, "T \u221d V",
+       kTemperature);
+  plot("pt", "P against T", "T (energy)", T, "P (force/area)", P, fits.P_T, "P \u221d T",
+       IM_COL32(230, 120, 255, 255));
+}
+
+void draw_compare_tab(AppState& state, float plot_height) {
+  const auto& errors = state.run->errors();
+  if (state.preset.compare.empty()) {
+    ImGui::TextWrapped(
+        "Nothing runs side by side. Under Simulation, tick 'analytic' next to a "
+        "numerical method (or the other way round) to compare them here.");
+    return;
+  }
+  static std::vector<std::vector<double>> energy_t, energy;
+  PlotSpec e;
+  e.title = "Energy error";
+  e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
+  e.y = {"(E - E\u2080) / |E\u2080|", false, std::nullopt, std::nullopt};
+  // Every run's energy from its own samples, so methods compare even without 'analytic'.
+  const std::size_t runs = 1 + state.run->compared_count();
+  energy_t.resize(runs);
+  energy.resize(runs);
+  for (std::size_t k = 0; k < runs; ++k) {
+    swarm::ProtocolRun& run = k == 0 ? state.run->primary() : state.run->compared(k - 1);
+    const swarm::Method m = k == 0 ? state.preset.method : state.run->compared_method(k - 1);
+    const double E0 = run.samples().front().E;
+    energy_t[k].clear();
+    energy[k].clear();
+    for (const swarm::Sample& s : run.samples()) {
+      energy_t[k].push_back(s.t);
+      energy[k].push_back(E0 != 0 ? (s.E - E0) / std::abs(E0) : s.E - E0);
+    }
+    e.series.push_back(
+        {std::string(swarm::name_of(m)), &energy_t[k], &energy[k], colour_of(m), false, 2.0f});
+  }
+  draw_plot("energy_error", e, plot_height);
+
+  PlotSpec p;
+  p.title = "Position error";
+  p.x = e.x;
+  p.y = {"max |\u0394r| from the exact orbit (length)", false, std::nullopt, std::nullopt};
+  p.y_from_zero = true;
+  p.empty_message = "tick 'analytic' under Side by side to measure position errors";
+  for (const ErrorTrack& track : errors)
+    p.series.push_back({std::string(swarm::name_of(track.method)), &track.t, &track.position_error,
+                        colour_of(track.method), false, 2.0f});
+  draw_plot("position_error", p, plot_height);
+}
+
+}  // namespace
+
+void draw_plots_panel(AppState& state) {
+  const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare"};
+  if (!ImGui::BeginTabBar("plots")) return;
+  for (int i = 0; i < 4; ++i) {
+    const ImGuiTabItemFlags flags = state.plots.tab == i ? ImGuiTabItemFlags_SetSelected : 0;
+    if (!ImGui::BeginTabItem(tabs[i], nullptr, flags)) continue;
+    const float options = i == 0 ? 2.6f : i == 2 ? 1.4f : 0.0f;
+    const float available =
+        ImGui::GetContentRegionAvail().y - options * ImGui::GetFrameHeightWithSpacing();
+    const int plots = i == 2 ? 3 : 2;
+    const float height = std::max(8 * ImGui::GetFontSize(),
+                                  available / float(plots) - ImGui::GetStyle().ItemSpacing.y);
+    switch (i) {
+      case 0:
+        draw_wall_tab(state, height);
+        break;
+      case 1:
+        draw_energy_tab(state, height);
+        break;
+      case 2:
+        draw_expansion_tab(state, height);
+        break;
+      case 3:
+        draw_compare_tab(state, height);
+        break;
+    }
+    ImGui::EndTabItem();
+  }
+  state.plots.tab = -1;
+  ImGui::EndTabBar();
+}
+
+}  // namespace swarmlab

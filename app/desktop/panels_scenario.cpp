@@ -1,0 +1,109 @@
+// The scenario panel: the shipped presets with their descriptions, open and save by path,
+// reset to the preset as opened.
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "panels.h"
+
+namespace swarmlab {
+
+void show_refusal(AppState& state, Section section) {
+  if (state.draft_error.empty() || state.draft_error_section != section) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+  ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
+  ImGui::PopStyleColor();
+  if (ImGui::SmallButton("Undo the edit")) state.revert_draft();
+  ImGui::SameLine();
+  ImGui::TextDisabled("(the run goes on with the last valid values)");
+}
+
+void help_marker(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+bool committed() { return ImGui::IsItemDeactivatedAfterEdit(); }
+
+void draw_scenario_panel(AppState& state) {
+  ImGui::TextDisabled("Shipped presets");
+  const float list_height = ImGui::GetTextLineHeightWithSpacing() *
+                            (float(std::min<std::size_t>(state.shipped.size(), 7)) + 0.4f);
+  if (ImGui::BeginListBox("##presets", ImVec2(-1, list_height))) {
+    for (const ShippedPreset& s : state.shipped) {
+      const bool current = state.shipped_id == s.id;
+      const std::string label = (s.preset.name.empty() ? s.id : s.preset.name) + "##" + s.id;
+      if (ImGui::Selectable(label.c_str(), current)) {
+        // Saving goes to a copy in the working directory, never over the shipped file.
+        state.open(s.preset, "my-" + s.id);
+        state.shipped_id = s.id;
+      }
+      if (ImGui::IsItemHovered() && !s.preset.description.empty()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
+        ImGui::TextUnformatted(s.preset.description.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
+    }
+    ImGui::EndListBox();
+  }
+
+  ImGui::Spacing();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.45f, 1.0f));
+  ImGui::TextWrapped("%s%s",
+                     state.preset.name.empty() ? "(unnamed preset)" : state.preset.name.c_str(),
+                     state.modified ? "  (edited)" : "");
+  ImGui::PopStyleColor();
+  if (!state.preset.description.empty()) ImGui::TextWrapped("%s", state.preset.description.c_str());
+  if (state.modified && ImGui::Button("Reset to preset")) {
+    state.draft = state.origin;
+    state.apply_draft(Section::scenario);
+  }
+
+  ImGui::Spacing();
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputTextWithHint("##location", state.store->location_hint(), &state.location);
+  if (ImGui::Button("Open")) {
+    const swarm::PresetParse parsed = state.store->open(state.location);
+    if (parsed.preset) {
+      state.open(*parsed.preset, state.location);
+      state.status = "Opened " + state.location;
+      state.status_is_error = false;
+    } else {
+      state.status = parsed.error;
+      state.status_is_error = true;
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Save")) {
+    const std::string error =
+        state.store->save(state.location, swarm::preset_to_json(state.preset));
+    state.status = error.empty() ? "Saved " + state.location : error;
+    state.status_is_error = !error.empty();
+    if (error.empty()) {
+      state.origin = state.preset;
+      state.modified = false;
+    }
+  }
+  help_marker(
+      "Open reads a preset file; Save writes the running preset (every edit you made) as a "
+      "preset file that 'swarmlab run' and the browser run identically. Files are written "
+      "whole or not at all.");
+  if (!state.status.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, state.status_is_error ? ImVec4(1, 0.45f, 0.4f, 1)
+                                                               : ImVec4(0.55f, 0.9f, 0.6f, 1));
+    ImGui::TextWrapped("%s", state.status.c_str());
+    ImGui::PopStyleColor();
+  }
+  show_refusal(state, Section::scenario);
+}
+
+}  // namespace swarmlab

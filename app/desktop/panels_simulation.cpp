@@ -1,0 +1,143 @@
+// The simulation panel (method, dt, duration, methods compared) and the transport bar over the
+// 3D view (play, pause, step, reset, speed, clock).
+
+#include <imgui.h>
+
+#include <cmath>
+#include <string>
+
+#include "panels.h"
+#include "swarm/regime.h"
+
+namespace swarmlab {
+namespace {
+
+constexpr swarm::Method kMethods[] = {swarm::Method::analytic, swarm::Method::euler,
+                                      swarm::Method::euler_cromer, swarm::Method::verlet,
+                                      swarm::Method::rk4};
+
+const char* describe(swarm::Method m) {
+  switch (m) {
+    case swarm::Method::analytic:
+      return "The exact closed-form orbits of the paper: every particle on its ellipse (or "
+             "hyperbola) about the centre of mass. O(N) per step, exact for any dt.";
+    case swarm::Method::euler:
+      return "x += v dt, then v += a dt from the pairwise forces. First order; the energy grows "
+             "every step. O(N^2).";
+    case swarm::Method::euler_cromer:
+      return "v += a dt, then x += v dt with the new v. First order, but the energy only wobbles "
+             "and stays bounded. O(N^2).";
+    case swarm::Method::verlet:
+      return "Velocity Verlet (kick-drift-kick). Second order, energy bounded. O(N^2).";
+    case swarm::Method::rk4:
+      return "Classical fourth-order Runge-Kutta. Very accurate for small dt; its energy "
+             "drifts slowly. O(N^2).";
+  }
+  return "";
+}
+
+}  // namespace
+
+void draw_simulation_panel(AppState& state) {
+  swarm::Preset& d = state.draft;
+  bool changed = false;
+  const float width = 0.55f * ImGui::GetContentRegionAvail().x;
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::BeginCombo("method", std::string(swarm::name_of(d.method)).c_str())) {
+    for (swarm::Method m : kMethods) {
+      if (ImGui::Selectable(std::string(swarm::name_of(m)).c_str(), m == d.method)) {
+        d.method = m;
+        changed = true;
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(m));
+    }
+    ImGui::EndCombo();
+  }
+  help_marker(describe(d.method));
+
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputDouble("dt", &d.dt, 0, 0, "%.6g");
+  changed |= committed();
+  help_marker(
+      "The time step. The analytic map is exact for any dt; the numerical methods' "
+      "errors shrink as dt^order. Wall hits are placed to within one step (paper rule).");
+  if (!d.expansion) {
+    ImGui::SetNextItemWidth(width);
+    ImGui::InputDouble("duration", &d.duration, 0, 0, "%.6g");
+    changed |= committed();
+  }
+
+  ImGui::TextUnformatted("Side by side with");
+  help_marker(
+      "Run other methods from the same initial state in lockstep. With 'analytic' "
+      "among them, its positions are drawn as hollow ghosts and the Compare plots show "
+      "each numerical method's position and energy errors.");
+  for (swarm::Method m : kMethods) {
+    if (m == d.method) continue;
+    bool on = std::find(d.compare.begin(), d.compare.end(), m) != d.compare.end();
+    if (ImGui::Checkbox(std::string(swarm::name_of(m)).c_str(), &on)) {
+      if (on)
+        d.compare.push_back(m);
+      else
+        d.compare.erase(std::find(d.compare.begin(), d.compare.end(), m));
+      changed = true;
+    }
+    ImGui::SameLine();
+  }
+  ImGui::NewLine();
+  // A method compared with itself tells nothing: drop it when it becomes the primary.
+  if (changed)
+    d.compare.erase(std::remove(d.compare.begin(), d.compare.end(), d.method), d.compare.end());
+  if (changed) state.apply_draft(Section::simulation);
+  show_refusal(state, Section::simulation);
+
+  ImGui::Separator();
+  const swarm::RunPlan& plan = state.run->primary().plan();
+  ImGui::TextDisabled("%ld steps, a sample every %ld steps", plan.steps, plan.sample_every);
+}
+
+void draw_transport_bar(AppState& state) {
+  const float font = ImGui::GetFontSize();
+  if (ImGui::Button(state.playing ? "\u2016 Pause" : "\u25b6 Play", ImVec2(5.5f * font, 0)))
+    state.playing = !state.playing;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space");
+  ImGui::SameLine();
+  if (ImGui::Button("Step")) state.step_once = true, state.playing = false;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("S: one step of dt");
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) state.restart();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("R: back to t = 0");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(9 * font);
+  const double lo = 1e-3, hi = 1e4;
+  ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, "speed %.3g /s",
+                      ImGuiSliderFlags_Logarithmic);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
+  ImGui::SameLine();
+
+  const double t = state.run->time();
+  const double rate = swarm::rate_of(swarm::spring_rate(state.run->system()));
+  if (swarm::regime_of(swarm::spring_rate(state.run->system())) == swarm::Regime::attractive)
+    ImGui::Text("t = %.3f   \u03c9t/2\u03c0 = %.3f", t, rate * t / (2 * M_PI));
+  else if (rate > 0)
+    ImGui::Text("t = %.3f   \u03a9t = %.3f", t, rate * t);
+  else
+    ImGui::Text("t = %.3f", t);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Simulated time, and in periods of the common oscillation "
+        "(\u03c9 = \u221a(J M)); for J < 0 in e-foldings \u03a9t.");
+  if (state.run->finished()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "end of run");
+  } else if (state.playing && state.stats.speed_ratio < 0.97) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "(%.0f%% of the speed)",
+                       100 * state.stats.speed_ratio);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The steps of this speed do not fit in a frame on this machine.");
+  }
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,263 @@
+#include "plot_widget.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace swarmlab {
+namespace {
+
+constexpr ImU32 kFrame = IM_COL32(22, 26, 34, 255);
+constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 28);
+constexpr ImU32 kAxis = IM_COL32(200, 205, 215, 160);
+constexpr ImU32 kText = IM_COL32(215, 220, 230, 255);
+constexpr ImU32 kDimText = IM_COL32(170, 176, 190, 255);
+
+/// Maps data values to pixels along one axis, linearly or logarithmically.
+struct Scale {
+  double lo = 0, hi = 1;  // in transformed units (log10 when log)
+  bool log = false;
+  float p0 = 0, p1 = 1;  // pixels of lo and hi
+
+  double transform(double v) const { return log ? std::log10(v) : v; }
+  bool usable(double v) const { return std::isfinite(v) && (!log || v > 0); }
+  float pixel(double v) const { return p0 + float((transform(v) - lo) / (hi - lo)) * (p1 - p0); }
+  double value(float px) const {
+    const double u = lo + double(px - p0) / double(p1 - p0) * (hi - lo);
+    return log ? std::pow(10.0, u) : u;
+  }
+};
+
+std::string format_tick(double v) {
+  char text[32];
+  if (v != 0 && (std::abs(v) >= 1e5 || std::abs(v) < 1e-3))
+    std::snprintf(text, sizeof text, "%.0e", v);
+  else
+    std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+/// Tick values: 1-2-5 steps on a linear axis, powers of ten (or 1-2-5 within a decade) on a
+/// log axis.
+std::vector<double> ticks(const Scale& s, int wanted) {
+  std::vector<double> out;
+  if (s.log && s.hi - s.lo >= 1.0) {
+    const int step = std::max(1, int(std::ceil((s.hi - s.lo) / wanted)));
+    for (int e = int(std::ceil(s.lo - 1e-9)); e <= int(std::floor(s.hi + 1e-9)); e += step)
+      out.push_back(std::pow(10.0, e));
+    return out;
+  }
+  const double lo = s.log ? std::pow(10.0, s.lo) : s.lo;
+  const double hi = s.log ? std::pow(10.0, s.hi) : s.hi;
+  const double raw = (hi - lo) / wanted;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  const double r = raw / magnitude;
+  const double step = magnitude * (r < 1.5 ? 1 : r < 3.5 ? 2 : r < 7.5 ? 5 : 10);
+  for (double v = std::ceil(lo / step) * step; v <= hi + step * 1e-9; v += step)
+    out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+  return out;
+}
+
+/// The data range of one axis over every series (and the fit lines' need nothing).
+void data_range(const PlotSpec& spec, bool x_axis, const Scale& x_scale, double& lo, double& hi) {
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  const PlotAxis& axis = x_axis ? spec.x : spec.y;
+  for (const PlotSeries& s : spec.series) {
+    const std::vector<double>& v = x_axis ? *s.x : *s.y;
+    for (std::size_t i = 0; i < v.size() && i < s.x->size() && i < s.y->size(); ++i) {
+      const double xi = (*s.x)[i];
+      // The y range only looks at the points inside the x window (a scrolling plot).
+      if (!x_axis && (xi < x_scale.value(x_scale.p0) || xi > x_scale.value(x_scale.p1))) continue;
+      if (!std::isfinite(v[i]) || (axis.log && v[i] <= 0)) continue;
+      lo = std::min(lo, v[i]);
+      hi = std::max(hi, v[i]);
+    }
+  }
+}
+
+void set_range(Scale& s, double lo, double hi, const PlotAxis& axis, bool from_zero) {
+  if (axis.min) lo = *axis.min;
+  if (axis.max) hi = *axis.max;
+  if (!(lo <= hi)) lo = hi = s.log ? 1.0 : 0.0;
+  if (from_zero && !s.log) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
+  double a = s.transform(lo), b = s.transform(hi);
+  if (b - a < 1e-12 * std::max(1.0, std::abs(a))) {
+    const double half = s.log ? 0.5 : std::max(std::abs(a) * 0.1, 1e-9);
+    a -= half;
+    b += half;
+  } else if (!axis.min || !axis.max) {
+    const double pad = 0.05 * (b - a);  // keep the curve off the frame
+    if (!axis.min && !(from_zero && lo == 0)) a -= pad;
+    if (!axis.max) b += pad;
+  }
+  s.lo = a;
+  s.hi = b;
+}
+
+}  // namespace
+
+void draw_plot(const char* id, const PlotSpec& spec, float height) {
+  ImGui::PushID(id);
+  const float font = ImGui::GetFontSize();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = std::max(ImGui::GetContentRegionAvail().x, 10 * font);
+  ImGui::InvisibleButton("plot", ImVec2(width, height));
+  const bool hovered = ImGui::IsItemHovered();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+
+  const float left = origin.x + 4.2f * font, right = origin.x + width - 0.6f * font;
+  const float top = origin.y + 1.5f * font, bottom = origin.y + height - 2.4f * font;
+  draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), kFrame, 4.0f);
+  draw->AddText(ImVec2(origin.x + 0.5f * font, origin.y + 0.2f * font), kText, spec.title.c_str());
+
+  Scale xs{0, 1, spec.x.log, left, right};
+  Scale ys{0, 1, spec.y.log, bottom, top};
+  double lo, hi;
+  data_range(spec, true, xs, lo, hi);
+  const bool has_data = std::isfinite(lo);
+  set_range(xs, lo, hi, spec.x, false);
+  data_range(spec, false, xs, lo, hi);
+  set_range(ys, lo, hi, spec.y, spec.y_from_zero);
+
+  // Grid, ticks and their labels.
+  for (double v : ticks(xs, std::max(2, int((right - left) / (5.5f * font))))) {
+    const float px = xs.pixel(v);
+    if (px < left - 0.5f || px > right + 0.5f) continue;
+    draw->AddLine(ImVec2(px, top), ImVec2(px, bottom), kGrid);
+    draw->AddLine(ImVec2(px, bottom), ImVec2(px, bottom + 0.3f * font), kAxis);
+    const std::string label = format_tick(v);
+    const float w = ImGui::CalcTextSize(label.c_str()).x;
+    draw->AddText(ImVec2(px - 0.5f * w, bottom + 0.3f * font), kDimText, label.c_str());
+  }
+  for (double v : ticks(ys, std::max(2, int((bottom - top) / (2.2f * font))))) {
+    const float py = ys.pixel(v);
+    if (py < top - 0.5f || py > bottom + 0.5f) continue;
+    draw->AddLine(ImVec2(left, py), ImVec2(right, py), kGrid);
+    draw->AddLine(ImVec2(left - 0.3f * font, py), ImVec2(left, py), kAxis);
+    const std::string label = format_tick(v);
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    draw->AddText(ImVec2(left - 0.4f * font - size.x, py - 0.5f * size.y), kDimText, label.c_str());
+  }
+  draw->AddLine(ImVec2(left, bottom), ImVec2(right, bottom), kAxis);
+  draw->AddLine(ImVec2(left, top), ImVec2(left, bottom), kAxis);
+  const std::string x_label = spec.x.label + (spec.x.log ? "  [log]" : "");
+  const float x_label_width = ImGui::CalcTextSize(x_label.c_str()).x;
+  draw->AddText(ImVec2(0.5f * (left + right) - 0.5f * x_label_width, bottom + 1.25f * font), kText,
+                x_label.c_str());
+  const std::string y_label = spec.y.label + (spec.y.log ? "  [log]" : "");
+  const float title_width = ImGui::CalcTextSize(spec.title.c_str()).x;
+  draw->AddText(
+      ImVec2(std::max(left, origin.x + title_width + 1.5f * font), origin.y + 0.2f * font),
+      kDimText, y_label.c_str());
+
+  draw->PushClipRect(ImVec2(left, top - 1), ImVec2(right + 1, bottom + 1), true);
+  if (!has_data) {
+    const ImVec2 size = ImGui::CalcTextSize(spec.empty_message.c_str());
+    draw->AddText(ImVec2(0.5f * (left + right - size.x), 0.5f * (top + bottom - size.y)), kDimText,
+                  spec.empty_message.c_str());
+  }
+  // Series: lines thinned to at most two points per pixel column (min and max), so that
+  // thousands of samples cost no more than the plot is wide.
+  std::vector<ImVec2> line;
+  for (const PlotSeries& s : spec.series) {
+    const std::size_t n = std::min(s.x->size(), s.y->size());
+    line.clear();
+    float column = -1e9f, column_lo = 0, column_hi = 0;
+    auto flush = [&] {
+      if (column < -1e8f) return;
+      line.push_back(ImVec2(column, column_lo));
+      if (column_hi != column_lo) line.push_back(ImVec2(column, column_hi));
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const double xv = (*s.x)[i], yv = (*s.y)[i];
+      if (!xs.usable(xv) || !ys.usable(yv)) continue;
+      const float px = xs.pixel(xv), py = ys.pixel(yv);
+      if (s.points) {
+        if (px >= left - 4 && px <= right + 4)
+          draw->AddCircleFilled(ImVec2(px, py), 0.22f * font, s.colour, 12);
+        continue;
+      }
+      if (px < left - 2 * (right - left)) continue;
+      if (std::floor(px) != column) {
+        flush();
+        column = std::floor(px);
+        column_lo = column_hi = py;
+      } else {
+        column_lo = std::min(column_lo, py);
+        column_hi = std::max(column_hi, py);
+      }
+    }
+    flush();
+    if (line.size() >= 2)
+      draw->AddPolyline(line.data(), int(line.size()), s.colour, 0, s.thickness);
+    else if (line.size() == 1)
+      draw->AddCircleFilled(line[0], 0.18f * font, s.colour);
+  }
+  for (const PowerLawLine& f : spec.fits) {
+    std::vector<ImVec2> curve;
+    for (int k = 0; k <= 64; ++k) {
+      const float px = left + (right - left) * float(k) / 64.0f;
+      const double xv = xs.value(px), yv = f.prefactor * std::pow(xv, f.exponent);
+      if (xs.usable(xv) && ys.usable(yv)) curve.push_back(ImVec2(px, ys.pixel(yv)));
+    }
+    if (curve.size() >= 2) draw->AddPolyline(curve.data(), int(curve.size()), f.colour, 0, 1.5f);
+  }
+  draw->PopClipRect();
+
+  // Legend, top right inside the frame.
+  float legend_y = top + 0.3f * font;
+  auto legend_row = [&](const std::string& label, ImU32 colour, bool dashed) {
+    const float w = ImGui::CalcTextSize(label.c_str()).x;
+    const float x = right - w - 0.5f * font;
+    draw->AddRectFilled(ImVec2(x - 1.9f * font, legend_y - 0.1f * font),
+                        ImVec2(right - 0.2f * font, legend_y + 1.1f * font),
+                        IM_COL32(22, 26, 34, 200), 3.0f);
+    if (dashed)
+      for (int k = 0; k < 3; ++k)
+        draw->AddLine(ImVec2(x - 1.6f * font + k * 0.45f * font, legend_y + 0.5f * font),
+                      ImVec2(x - 1.35f * font + k * 0.45f * font, legend_y + 0.5f * font), colour,
+                      2.0f);
+    else
+      draw->AddLine(ImVec2(x - 1.6f * font, legend_y + 0.5f * font),
+                    ImVec2(x - 0.4f * font, legend_y + 0.5f * font), colour, 3.0f);
+    draw->AddText(ImVec2(x, legend_y), kText, label.c_str());
+    legend_y += 1.2f * font;
+  };
+  if (spec.series.size() > 1 || !spec.fits.empty())
+    for (const PlotSeries& s : spec.series) legend_row(s.label, s.colour, false);
+  for (const PowerLawLine& f : spec.fits) legend_row(f.label, f.colour, true);
+
+  // Hover: a cross-hair and, for each series, the point nearest in x.
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  if (hovered && has_data && mouse.x >= left && mouse.x <= right && mouse.y >= top &&
+      mouse.y <= bottom) {
+    draw->AddLine(ImVec2(mouse.x, top), ImVec2(mouse.x, bottom), IM_COL32(255, 255, 255, 70));
+    draw->AddLine(ImVec2(left, mouse.y), ImVec2(right, mouse.y), IM_COL32(255, 255, 255, 70));
+    ImGui::BeginTooltip();
+    ImGui::Text("%s = %.5g", spec.x.label.c_str(), xs.value(mouse.x));
+    ImGui::Text("cursor: %s = %.5g", spec.y.label.c_str(), ys.value(mouse.y));
+    for (const PlotSeries& s : spec.series) {
+      const std::size_t n = std::min(s.x->size(), s.y->size());
+      float best = 1e30f;
+      std::size_t best_i = n;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!xs.usable((*s.x)[i]) || !ys.usable((*s.y)[i])) continue;
+        const float dx = xs.pixel((*s.x)[i]) - mouse.x;
+        const float dy = s.points ? ys.pixel((*s.y)[i]) - mouse.y : 0.0f;
+        const float d = dx * dx + dy * dy;
+        if (d < best) best = d, best_i = i;
+      }
+      if (best_i == n) continue;
+      const ImVec2 p(xs.pixel((*s.x)[best_i]), ys.pixel((*s.y)[best_i]));
+      draw->AddCircle(p, 0.35f * font, s.colour, 16, 2.0f);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(s.colour), "%s: %.5g at %.5g",
+                         s.label.c_str(), (*s.y)[best_i], (*s.x)[best_i]);
+    }
+    ImGui::EndTooltip();
+  }
+  ImGui::PopID();
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,126 @@
+// The read-outs over the 3D view: each quantity with the equation behind it on hover.
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "panels.h"
+#include "swarm/diagnostics.h"
+#include "swarm/regime.h"
+#include "swarm/wall.h"
+
+namespace swarmlab {
+namespace {
+
+void row(const char* name, const char* value, const char* equation) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(name);
+  bool hovered = ImGui::IsItemHovered();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(value);
+  hovered |= ImGui::IsItemHovered();
+  if (hovered) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
+    ImGui::TextUnformatted(equation);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+/// Wall hits per unit of simulated time over the plots' averaging window (or the whole run).
+double hit_rate(LiveRun& run, double window) {
+  const auto& samples = run.primary().samples();
+  if (samples.size() < 2) return 0;
+  const double now = samples.back().t;
+  const double from = window > 0 ? now - window : 0;
+  long hits = 0;
+  double start = now;
+  for (auto s = samples.rbegin(); s != samples.rend() - 1; ++s) {
+    if (s->t <= from) break;
+    hits += s->hits;
+    start = (s + 1)->t;
+  }
+  return now > start ? double(hits) / (now - start) : 0;
+}
+
+}  // namespace
+
+void draw_readouts(AppState& state) {
+  const swarm::System& s = state.run->system();
+  const double M = swarm::total_mass(s);
+  const double k = swarm::spring_rate(s);
+  const swarm::Regime regime = swarm::regime_of(k);
+  const double rate = swarm::rate_of(k);
+  const double KE = swarm::kinetic_energy(s);
+  const double E = KE + swarm::potential_energy_cm(s);
+  const double E0 = state.run->primary().samples().front().E;
+  const double p = swarm::total_momentum(s).norm();
+  const double L = swarm::angular_momentum_cm(s).norm();
+
+  char value[96];
+  const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
+  if (!ImGui::BeginTable("readouts", 2, flags)) return;
+  std::snprintf(value, sizeof value, "%zu", s.particles.size());
+  row("N", value, "Number of particles.");
+  std::snprintf(value, sizeof value, "%.5g", M);
+  row("M", value,
+      "M = \u03a3 m\u1d62, the total mass. Every particle feels one spring "
+      "k\u1d62 = J M m\u1d62 to the centre of mass.");
+  if (regime == swarm::Regime::attractive) {
+    std::snprintf(value, sizeof value, "%.5g", rate);
+    row("\u03c9", value,
+        "\u03c9 = \u221a(J M): the one angular frequency of every particle "
+        "about the centre of mass (J > 0).");
+    std::snprintf(value, sizeof value, "%.5g", 2 * M_PI / rate);
+    row("period", value,
+        "2\u03c0 / \u03c9 = 2\u03c0 / \u221a(J M): every orbit closes after "
+        "this time, whatever its size and mass.");
+  } else if (regime == swarm::Regime::repulsive) {
+    std::snprintf(value, sizeof value, "%.5g", rate);
+    row("\u03a9", value,
+        "\u03a9 = \u221a(\u2212J M) (J < 0): distances from the centre of mass "
+        "grow as e^(\u03a9t); no period.");
+  } else {
+    row("\u03c9", "0", "J = 0: no force, every particle moves in a straight line.");
+  }
+  std::snprintf(value, sizeof value, "%.6g", E);
+  row("E", value,
+      "E = \u03a3 \u00bd m\u1d62 v\u1d62\u00b2 + \u00bd J M \u03a3 m\u1d62 "
+      "|r\u1d62 \u2212 R|\u00b2: kinetic plus the springs' potential energy (eq. 13). "
+      "Conserved by the exact solution and by elastic wall hits.");
+  std::snprintf(value, sizeof value, "%+.2e", E0 != 0 ? (E - E0) / std::abs(E0) : E - E0);
+  row("\u0394E/|E\u2080|", value,
+      "Relative change of the energy since t = 0: rounding only for "
+      "the analytic method; Euler's grows, Euler-Cromer's wobbles.");
+  std::snprintf(value, sizeof value, "%.5g", p);
+  row("|p|", value,
+      "p = \u03a3 m\u1d62 v\u1d62 = M V: constant for an isolated system; wall "
+      "hits exchange momentum with the container.");
+  std::snprintf(value, sizeof value, "%.5g", L);
+  row("|L|", value,
+      "L = \u03a3 m\u1d62 (r\u1d62 \u2212 R) \u00d7 (v\u1d62 \u2212 V) about the "
+      "centre of mass: conserved by the central springs, changed by wall hits "
+      "only through the moving centre of mass.");
+  if (const auto R = state.run->primary().engine().container_radius()) {
+    std::snprintf(value, sizeof value, "%.4g   V = %.4g", *R, swarm::sphere_volume(*R));
+    row("R", value, "Container radius and volume V = 4/3 \u03c0 R\u00b3.");
+    std::snprintf(value, sizeof value, "%.4g", hit_rate(*state.run, state.plots.average_window));
+    row("hits/time", value,
+        "Wall hits per unit of simulated time, over the plots' averaging "
+        "window. P = \u03a3 |\u0394p\u1d63| / (4\u03c0 R\u00b2 t).");
+  }
+  std::snprintf(value, sizeof value, "%.0f  (%.1f ms)", 1000.0 / state.stats.frame_ms,
+                state.stats.frame_ms);
+  row("FPS", value, "Frames per second and the time of one frame.");
+  std::snprintf(value, sizeof value, "%.1f + %.1f ms", state.stats.simulation_ms,
+                state.stats.scene_ms);
+  row("step + draw", value,
+      "Time per frame spent advancing the simulation, and preparing the "
+      "particles for drawing (colours, sizes, upload).");
+  ImGui::EndTable();
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,252 @@
+#include "scene_overlay.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "swarm/regime.h"
+
+namespace swarmlab {
+namespace {
+
+constexpr std::size_t kSpringLimit = 30;  // beyond this the springs are a grey fog
+
+using Vec3f = Eigen::Vector3f;
+
+struct Painter {
+  ImDrawList* draw;
+  const OrbitCamera& camera;
+  const ViewRect& rect;
+
+  ImVec2 at(const ScreenPoint& p) const { return ImVec2(p.x, p.y); }
+  ScreenPoint project(const Vec3f& p) const { return camera.project(p, rect); }
+
+  void line(const Vec3f& a, const Vec3f& b, ImU32 colour, float width) const {
+    const ScreenPoint pa = project(a), pb = project(b);
+    if (pa.visible && pb.visible) draw->AddLine(at(pa), at(pb), colour, width);
+  }
+  void path(const std::vector<Vec3f>& points, ImU32 colour, float width) const {
+    std::vector<ImVec2> screen;
+    for (const Vec3f& p : points) {
+      const ScreenPoint s = project(p);
+      if (!s.visible) {
+        if (screen.size() >= 2)
+          draw->AddPolyline(screen.data(), int(screen.size()), colour, 0, width);
+        screen.clear();
+        continue;
+      }
+      screen.push_back(at(s));
+    }
+    if (screen.size() >= 2) draw->AddPolyline(screen.data(), int(screen.size()), colour, 0, width);
+  }
+};
+
+ImU32 with_alpha(ImU32 colour, float alpha) {
+  const int a = int(std::clamp(alpha, 0.0f, 1.0f) * float((colour >> IM_COL32_A_SHIFT) & 0xFF));
+  return (colour & ~IM_COL32_A_MASK) | (ImU32(a) << IM_COL32_A_SHIFT);
+}
+
+/// Latitude and longitude circles; the far half fainter than the near half, plus the outline,
+/// so that the sphere reads as glass around the swarm.
+void draw_container(const Painter& paint, double radius) {
+  const float R = float(radius);
+  const Vec3f eye = paint.camera.eye();
+  const ImU32 near_colour = IM_COL32(150, 195, 240, 110), far_colour = IM_COL32(150, 195, 240, 40);
+  constexpr int kSegments = 72;
+  auto circle_segments = [&](auto point_at) {
+    for (int k = 0; k < kSegments; ++k) {
+      const Vec3f a = point_at(2 * float(M_PI) * float(k) / kSegments);
+      const Vec3f b = point_at(2 * float(M_PI) * float(k + 1) / kSegments);
+      const bool near_side = (0.5f * (a + b)).dot(eye) > R * R;
+      paint.line(a, b, near_side ? near_colour : far_colour, near_side ? 1.4f : 1.0f);
+    }
+  };
+  for (int lat = -2; lat <= 2; ++lat) {
+    const float z = R * std::sin(float(lat) * float(M_PI) / 6), rho = std::sqrt(R * R - z * z);
+    circle_segments([&](float phi) { return Vec3f(rho * std::cos(phi), rho * std::sin(phi), z); });
+  }
+  for (int lon = 0; lon < 6; ++lon) {
+    const float phi = float(lon) * float(M_PI) / 6;
+    circle_segments([&](float theta) {
+      return Vec3f(R * std::cos(theta) * std::cos(phi), R * std::cos(theta) * std::sin(phi),
+                   R * std::sin(theta));
+    });
+  }
+  // The silhouette: where the lines of sight touch the sphere.
+  const float d = eye.norm();
+  if (d > R) {
+    const Vec3f n = eye / d;
+    const Vec3f centre = n * (R * R / d);
+    const float r = R * std::sqrt(1 - R * R / (d * d));
+    const Vec3f u = n.cross(std::abs(n.z()) < 0.9f ? Vec3f::UnitZ() : Vec3f::UnitX()).normalized();
+    const Vec3f w = n.cross(u);
+    std::vector<Vec3f> outline;
+    for (int k = 0; k <= 96; ++k) {
+      const float a = 2 * float(M_PI) * float(k) / 96;
+      outline.push_back(centre + r * (std::cos(a) * u + std::sin(a) * w));
+    }
+    std::vector<ImVec2> screen;
+    for (const Vec3f& p : outline) screen.push_back(paint.at(paint.project(p)));
+    paint.draw->AddConvexPolyFilled(screen.data(), int(screen.size()) - 1,
+                                    IM_COL32(120, 170, 230, 14));
+    paint.path(outline, IM_COL32(160, 205, 250, 170), 2.0f);
+  }
+}
+
+void draw_springs(const Painter& paint, const swarm::System& s, SpringOverlay mode) {
+  const std::size_t n = s.particles.size();
+  if (mode == SpringOverlay::off || n > kSpringLimit || s.J == 0) return;
+  const ImU32 colour = s.J > 0 ? IM_COL32(90, 220, 200, 150) : IM_COL32(255, 110, 90, 150);
+  const double M = swarm::total_mass(s);
+  const Vec3f cm = swarm::cm_position(s).cast<float>();
+  double k_max = 0;
+  for (const auto& p : s.particles)
+    k_max = std::max(k_max, mode == SpringOverlay::pairs ? p.m * p.m : M * p.m);
+  if (mode == SpringOverlay::pairs) {
+    // k_ij = J m_i m_j: width proportional to k, the stiffest pair 7 px wide.
+    double pair_max = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j)
+        pair_max = std::max(pair_max, s.particles[i].m * s.particles[j].m);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) {
+        const double k = s.particles[i].m * s.particles[j].m;
+        paint.line(s.particles[i].r.cast<float>(), s.particles[j].r.cast<float>(), colour,
+                   1.0f + 6.0f * float(k / pair_max));
+      }
+  } else {
+    // k_i = J M m_i to the centre of mass.
+    for (const auto& p : s.particles)
+      paint.line(p.r.cast<float>(), cm, colour, 1.0f + 6.0f * float(M * p.m / k_max));
+  }
+}
+
+/// The analytic path of particle i from now on, about the uniformly moving centre of mass:
+/// one period when J > 0, a stretch of the runaway or the straight line otherwise.
+std::vector<Vec3f> orbit_ahead(const swarm::System& s, std::size_t i, float scene_radius) {
+  const swarm::Vec3 R = swarm::cm_position(s), V = swarm::cm_velocity(s);
+  const double k = swarm::spring_rate(s);
+  const swarm::Particle& p = s.particles[i];
+  const swarm::Vec3 x = p.r - R, u = p.v - V;
+  const double rate = swarm::rate_of(k);
+  double span;
+  if (k > 0)
+    span = 2 * M_PI / rate;
+  else if (k < 0)
+    span = 2.5 / rate;
+  else
+    span = 2 * scene_radius / std::max(u.norm(), 1e-12);
+  std::vector<Vec3f> out;
+  for (int step = 0; step <= 180; ++step) {
+    const double tau = span * step / 180;
+    const swarm::Flow f = swarm::Flow::over(k, tau);
+    out.push_back((R + V * tau + f.c * x + f.s * u).cast<float>());
+  }
+  return out;
+}
+
+void draw_axes(const AppState& state, ImDrawList* draw) {
+  // A small triad in the lower right corner turning with the camera.
+  const ViewRect& rect = state.layout.view;
+  const float font = ImGui::GetFontSize();
+  const ImVec2 origin(rect.x + rect.width - 3.0f * font, rect.y + rect.height - 3.0f * font);
+  const Eigen::Matrix4f view = state.camera.view();
+  const char* names[] = {"x", "y", "z"};
+  const ImU32 colours[] = {IM_COL32(240, 90, 90, 255), IM_COL32(110, 220, 110, 255),
+                           IM_COL32(100, 150, 255, 255)};
+  for (int a = 0; a < 3; ++a) {
+    const Eigen::Vector3f d = view.block<3, 3>(0, 0).col(a);
+    const ImVec2 tip(origin.x + d.x() * 1.8f * font, origin.y - d.y() * 1.8f * font);
+    draw->AddLine(origin, tip, colours[a], 2.0f);
+    draw->AddText(ImVec2(tip.x - 0.3f * font, tip.y - 0.6f * font), colours[a], names[a]);
+  }
+}
+
+void draw_legend(AppState& state, ImDrawList* draw) {
+  const ViewRect& rect = state.layout.view;
+  const float font = ImGui::GetFontSize();
+  const float width = std::min(16.0f * font, rect.width * 0.4f), height = 0.8f * font;
+  const ImVec2 low(rect.x + 1.0f * font, rect.y + rect.height - 2.2f * font);
+  draw->AddRectFilled(ImVec2(low.x - 0.5f * font, low.y - 1.6f * font),
+                      ImVec2(low.x + width + 0.5f * font, low.y + height + 1.5f * font),
+                      IM_COL32(10, 12, 18, 170), 4.0f);
+  constexpr int kSteps = 48;
+  for (int k = 0; k < kSteps; ++k) {
+    const float x0 = low.x + width * float(k) / kSteps, x1 = low.x + width * float(k + 1) / kSteps;
+    draw->AddRectFilled(ImVec2(x0, low.y), ImVec2(x1 + 0.5f, low.y + height),
+                        turbo(float(k + 0.5f) / kSteps));
+  }
+  draw->AddText(ImVec2(low.x, low.y - 1.3f * font), IM_COL32(220, 225, 235, 255),
+                legend_title(state.view.colour_by));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", state.colour_scale.lo);
+  draw->AddText(ImVec2(low.x, low.y + height + 0.1f * font), IM_COL32(200, 205, 215, 255), text);
+  std::snprintf(text, sizeof text, "%.3g", state.colour_scale.hi);
+  const float w = ImGui::CalcTextSize(text).x;
+  draw->AddText(ImVec2(low.x + width - w, low.y + height + 0.1f * font),
+                IM_COL32(200, 205, 215, 255), text);
+}
+
+}  // namespace
+
+void draw_scene_overlay(AppState& state) {
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const ViewRect& rect = state.layout.view;
+  draw->PushClipRect(ImVec2(rect.x, rect.y), ImVec2(rect.x + rect.width, rect.y + rect.height),
+                     false);
+  const Painter paint{draw, state.camera, rect};
+  const swarm::System& s = state.run->system();
+  const float font = ImGui::GetFontSize();
+
+  if (state.view.container)
+    if (const auto R = state.run->primary().engine().container_radius()) draw_container(paint, *R);
+  draw_springs(paint, s, state.view.springs);
+
+  if (state.view.trails)
+    for (const Trail& trail : state.run->trails()) {
+      // Older points fade out, so the direction of motion reads at a glance.
+      const std::size_t n = trail.points.size();
+      const ImU32 colour = state.selected && *state.selected == trail.particle
+                               ? IM_COL32(255, 235, 120, 255)
+                               : IM_COL32(200, 210, 255, 255);
+      for (std::size_t k = 1; k < n; ++k)
+        paint.line(trail.points[k - 1], trail.points[k],
+                   with_alpha(colour, 0.1f + 0.75f * float(k) / float(n)), 1.6f);
+    }
+
+  if (state.selected && *state.selected < s.particles.size()) {
+    const std::size_t i = *state.selected;
+    if (state.view.orbit)
+      paint.path(orbit_ahead(s, i, state.scene_radius), IM_COL32(255, 225, 90, 200), 2.0f);
+    const ScreenPoint p = paint.project(s.particles[i].r.cast<float>());
+    if (p.visible) {
+      draw->AddCircle(paint.at(p), 0.9f * font, IM_COL32(255, 235, 120, 255), 24, 2.0f);
+      char label[64];
+      std::snprintf(label, sizeof label, "#%zu  m = %.3g", i + 1, s.particles[i].m);
+      draw->AddText(ImVec2(p.x + 1.0f * font, p.y - 1.4f * font), IM_COL32(255, 235, 120, 255),
+                    label);
+    }
+  }
+
+  if (state.view.centre_of_mass) {
+    // An empty circle with a cross, as in the paper's Fig. 1.
+    const ScreenPoint c = paint.project(swarm::cm_position(s).cast<float>());
+    if (c.visible) {
+      const ImVec2 at = paint.at(c);
+      draw->AddCircle(at, 0.6f * font, IM_COL32(255, 255, 255, 230), 24, 2.0f);
+      draw->AddLine(ImVec2(at.x - 0.9f * font, at.y), ImVec2(at.x + 0.9f * font, at.y),
+                    IM_COL32(255, 255, 255, 200), 1.5f);
+      draw->AddLine(ImVec2(at.x, at.y - 0.9f * font), ImVec2(at.x, at.y + 0.9f * font),
+                    IM_COL32(255, 255, 255, 200), 1.5f);
+      draw->AddText(ImVec2(at.x + 0.8f * font, at.y + 0.2f * font), IM_COL32(255, 255, 255, 220),
+                    "CM");
+    }
+  }
+  if (state.view.axes) draw_axes(state, draw);
+  draw_legend(state, draw);
+  draw->PopClipRect();
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,120 @@
+#include "shortcuts.h"
+
+#include <SDL.h>
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace swarmlab {
+namespace {
+
+struct Shortcut {
+  int scancode;  ///< SDL scancode: ImGui 1.86's SDL backend indexes KeysDown by scancode
+  bool ctrl;
+  const char* keys;
+  const char* action;
+  void (*run)(AppState&);
+};
+
+template <class E>
+E next(E value, int count) {
+  return E((int(value) + 1) % count);
+}
+
+const Shortcut kShortcuts[] = {
+    {SDL_SCANCODE_SPACE, false, "Space", "play / pause",
+     [](AppState& s) { s.playing = !s.playing; }},
+    {SDL_SCANCODE_S, false, "S", "one step (pauses)",
+     [](AppState& s) { s.step_once = true, s.playing = false; }},
+    {SDL_SCANCODE_R, false, "R", "reset to t = 0", [](AppState& s) { s.restart(); }},
+    {SDL_SCANCODE_EQUALS, false, "+", "twice as fast",
+     [](AppState& s) { s.speed = std::min(s.speed * 2, 1e4); }},
+    {SDL_SCANCODE_KP_PLUS, false, nullptr, nullptr,
+     [](AppState& s) { s.speed = std::min(s.speed * 2, 1e4); }},
+    {SDL_SCANCODE_MINUS, false, "-", "half as fast",
+     [](AppState& s) { s.speed = std::max(s.speed / 2, 1e-3); }},
+    {SDL_SCANCODE_KP_MINUS, false, nullptr, nullptr,
+     [](AppState& s) { s.speed = std::max(s.speed / 2, 1e-3); }},
+    {SDL_SCANCODE_C, false, "C", "colour by speed, mass, energy",
+     [](AppState& s) {
+       s.view.colour_by = next(s.view.colour_by, 3);
+       s.colour_scale = ColourScale{};
+     }},
+    {SDL_SCANCODE_G, false, "G", "springs: off, every pair, to the CM",
+     [](AppState& s) { s.view.springs = next(s.view.springs, 3); }},
+    {SDL_SCANCODE_T, false, "T", "trails on / off", [](AppState& s) { s.view.trails ^= true; }},
+    {SDL_SCANCODE_O, false, "O", "orbit ahead of the selected particle",
+     [](AppState& s) { s.view.orbit ^= true; }},
+    {SDL_SCANCODE_K, false, "K", "container on / off (display)",
+     [](AppState& s) { s.view.container ^= true; }},
+    {SDL_SCANCODE_F, false, "F", "follow the centre of mass",
+     [](AppState& s) { s.view.follow_cm ^= true, s.reframe = true; }},
+    {SDL_SCANCODE_E, false, "E", "expand the container now",
+     [](AppState& s) {
+       s.run->expand_container(s.preset.expansion ? s.preset.expansion->factor : 1.1);
+     }},
+    {SDL_SCANCODE_HOME, false, "Home", "reframe the camera", [](AppState& s) { s.reframe = true; }},
+    {SDL_SCANCODE_ESCAPE, false, "Esc", "deselect the particle",
+     [](AppState& s) {
+       s.selected.reset();
+       s.update_followed();
+     }},
+    {SDL_SCANCODE_1, false, "1", "show / hide the controls",
+     [](AppState& s) { s.layout.controls ^= true; }},
+    {SDL_SCANCODE_2, false, "2", "show / hide the plots",
+     [](AppState& s) { s.layout.plots ^= true; }},
+    {SDL_SCANCODE_EQUALS, true, "Ctrl +", "larger UI (projector)",
+     [](AppState& s) { s.layout.pending_ui_scale = std::min(s.layout.ui_scale + 0.25f, 2.5f); }},
+    {SDL_SCANCODE_MINUS, true, "Ctrl -", "smaller UI",
+     [](AppState& s) { s.layout.pending_ui_scale = std::max(s.layout.ui_scale - 0.25f, 0.75f); }},
+    {SDL_SCANCODE_H, false, "H, F1", "this help", [](AppState& s) { s.layout.help ^= true; }},
+    {SDL_SCANCODE_F1, false, nullptr, nullptr, [](AppState& s) { s.layout.help ^= true; }},
+};
+
+}  // namespace
+
+void handle_shortcuts(AppState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  for (const Shortcut& s : kShortcuts)
+    if (s.ctrl == io.KeyCtrl && ImGui::IsKeyPressed(s.scancode, s.scancode != SDL_SCANCODE_S))
+      s.run(state);
+}
+
+void draw_help_window(AppState& state) {
+  if (!state.layout.help) return;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.5f),
+                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::Begin("Help: keys and mouse", &state.layout.help,
+                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    for (const Shortcut& s : kShortcuts) {
+      if (!s.keys) continue;
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextColored(ImVec4(1, 0.85f, 0.45f, 1), "%s", s.keys);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(s.action);
+    }
+    const char* mouse[][2] = {{"drag", "orbit the camera"},
+                              {"wheel", "zoom"},
+                              {"click", "select a particle (trail, orbit ahead)"},
+                              {"Ctrl+click", "type a value into a slider"},
+                              {"hover", "equations behind the read-outs, values on the plots"}};
+    for (const auto& m : mouse) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextColored(ImVec4(0.6f, 0.85f, 1, 1), "%s", m[0]);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(m[1]);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+}  // namespace swarmlab
