@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Prepares everything the browser (wasm) build of Swarm Lab needs, cached under build/web-deps:
+#   build/web-deps/sdl2-prefix   SDL2 2.26.x built for wasm from Debian's own source package
+#   build/web-deps/imgui         Dear ImGui 1.86 sources (imgui*.cpp, backends/) from Debian's source package
+#   build/web-deps/include       symlinks nlohmann -> /usr/include/nlohmann, doctest -> /usr/include/doctest
+#                                (never put /usr/include itself on the wasm include path)
+# Idempotent: a second run only checks stamp files and takes about a second.
+# Needs root (or sudo) the first time, for apt-get (emscripten, nodejs, npm, deb-src sources).
+# Usage: scripts/web-deps.sh [--force]   (--force rebuilds SDL2 and re-extracts ImGui)
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+deps="$root/build/web-deps"
+src="$deps/src"
+dl="$deps/dl"
+prefix="$deps/sdl2-prefix"
+stamp="$deps/.stamp-v1"
+jobs=${WEB_JOBS:-2}
+export NODE_PATH=/usr/share/nodejs
+
+say() { printf '[web-deps] %s\n' "$*" >&2; }
+die() { printf '[web-deps] ERROR: %s\n' "$*" >&2; exit 1; }
+
+# One preparation at a time (a second caller waits, then finds the stamp).
+mkdir -p "$deps"
+if command -v flock >/dev/null; then exec 9>"$deps/.lock"; flock 9; fi
+
+[ "${1:-}" = "--force" ] && rm -f "$stamp"
+
+mk_includes() {
+  mkdir -p "$deps/include"
+  local name
+  for name in nlohmann doctest; do
+    [ -e "/usr/include/$name" ] || { say "note: /usr/include/$name missing (apt-get install ${name/doctest/doctest-dev}${name/nlohmann/-json3-dev})"; continue; }
+    ln -sfn "/usr/include/$name" "$deps/include/$name"
+  done
+}
+
+if [ -f "$stamp" ] && [ -f "$prefix/lib/libSDL2.a" ] && [ -f "$deps/imgui/imgui.cpp" ]; then
+  mk_includes
+  say "up to date ($(cat "$stamp"))"
+  exit 0
+fi
+
+t0=$(date +%s)
+sudo=""  # apt-get needs root; without root or sudo the apt-get steps fail with apt's own message
+if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null; then sudo="sudo"; fi
+apt_updated=0
+apt_update() { [ $apt_updated -eq 1 ] || { say "apt-get update"; $sudo apt-get update -qq; apt_updated=1; }; }
+
+# 1. Tools: emscripten, node, npm (a working node/npm from elsewhere counts), plus cmake/make/dpkg-dev.
+need=()
+command -v emcc >/dev/null || need+=(emscripten)
+command -v node >/dev/null || need+=(nodejs)
+command -v npm >/dev/null || need+=(npm)
+command -v cmake >/dev/null || need+=(cmake)
+command -v make >/dev/null || need+=(make)
+command -v dpkg-source >/dev/null || need+=(dpkg-dev)
+[ -d /usr/include/nlohmann ] || need+=(nlohmann-json3-dev)
+[ -d /usr/include/doctest ] || need+=(doctest-dev)
+if [ ${#need[@]} -gt 0 ]; then
+  apt_update
+  say "installing ${need[*]}"
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >&2
+fi
+say "emcc: $(emcc --version 2>/dev/null | head -1)"
+
+# 2. deb-src entries (a separate file, the original is left alone).
+srclist=/etc/apt/sources.list.d/debian-src.sources
+if [ ! -f "$srclist" ]; then
+  say "enabling deb-src in $srclist"
+  [ -f /etc/apt/sources.list.d/debian.sources ] || die "/etc/apt/sources.list.d/debian.sources not found"
+  sed 's/^Types:.*/Types: deb-src/' /etc/apt/sources.list.d/debian.sources | $sudo tee "$srclist" >/dev/null
+  apt_updated=0
+  apt_update
+fi
+
+# 3. Fetch the Debian source packages (cached in build/web-deps/dl).
+mkdir -p "$dl" "$src"
+fetch() { # $1 = source package name
+  if ls "$dl/$1"_*.dsc >/dev/null 2>&1; then say "source package $1 already downloaded"; return; fi
+  say "downloading Debian source package $1"
+  if ! (cd "$dl" && apt-get source --download-only -qq "$1" >&2 2>/dev/null); then
+    apt_updated=0; apt_update
+    (cd "$dl" && apt-get source --download-only -qq "$1" >&2) || die "apt-get source $1 failed"
+  fi
+}
+fetch libsdl2
+fetch imgui
+
+unpack() { # $1 = source package name, $2 = destination dir; unpacks with Debian's patches applied
+  local dsc; dsc=$(ls "$dl/$1"_*.dsc | sort -V | tail -1)
+  rm -rf "$2"
+  say "unpacking $(basename "$dsc") into ${2#"$root"/}"
+  dpkg-source --no-check -x "$dsc" "$2" >/dev/null 2>&1 || die "dpkg-source -x $dsc failed"
+}
+
+# 4. ImGui 1.86 sources.
+unpack imgui "$src/imgui"
+[ -f "$src/imgui/imgui.cpp" ] && [ -f "$src/imgui/backends/imgui_impl_sdl.cpp" ] \
+  && [ -f "$src/imgui/backends/imgui_impl_opengl3.cpp" ] || die "ImGui sources incomplete in $src/imgui"
+ln -sfn "$src/imgui" "$deps/imgui"
+imgui_ver=$(sed -n 's/^#define IMGUI_VERSION *"\(.*\)"/\1/p' "$src/imgui/imgui.h")
+say "ImGui $imgui_ver ready at ${deps#"$root"/}/imgui"
+
+# 5. SDL2 for wasm.
+unpack libsdl2 "$src/sdl2"
+rm -rf "$deps/sdl2-build" "$prefix"
+say "configuring SDL2 for wasm (emcmake cmake)"
+(cd "$src/sdl2" && emcmake cmake -S . -B "$deps/sdl2-build" -DCMAKE_BUILD_TYPE=Release \
+   -DSDL_SHARED=OFF -DSDL_STATIC=ON -DSDL_TEST=OFF -DCMAKE_INSTALL_PREFIX="$prefix" \
+   >"$deps/sdl2-configure.log" 2>&1) || { tail -30 "$deps/sdl2-configure.log" >&2; die "SDL2 configure failed (log: $deps/sdl2-configure.log)"; }
+say "building SDL2 for wasm with -j$jobs (about 2-3 minutes on 2 cores; log: build/web-deps/sdl2-build.log)"
+(nice emmake make -C "$deps/sdl2-build" -j"$jobs" >"$deps/sdl2-build.log" 2>&1 \
+   && emmake make -C "$deps/sdl2-build" install >>"$deps/sdl2-build.log" 2>&1) \
+  || { tail -30 "$deps/sdl2-build.log" >&2; die "SDL2 build failed (log: $deps/sdl2-build.log)"; }
+[ -f "$prefix/lib/libSDL2.a" ] || die "libSDL2.a not installed in $prefix"
+sdl_ver=$(basename "$(ls -d "$dl"/libsdl2_*.dsc)" .dsc | sed 's/^libsdl2_//')
+say "SDL2 $sdl_ver installed in ${prefix#"$root"/}"
+
+mk_includes
+echo "SDL2 $sdl_ver, ImGui $imgui_ver" >"$stamp"
+say "done in $(( $(date +%s) - t0 ))s"

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Browser end-to-end test of the web build: (re)builds build/web (scripts/web.sh --build-only,
+# seconds when nothing changed; --no-build skips it), installs playwright-core from npm into
+# tests/web/node_modules if needed, then runs e2e.mjs in Debian's headless Chromium.
+# Last line: "N passed, M failed". Screenshot: build/web-test/screenshot.png.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+
+build=1
+for arg in "$@"; do
+  case $arg in
+    --no-build) build=0 ;;
+    *) echo "run.sh: unknown option $arg" >&2; exit 2 ;;
+  esac
+done
+
+command -v node >/dev/null && command -v npm >/dev/null || { echo "run.sh: node and npm are needed (apt-get install nodejs npm)" >&2; exit 1; }
+[ -x "${CHROMIUM:-/usr/bin/chromium}" ] || { echo "run.sh: ${CHROMIUM:-/usr/bin/chromium} is missing (apt-get install chromium)" >&2; exit 1; }
+
+if [ $build -eq 1 ]; then
+  "$root/scripts/web.sh" --build-only
+fi
+
+stamp="$here/node_modules/.installed-stamp"
+if [ ! -f "$here/node_modules/playwright-core/package.json" ] || [ "$here/package.json" -nt "$stamp" ] \
+   || { [ -f "$here/package-lock.json" ] && [ "$here/package-lock.json" -nt "$stamp" ]; }; then
+  echo "[web-test] npm install (playwright-core)" >&2
+  if [ -f "$here/package-lock.json" ]; then
+    (cd "$here" && npm ci --no-audit --no-fund --loglevel=error)
+  else
+    (cd "$here" && npm install --no-audit --no-fund --loglevel=error)
+  fi
+  touch "$stamp"
+fi
+
+cd "$root"
+exec timeout 150 node "$here/e2e.mjs"
