@@ -30,10 +30,10 @@ std::string check_writable(const std::string& path) {
 void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
   const swarm::ProtocolRun& run = runs.primary();
   std::printf(
-      "%-14s %.6g\n%-14s %.6g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %ld\n"
+      "%-14s %.6g\n%-14s %.6g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %lld\n"
       "%-14s %ld\n%-14s %.6g\n",
       "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift", s.energy_drift,
-      "wall_hits", s.wall_hits, "steps", s.steps, "t_end", s.t_end);
+      "wall_hits", (long long)s.wall_hits, "steps", s.steps, "t_end", s.t_end);
   if (!run.stages().empty()) {
     std::printf("\n%6s %12s %12s %12s %12s %14s\n", "stage", "R", "V", "P", "T", "E");
     for (std::size_t i = 0; i < run.stages().size(); ++i) {

@@ -1,6 +1,7 @@
 #include "swarm/preset.h"
 
 #include <cmath>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -62,7 +63,7 @@ class Fields {
   double number(const char* key, double fallback) const {
     return has(key) ? number_value(at(key), path(key)) : fallback;
   }
-  long integer(const char* key, long lo, long hi) const {
+  std::int64_t integer(const char* key, std::int64_t lo, std::int64_t hi) const {
     if (!has(key)) fail(path(key), "missing (an integer is required)");
     const json& v = at(key);
     if (!v.is_number_integer())
@@ -72,7 +73,7 @@ class Fields {
                                                : v.get<long long>();
     if (x < lo || x > hi)
       fail(path(key), "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
-    return long(x);
+    return std::int64_t(x);
   }
   std::string text(const char* key, const std::string& fallback) const {
     if (!has(key)) return fallback;
@@ -162,7 +163,7 @@ SwarmSpec swarm_spec(const json& j) {
     require(s.temperature >= 0, v.path("temperature"), "must be >= 0");
   }
   s.cm_at_rest = f.flag("cm_at_rest", false);
-  s.seed = std::uint64_t(f.has("seed") ? f.integer("seed", 0, (1L << 53)) : 1);
+  s.seed = std::uint64_t(f.has("seed") ? f.integer("seed", 0, (std::int64_t(1) << 53)) : 1);
   return s;
 }
 

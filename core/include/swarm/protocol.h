@@ -2,6 +2,7 @@
 /// Runs a scenario the way the paper does: a fixed container sampled at every interval, or
 /// the stepwise adiabatic expansion with thermalisation and averaging windows.
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -37,15 +38,15 @@ struct Sample {
   double t = 0;
   double P = 0, T = 0;  ///< over the steps since the previous sample; 0 without a container
   double KE = 0, PE = 0, E = 0;
-  long hits = 0;
+  std::int64_t hits = 0;
   double R = 0;  ///< container radius, 0 when isolated
 };
 
 struct Stage {
   double R = 0, V = 0;
-  double P = 0, T = 0;  ///< averaged over the last (1 - thermalize_fraction) of the stage
-  double E = 0;         ///< total energy at the end of the stage
-  long hits = 0;        ///< wall hits in the averaging window
+  double P = 0, T = 0;    ///< averaged over the last (1 - thermalize_fraction) of the stage
+  double E = 0;           ///< total energy at the end of the stage
+  std::int64_t hits = 0;  ///< wall hits in the averaging window
 };
 
 struct StageFits {
@@ -55,7 +56,8 @@ struct StageFits {
 struct RunSummary {
   double M = 0, omega = 0;  ///< omega = sqrt(|J| M)
   double E0 = 0, E_end = 0, energy_drift = 0;
-  long wall_hits = 0, steps = 0;
+  std::int64_t wall_hits = 0;
+  long steps = 0;
   double t_end = 0;
 };
 
@@ -86,7 +88,7 @@ class ProtocolRun {
   std::unique_ptr<Engine> engine_;
   RunPlan plan_;
   long steps_done_ = 0;
-  long wall_hits_ = 0;
+  std::int64_t wall_hits_ = 0;
   double E0_ = 0, energy_scale_ = 1;
   WallMeter sample_meter_, stage_meter_;
   std::vector<Sample> samples_;

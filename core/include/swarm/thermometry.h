@@ -6,6 +6,7 @@
 /// energy is 2T: with this convention T equals the ideal-gas temperature and P V = N T holds
 /// when J = 0.
 
+#include <cstdint>
 #include "swarm/wall.h"
 
 namespace swarm {
@@ -13,7 +14,7 @@ namespace swarm {
 struct WallReading {
   double P = 0;  ///< pressure, force per area
   double T = 0;  ///< temperature, energy units; 0 when nothing hit the wall
-  long hits = 0;
+  std::int64_t hits = 0;
 };
 
 /// Accumulates the wall tallies of consecutive steps.
@@ -26,7 +27,7 @@ class WallMeter {
   void reset();
 
  private:
-  long hits_ = 0;
+  std::int64_t hits_ = 0;
   double impulse_per_area_ = 0;
   double hit_kinetic_energy_ = 0;
   double elapsed_ = 0;

@@ -1,13 +1,14 @@
 #pragma once
 /// What the container wall receives from the particles that hit it.
 
+#include <cstdint>
 #include "swarm/system.h"
 
 namespace swarm {
 
 /// Sums over the wall hits of one step or of an interval.
 struct WallTally {
-  long hits = 0;
+  std::int64_t hits = 0;
   double radial_impulse = 0;          ///< sum |dp_r| = sum 2 m |v_r|, momentum units
   double hit_kinetic_energy = 0;      ///< sum of 1/2 m v^2 of the particles as they hit
   Vec3 wall_momentum = Vec3::Zero();  ///< momentum taken up by the wall: minus the system's change
