@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# Drives `swarmlab run --plots` and `swarmlab report` as a user would: the figures a run has,
+# well-formed SVG with the CSV behind each, the overlay of two saved runs, and one clear error
+# (exit 1, no file) for a directory that cannot be written.
+# Usage: plots_test.sh SWARMLAB PRESET_DIR
+set -u
+bin=$1
+presets=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+
+ok() { passed=$((passed + 1)); }
+bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# has_figures DIR NAME...: each NAME.svg parses as SVG and NAME.csv has the header and rows.
+has_figures() {
+  local dir=$1
+  shift
+  for name in "$@"; do
+    python3 - "$dir/$name.svg" "$dir/$name.csv" 2>/dev/null <<'PY' && ok || bad "$dir/$name: not a good SVG + CSV pair"
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+assert root.tag.endswith("svg"), root.tag
+assert any(e.tag.endswith("polyline") or e.tag.endswith("circle") for e in root.iter())
+rows = open(sys.argv[2]).read().splitlines()
+assert rows[0] == "panel,series,x,y" and len(rows) > 2, rows[:2]
+PY
+  done
+}
+
+# Orbits of a small explicit system, with its energies.
+"$bin" run "$presets/fig1-four-masses.json" --plots "$work/fig1" --quiet && ok || bad "fig1 run"
+has_figures "$work/fig1" energy orbits orbits-return
+# Methods side by side.
+"$bin" run "$presets/methods-vs-analytic.json" --plots "$work/methods" --quiet && ok || bad "methods run"
+has_figures "$work/methods" methods-energy methods-position-error
+# A small expansion, saved twice with different stage lengths, then overlaid.
+expansion='"J": 0.002, "particles": {"count": 100, "mass": {"min": 4, "max": 5}, "position_radius": 1,
+  "velocity": {"speed": 1}, "seed": 3},
+  "container": {"radius": 1}, "dt": 0.01'
+printf '{%s, "expansion": {"factor": 1.1, "stages": 5, "tau": 2}}' "$expansion" >"$work/short.json"
+printf '{%s, "expansion": {"factor": 1.1, "stages": 5, "tau": 8}}' "$expansion" >"$work/long.json"
+"$bin" run "$work/short.json" --plots "$work/short" --out "$work/short.result.json" >"$work/stdout" &&
+  grep -q "wrote 8 figures to $work/short" "$work/stdout" && ok || bad "expansion run: $(cat "$work/stdout")"
+has_figures "$work/short" energy wall-history stages-T-V stages-P-V stages-P-T loglog-T-V loglog-P-V loglog-P-T
+"$bin" run "$work/long.json" --out "$work/long.result.json" --quiet && ok || bad "second expansion run"
+"$bin" report "$work/long.result.json" "$work/short.result.json" --plots "$work/overlay" --quiet && ok || bad "report overlay"
+has_figures "$work/overlay" overlay-T-V overlay-P-V overlay-P-T
+grep -q 'stroke-dasharray="7 4"' "$work/overlay/overlay-P-V.svg" && ok || bad "overlay: second run not dashed"
+# One saved run gives the same figures as --plots did.
+"$bin" report "$work/short.result.json" --plots "$work/again" --quiet && ok || bad "report one result"
+cmp -s "$work/short/loglog-P-V.svg" "$work/again/loglog-P-V.svg" && ok || bad "report differs from run --plots"
+# Nothing temporary is left behind.
+ls -A "$work/short" | grep -q '^\.' && bad "hidden temporary left in the plot directory" || ok
+
+# A plot directory that cannot be made: one line, exit 1, and no other output written.
+touch "$work/a-file"
+for target in "$work/a-file" "$work/a-file/sub"; do
+  "$bin" run "$presets/fig1-four-masses.json" --plots "$target" --out "$work/refused.json" \
+    >/dev/null 2>"$work/stderr"
+  code=$?
+  if [ $code -ne 1 ]; then bad "--plots $target: exit $code"; continue; fi
+  [ "$(wc -l <"$work/stderr")" -eq 1 ] && grep -q "^error: $target" "$work/stderr" && ok ||
+    bad "--plots $target: $(cat "$work/stderr")"
+  [ -e "$work/refused.json" ] && bad "--plots $target: wrote --out anyway" || ok
+done
+"$bin" report "$work/nope.json" --plots "$work/x" 2>"$work/stderr" && bad "report of a missing file: exit 0" ||
+  { grep -q "nope.json: cannot open the file" "$work/stderr" && ok || bad "report missing: $(cat "$work/stderr")"; }
+"$bin" report "$presets/fig1-four-masses.json" --plots "$work/x" 2>"$work/stderr" && bad "report of a preset: exit 0" ||
+  { grep -q "not a RESULT.json" "$work/stderr" && ok || bad "report preset: $(cat "$work/stderr")"; }
+"$bin" run "$presets/fig1-four-masses.json" --png 2>/dev/null && bad "--png without --plots accepted" || ok
+"$bin" run --help | grep -q -- --plots && ok || bad "run --help lacks --plots"
+
+# PNGs where rsvg-convert is installed (scripts/deps.sh native installs it).
+if command -v rsvg-convert >/dev/null; then
+  "$bin" run "$presets/fig1-four-masses.json" --plots "$work/png" --png --quiet &&
+    [ "$(head -c 4 "$work/png/orbits.png" | tail -c 3)" = PNG ] && ok || bad "--png"
+fi
+
+echo "$passed passed, $failed failed"
+[ $failed -eq 0 ]
