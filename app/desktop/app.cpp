@@ -252,7 +252,10 @@ void App::update_camera() {
     // An isolated swarm is framed about its centre of mass; a container about itself.
     if (!s.view.follow_cm && !s.preset.container_radius)
       s.camera.set_target(swarm::cm_position(system).cast<float>());
-    s.camera.frame(s.scene_radius);
+    s.camera.frame(s.scene_radius, s.layout.view.aspect());
+    // Small isolated systems (the paper's orbits, mostly in the x-y plane) are seen from high
+    // above so that the ellipses show their shape; a swarm in a sphere from lower down.
+    s.camera.set_elevation(s.preset.container_radius ? 0.45f : 1.1f);
     s.reframe = false;
   }
   s.camera.update(s.layout.view);

@@ -88,7 +88,7 @@ void AppState::restart() {
   // Spheres that would just about touch if the particles filled the scene evenly.
   const double n = double(s.particles.size());
   particle_radius = float(
-      std::clamp(0.45 * scene_radius / std::cbrt(n), 0.004 * scene_radius, 0.06 * scene_radius));
+      std::clamp(0.25 * scene_radius / std::cbrt(n), 0.003 * scene_radius, 0.06 * scene_radius));
   update_followed();
 }
 

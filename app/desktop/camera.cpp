@@ -5,8 +5,10 @@
 
 namespace swarmlab {
 
-void OrbitCamera::frame(float radius) {
-  distance_ = std::max(radius, 1e-6f) / std::sin(0.5f * fov_y_) * 1.08f;
+void OrbitCamera::frame(float radius, float aspect) {
+  // The narrower of the two fields of view decides: a tall view is limited by its width.
+  const float half_fov = std::min(0.5f * fov_y_, std::atan(std::tan(0.5f * fov_y_) * aspect));
+  distance_ = std::max(radius, 1e-6f) / std::sin(half_fov) * 1.08f;
 }
 
 void OrbitCamera::orbit(float dx, float dy) {
@@ -18,6 +20,8 @@ void OrbitCamera::orbit(float dx, float dy) {
 void OrbitCamera::zoom(float steps) {
   distance_ = std::clamp(distance_ * std::pow(0.88f, steps), 1e-4f, 1e7f);
 }
+
+void OrbitCamera::set_elevation(float radians) { elevation_ = std::clamp(radians, -1.55f, 1.55f); }
 
 Eigen::Vector3f OrbitCamera::eye() const {
   const float c = std::cos(elevation_);

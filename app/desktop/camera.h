@@ -24,13 +24,16 @@ struct ScreenPoint {
 
 class OrbitCamera {
  public:
-  /// Sets the distance so that a ball of this radius about the target fills the view.
-  void frame(float radius);
+  /// Sets the distance so that a ball of this radius about the target fills a view of this
+  /// width / height.
+  void frame(float radius, float aspect);
   /// Turns the camera by a mouse drag of dx, dy pixels.
   void orbit(float dx, float dy);
   /// Moves closer (steps > 0) or farther, one wheel notch at a time.
   void zoom(float steps);
   void set_target(const Eigen::Vector3f& target) { target_ = target; }
+  /// Height of the eye above the x-y plane, radians (0: level, pi/2: looking straight down).
+  void set_elevation(float radians);
   const Eigen::Vector3f& target() const { return target_; }
 
   Eigen::Vector3f eye() const;

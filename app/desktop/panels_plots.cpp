@@ -131,7 +131,7 @@ void draw_energy_tab(AppState& state, float plot_height) {
   series.update(*state.run, state.plots.average_window);
   const std::vector<double>& t_all = series.t_all;
   PlotSpec e;
-  e.title = "Energies";
+  e.title = "KE, PE and E";
   e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
   e.y = {"energy", false, std::nullopt, std::nullopt};
   e.y_from_zero = true;

@@ -114,7 +114,6 @@ void draw_transport_bar(AppState& state) {
                       ImGuiSliderFlags_Logarithmic);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
-  ImGui::SameLine();
 
   const double t = state.run->time();
   const double rate = swarm::rate_of(swarm::spring_rate(state.run->system()));

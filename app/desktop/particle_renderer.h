@@ -1,6 +1,6 @@
 #pragma once
-// Draws every particle as a shaded sphere impostor: one camera-facing quad per particle, all
-// of them in one instanced draw call fed by one buffer upload per frame.
+// Draws every particle as a shaded sphere impostor in one draw call fed by one buffer upload
+// per frame: instanced camera-facing quads for small systems, point sprites for large ones.
 
 #include <cstdint>
 #include <vector>
@@ -37,9 +37,15 @@ class ParticleRenderer {
             float window_height);
 
  private:
-  GLuint program_ = 0, vao_ = 0, corner_buffer_ = 0, instance_buffer_ = 0;
-  GLint view_location_ = -1, projection_location_ = -1, ghost_location_ = -1,
-        min_radius_location_ = -1;
+  struct Program {
+    Program(const char* name, const char* vertex_source, const char* corner_source);
+    GLuint id = 0;
+    GLint view, projection, ghost, min_radius, pixels_per_unit, max_point_size;
+  };
+
+  Program quads_, sprites_;
+  GLuint quad_vao_ = 0, sprite_vao_ = 0, corner_buffer_ = 0, instance_buffer_ = 0;
+  float max_point_size_ = 64;
   std::size_t capacity_ = 0;
 };
 

@@ -60,6 +60,7 @@ void draw_readouts(AppState& state) {
   const double p = swarm::total_momentum(s).norm();
   const double L = swarm::angular_momentum_cm(s).norm();
 
+  if (!ImGui::CollapsingHeader("Read-outs", ImGuiTreeNodeFlags_DefaultOpen)) return;
   char value[96];
   const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
   if (!ImGui::BeginTable("readouts", 2, flags)) return;

@@ -11,7 +11,8 @@
 namespace swarmlab {
 namespace {
 
-constexpr std::size_t kSpringLimit = 30;  // beyond this the springs are a grey fog
+// Beyond this many particles, springs and all-orbit overlays turn into a grey fog.
+constexpr std::size_t kSpringLimit = 30;
 
 using Vec3f = Eigen::Vector3f;
 
@@ -91,7 +92,7 @@ void draw_container(const Painter& paint, double radius) {
     for (const Vec3f& p : outline) screen.push_back(paint.at(paint.project(p)));
     paint.draw->AddConvexPolyFilled(screen.data(), int(screen.size()) - 1,
                                     IM_COL32(120, 170, 230, 14));
-    paint.path(outline, IM_COL32(160, 205, 250, 170), 2.0f);
+    paint.path(outline, IM_COL32(160, 205, 250, 230), 2.0f);
   }
 }
 
@@ -216,10 +217,16 @@ void draw_scene_overlay(AppState& state) {
                    with_alpha(colour, 0.1f + 0.75f * float(k) / float(n)), 1.6f);
     }
 
+  // In a small system every orbit is drawn faintly: the closed ellipses with one common period
+  // are the paper's first result.
+  if (state.view.orbit && s.particles.size() <= kSpringLimit)
+    for (std::size_t i = 0; i < s.particles.size(); ++i)
+      if (!state.selected || *state.selected != i)
+        paint.path(orbit_ahead(s, i, state.scene_radius), IM_COL32(255, 225, 90, 70), 1.3f);
   if (state.selected && *state.selected < s.particles.size()) {
     const std::size_t i = *state.selected;
     if (state.view.orbit)
-      paint.path(orbit_ahead(s, i, state.scene_radius), IM_COL32(255, 225, 90, 200), 2.0f);
+      paint.path(orbit_ahead(s, i, state.scene_radius), IM_COL32(255, 225, 90, 220), 2.2f);
     const ScreenPoint p = paint.project(s.particles[i].r.cast<float>());
     if (p.visible) {
       draw->AddCircle(paint.at(p), 0.9f * font, IM_COL32(255, 235, 120, 255), 24, 2.0f);

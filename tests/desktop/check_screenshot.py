@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Checks a Swarm Lab screenshot: the 3D view shows particles and the container, the plot
+panel shows the pressure and temperature curves. Standard library only (PNG decoded with zlib).
+
+Usage: check_screenshot.py SHOT.png
+"""
+import struct
+import sys
+import zlib
+
+
+def read_png(path):
+    """Returns (width, height, rows) with rows[y] a bytes object of RGB triples."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        raise ValueError("not a PNG file")
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    width, height, depth, colour_type, _, _, interlace = header
+    if depth != 8 or colour_type not in (2, 6) or interlace != 0:
+        raise ValueError("expected 8-bit RGB or RGBA, not interlaced")
+    channels = 3 if colour_type == 2 else 4
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows, previous = [], bytearray(stride)
+    for y in range(height):
+        start = y * (stride + 1)
+        kind, line = raw[start], bytearray(raw[start + 1:start + 1 + stride])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b = previous[i]
+            c = previous[i - channels] if i >= channels else 0
+            if kind == 1:
+                line[i] = (line[i] + a) & 0xFF
+            elif kind == 2:
+                line[i] = (line[i] + b) & 0xFF
+            elif kind == 3:
+                line[i] = (line[i] + (a + b) // 2) & 0xFF
+            elif kind == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 0xFF
+        previous = line
+        rows.append(bytes(line) if channels == 3 else bytes(
+            v for k, v in enumerate(line) if k % 4 != 3))
+    return width, height, rows
+
+
+def count(rows, x0, x1, y0, y1, test):
+    n = 0
+    for y in range(y0, y1):
+        row = rows[y]
+        for x in range(x0, x1):
+            r, g, b = row[3 * x], row[3 * x + 1], row[3 * x + 2]
+            if test(r, g, b):
+                n += 1
+    return n
+
+
+def near(colour, tolerance):
+    cr, cg, cb = colour
+    return lambda r, g, b: abs(r - cr) <= tolerance and abs(g - cg) <= tolerance and abs(
+        b - cb) <= tolerance
+
+
+def saturated(r, g, b):
+    """A lit particle: a strongly coloured pixel (the background and panels are grey-blue)."""
+    return max(r, g, b) > 110 and max(r, g, b) - min(r, g, b) > 90
+
+
+def main():
+    if len(sys.argv) != 2:
+        print(__doc__)
+        return 2
+    width, height, rows = read_png(sys.argv[1])
+    # Layout at 1280x720 and UI scale 1: controls on the left (about 340 px), plots on the
+    # right (about 400 px), the 3D view between them.
+    view = (360, 860, 90, height - 60)
+    plots = (width - 390, width, 60, height)
+    checks = [
+        ("window is 1280x720", width == 1280 and height == 720, f"{width}x{height}"),
+    ]
+    particles = count(rows, *view, saturated)
+    checks.append(("particles drawn in the 3D view", particles > 3000,
+                   f"{particles} strongly coloured pixels (need > 3000)"))
+    # The container's outline is pale blue (160, 205, 250) at 90 % opacity over the dark
+    # background.
+    container = count(rows, *view, near((148, 190, 232), 30))
+    checks.append(("container outline drawn", container > 400,
+                   f"{container} pale blue pixels (need > 400)"))
+    pressure = count(rows, *plots, near((255, 150, 50), 45))
+    checks.append(("pressure curve in the plots", pressure > 300,
+                   f"{pressure} orange pixels (need > 300)"))
+    temperature = count(rows, *plots, near((90, 180, 255), 30))
+    checks.append(("temperature curve in the plots", temperature > 300,
+                   f"{temperature} light blue pixels (need > 300)"))
+    panel = count(rows, 0, 300, 60, height, near((23, 26, 33), 12))
+    checks.append(("control panel drawn", panel > 20000, f"{panel} panel pixels (need > 20000)"))
+
+    failed = 0
+    for name, ok, detail in checks:
+        print(f"  {'ok  ' if ok else 'FAIL'} {name}: {detail}")
+        failed += not ok
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The desktop app as a person sees it: starts the real binary under Xvfb with a shipped preset,
+# runs a fixed number of frames, saves the window as PNG and checks that the picture shows the
+# particles, the container and the plots.
+#
+# Usage: tests/desktop/screenshot_test.sh [SWARMLAB_BINARY] [PRESET_DIR] [OUT_DIR]
+# Prints PASS or FAIL; exits non-zero on failure. Needs Xvfb and python3 (standard library).
+set -uo pipefail
+
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+binary="${1:-$root/build/app/swarmlab}"
+presets="${2:-$root/assets/presets}"
+out="${3:-$(mktemp -d)}"
+preset="$presets/fig4-equilibration.json"
+shot="$out/desktop-fig4.png"
+frames=90
+
+fail() {
+  echo "FAIL: $*"
+  exit 1
+}
+
+[ -x "$binary" ] || fail "no swarmlab binary at $binary"
+[ -f "$preset" ] || fail "no preset at $preset"
+command -v Xvfb >/dev/null || fail "Xvfb is not installed (apt-get install xvfb)"
+mkdir -p "$out"
+
+# A display number nobody uses: no lock file and no socket.
+display=""
+for n in $(seq 90 140); do
+  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then
+    display=$n
+    break
+  fi
+done
+[ -n "$display" ] || fail "no free X display between :90 and :140"
+
+Xvfb ":$display" -screen 0 1280x800x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
+xvfb_pid=$!
+trap 'kill "$xvfb_pid" 2>/dev/null; wait "$xvfb_pid" 2>/dev/null' EXIT
+for _ in $(seq 1 50); do
+  [ -e "/tmp/.X11-unix/X$display" ] && break
+  kill -0 "$xvfb_pid" 2>/dev/null || fail "Xvfb did not start: $(cat "$out/xvfb.log")"
+  sleep 0.1
+done
+
+echo "running: swarmlab $(basename "$preset") --frames $frames --screenshot $shot (DISPLAY=:$display)"
+rm -f "$shot"
+DISPLAY=":$display" timeout 300 "$binary" "$preset" --frames "$frames" --screenshot "$shot"
+status=$?
+[ "$status" -eq 0 ] || fail "swarmlab exited with status $status"
+[ -s "$shot" ] || fail "no screenshot written at $shot"
+
+if python3 "$here/check_screenshot.py" "$shot"; then
+  echo "PASS: the screenshot shows particles, the container and the plots ($shot)"
+else
+  fail "the screenshot is missing something ($shot)"
+fi
