@@ -1,6 +1,7 @@
 #include "swarm/fast_engine.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -12,33 +13,81 @@
 namespace swarm {
 namespace {
 
+// [SECTION] Tuning
+
 using StepIndex = std::int64_t;
 constexpr StepIndex kParked = std::numeric_limits<StepIndex>::max();
-// Buckets for the next kRingSize steps; a particle due later is parked at the ring's far end
-// and looked at again then.
-constexpr StepIndex kRingSize = 4096;
-constexpr int kMaxOldFrames = 6;
-// A frame's margin, as a fraction of the container radius, at least.
+// The schedule is a two-level timing wheel: one bucket per step for the current and the next
+// block of kBlock steps, one bucket per block for the kFarBlocks blocks after that (moved into
+// the step buckets a block ahead). Pushes then land in a few hundred hot bucket tails rather
+// than in thousands of cold ones. A particle due later still waits at the horizon and is
+// looked at again then.
+constexpr int kBlockBits = 6;
+constexpr StepIndex kBlock = StepIndex(1) << kBlockBits;
+constexpr StepIndex kFarBlocks = 64;
+constexpr StepIndex kHorizon = (kFarBlocks - 1) * kBlock;
+// Once a particle's wall window is less than this many steps away, its exact predicted lab
+// positions at the next step ends are checked one by one (the "lookahead"), so that it is
+// checked again only in a step in which it can actually hit.
+constexpr int kLookahead = 8;
+// The lookahead assumes that the centre-of-mass kicks of any kLookahead + 1 consecutive steps
+// sum to at most kKickBudget * sqrt|k| * R in size; this is checked, and the lookahead
+// schedules are redone when it fails (tiny N).
+constexpr double kKickBudget = 0.2;
+// A frame's margin above the CM's distance from the centre, as a fraction of the wall radius,
+// at least; and how many time units 1 / sqrt|k| of CM drift it should absorb.
 constexpr double kMarginFloor = 0.004;
+constexpr double kMarginDriftTimes = 4;
+// At most N / kShellBudget particles within reach of a widened margin (J > 0).
+constexpr std::size_t kShellBudget = 100;
+constexpr int kGapBins = 128;
+constexpr int kMaxOldFrames = 6;
 // Re-base before exp(Omega tau) eats more than a few bits of the h_i (J < 0), and before the
 // phase omega tau or the drift b tau gets large enough to cost digits (J >= 0).
 constexpr double kMaxRepulsivePhase = 2.5;
 constexpr double kMaxAttractivePhase = 512;
 constexpr double kMaxFreeSteps = 1024;
+// How many ids ahead of the one being checked the particle data is fetched.
+constexpr std::size_t kPrefetch = 8;
 
-/// Particle i's free oscillator: h_i(tau) = c(tau) a + s(tau) b about the origin.
-struct Orbit {
-  Vec3 a, b;
+inline void prefetch(const void* p) {
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+  __builtin_prefetch(static_cast<const char*>(p) + 64);
+#else
+  (void)p;
+#endif
+}
+
+// [SECTION] State
+
+/// Everything the scheduler touches for one particle, together: a check is then one or two
+/// cache lines, fetched ahead of time (the ids due in a step are known in advance).
+struct Body {
+  Vec3 a, b;  ///< y_i(tau) = c(tau) a + s(tau) b: the free oscillation about the CM path
   double m;
+  StepIndex due;        ///< the step in whose bucket the particle waits, or kParked
+  fast::Window window;  ///< valid in the particle's frame until its next hit
+  bool window_known;
 };
 
-/// A choice of the h_i. Schedules made in it assume |g_frame| <= margin at every step end;
-/// g_frame - g_current = c p + s q is a free oscillator in the current epoch's time.
+/// A choice of the y_i (they change at every re-base). Schedules made in it assume that the
+/// shared offset o = r_i - y_i satisfies |o| <= margin at every step end. After re-bases,
+/// o_frame - o_current = c p + s q, a free oscillation in the current epoch's time.
 struct Frame {
   std::uint8_t id = 0;
   double margin = 0;
+  double rebase_level = 0;  ///< while current: re-base when |o| passes this
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
 };
+
+/// Flow values and the predicted shared offset at the end of the next few steps.
+struct Ahead {
+  double c, s;
+  Vec3 offset;
+};
+
+// [SECTION] Engine
 
 class FastEngine final : public Engine {
  public:
@@ -49,19 +98,20 @@ class FastEngine final : public Engine {
     t_ = initial.t;
     M_ = total_mass(initial);
     k_ = J_ * M_;
+    two_rate_ = 2 * std::sqrt(std::abs(k_));
+    R_cm_ = cm_position(initial);
+    V_cm_ = cm_velocity(initial);
     orbits_.resize(initial.particles.size());
     for (std::size_t i = 0; i < orbits_.size(); ++i) {
       const Particle& p = initial.particles[i];
-      orbits_[i] = {p.r, p.v, p.m};
+      orbits_[i] = {p.r - R_cm_, p.v - V_cm_, p.m, kParked, {}, false};
     }
-    due_.assign(orbits_.size(), kParked);
     frame_of_.assign(orbits_.size(), 0);
-    ring_.resize(kRingSize);
+
     cache_ = std::move(initial);
     cache_valid_ = true;
     start_epoch();
-    current_ = {next_frame_id_++, fresh_margin(), Vec3::Zero(), Vec3::Zero()};
-    schedule_all_pending_ = true;
+    start_frame();
   }
 
   WallTally step(double dt) override {
@@ -69,74 +119,72 @@ class FastEngine final : public Engine {
     cache_valid_ = false;
     if (!config_.container_radius || orbits_.empty()) {
       if (epoch_too_old(dt)) rebase();
-      R_cm_ += V_cm_ * dt;
-      tau_ += dt;
-      t_ += dt;
-      ++step_;
+      finish_step(Flow::over(k_, tau_), Vec3::Zero(), dt);
       return tally;
     }
     if (dt != dt_) {
       dt_ = dt;
       schedule_all_pending_ = true;
     }
-    const double Rw = *config_.container_radius;
-    if (epoch_too_old(dt) || g_at(tau_ + dt, dt).norm() > 0.5 * current_.margin) rebase();
+    if (epoch_too_old(dt) || offset_at(Flow::over(k_, tau_ + dt), dt).norm() > current_.rebase_level)
+      rebase();
+    fill_ahead();
     if (schedule_all_pending_) schedule_all();
+    redo_lookahead_if_kicks_too_large();
 
-    const Flow f0 = Flow::over(k_, tau_), f1 = Flow::over(k_, tau_ + dt);
-    const Vec3 g0 = g_at(f0, 0), g0v = g_velocity_at(f0), g1 = g_at(f1, dt);
-    expire_violated_frames(f1, g1);
+    const Flow f0 = Flow::over(k_, tau_);
+    const Vec3 o0 = offset_at(f0, 0), o0v = offset_velocity_at(f0);
+    const Flow f1 = Flow::over(k_, tau_ + dt);
+    const Vec3 o1 = offset_at(f1, dt);
+    expire_violated_frames(f1, o1);
 
     // Appendix A: the particles predicted outside at t + dt and moving outward now are
     // reflected now. Their predictions all use the state before any of this step's hits.
-    const double R2 = Rw * Rw;
-    Vec3 kick = Vec3::Zero();  // sum of m dv / M: the change of V_cm (and of H')
-    work_.swap(ring_[slot(step_)]);
-    for (const std::uint32_t i : work_) {
-      if (due_[i] != step_) continue;  // rescheduled since it was put here
+    const double R2 = *config_.container_radius * *config_.container_radius;
+    Vec3 kick = Vec3::Zero();  // sum of m dv / M: the change of V_cm (and of Y')
+    if ((step_ & (kBlock - 1)) == 0) bring_near(step_ / kBlock + 1);
+    work_.swap(near_[near_slot(step_)]);
+    const std::size_t count = work_.size();
+    for (std::size_t j = 0; j < count; ++j) {
+      if (j + kPrefetch < count) prefetch(&orbits_[work_[j + kPrefetch]]);
+      const std::uint32_t i = work_[j];
+      Body& o = orbits_[i];
+      if (o.due != step_) continue;  // rescheduled since it was put here
       ++stats_.checks;
-      Orbit& o = orbits_[i];
-      const Vec3 r1 = f1.c * o.a + f1.s * o.b + g1;
+      const Vec3 r1 = f1.c * o.a + f1.s * o.b + o1;
       if (r1.squaredNorm() > R2) {
-        const Vec3 r0 = f0.c * o.a + f0.s * o.b + g0;
-        const Vec3 v0 = f0.dc() * o.a + f0.c * o.b + g0v;
+        const Vec3 r0 = f0.c * o.a + f0.s * o.b + o0;
+        const Vec3 v0 = f0.dc() * o.a + f0.c * o.b + o0v;
         if (v0.dot(r0) > 0) {
           const Vec3 dv = reflect(o.m, r0, v0, tally);
-          // The velocity of h_i jumps by dv at tau_: in coefficients, the inverse flow of dv.
+          // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv.
           o.a -= f0.s * dv;
           o.b += f0.c * dv;
+          o.window_known = false;
           kick += (o.m / M_) * dv;
         }
       }
       schedule(i, step_ + 1);
     }
     work_.clear();
-
-    // R_cm and H take the same velocity kick, so g = R_cm - H keeps its position and velocity.
-    V_cm_ += kick;
-    aH_ -= f0.s * kick;
-    bH_ += f0.c * kick;
-    R_cm_ += V_cm_ * dt;
-    tau_ += dt;
-    t_ += dt;
-    ++step_;
     stats_.hits += tally.hits;
+    finish_step(f0, kick, dt);
     return tally;
   }
 
   const System& system() override {
     if (!cache_valid_) {
       const Flow f = Flow::over(k_, tau_);
-      const Vec3 g = g_at(f, 0), gv = g_velocity_at(f);
+      const Vec3 o = offset_at(f, 0), ov = offset_velocity_at(f);
       cache_.J = J_;
       cache_.t = t_;
       cache_.particles.resize(orbits_.size());
       for (std::size_t i = 0; i < orbits_.size(); ++i) {
-        const Orbit& o = orbits_[i];
+        const Body& b = orbits_[i];
         Particle& p = cache_.particles[i];
-        p.m = o.m;
-        p.r = f.c * o.a + f.s * o.b + g;
-        p.v = f.dc() * o.a + f.c * o.b + gv;
+        p.m = b.m;
+        p.r = f.c * b.a + f.s * b.b + o;
+        p.v = f.dc() * b.a + f.c * b.b + ov;
       }
       cache_valid_ = true;
     }
@@ -157,14 +205,47 @@ class FastEngine final : public Engine {
   const FastEngineStats& stats() const { return stats_; }
 
  private:
-  static std::size_t slot(StepIndex s) { return std::size_t(s & (kRingSize - 1)); }
+  // [SECTION] Shared motion
 
-  /// g = R_cm - H at tau_ + dt_ahead, where f is the flow at that time. R_cm moves uniformly.
-  Vec3 g_at(const Flow& f, double dt_ahead) const {
-    return R_cm_ + V_cm_ * dt_ahead - (f.c * aH_ + f.s * bH_);
+  static std::size_t near_slot(StepIndex s) { return std::size_t(s & (2 * kBlock - 1)); }
+  static std::size_t far_slot(StepIndex block) { return std::size_t(block % kFarBlocks); }
+
+  /// Puts particle i, due in step `due` (step_ <= due <= step_ + kHorizon), in its bucket.
+  void enqueue(std::uint32_t i, StepIndex due) {
+    if (due / kBlock <= step_ / kBlock + 1)
+      near_[near_slot(due)].push_back(i);
+    else
+      far_[far_slot(due / kBlock)].push_back(i);
   }
-  Vec3 g_at(double tau, double dt_ahead) const { return g_at(Flow::over(k_, tau), dt_ahead); }
-  Vec3 g_velocity_at(const Flow& f) const { return V_cm_ - (f.dc() * aH_ + f.c * bH_); }
+
+  /// Moves the particles due in `block` from its block bucket to the step buckets.
+  void bring_near(StepIndex block) {
+    auto& bucket = far_[far_slot(block)];
+    for (const std::uint32_t i : bucket) {
+      const StepIndex due = orbits_[i].due;
+      if (due / kBlock == block && due != kParked) near_[near_slot(due)].push_back(i);
+    }
+    bucket.clear();
+  }
+
+  /// The shared offset o = R_cm - Y at tau_ + dt_ahead, f being the flow at that time:
+  /// r_i = y_i + o. R_cm moves uniformly; Y = sum m_i y_i / M = c aY + s bY.
+  Vec3 offset_at(const Flow& f, double dt_ahead) const {
+    return R_cm_ + V_cm_ * dt_ahead - (f.c * aY_ + f.s * bY_);
+  }
+  Vec3 offset_velocity_at(const Flow& f) const { return V_cm_ - (f.dc() * aY_ + f.c * bY_); }
+
+  /// R_cm and Y take the same velocity kick at tau_, so o keeps its position and velocity.
+  void finish_step(const Flow& f0, const Vec3& kick, double dt) {
+    V_cm_ += kick;
+    aY_ -= f0.s * kick;
+    bY_ += f0.c * kick;
+    R_cm_ += V_cm_ * dt;
+    recent_kicks_[std::size_t(step_) % recent_kicks_.size()] = kick.norm();
+    tau_ += dt;
+    t_ += dt;
+    ++step_;
+  }
 
   /// reflect_at_wall, returning the velocity change.
   static Vec3 reflect(double m, const Vec3& r, const Vec3& v, WallTally& tally) {
@@ -178,7 +259,9 @@ class FastEngine final : public Engine {
     return dv;
   }
 
-  double rate() const { return std::sqrt(std::abs(k_)); }
+  double rate() const { return 0.5 * two_rate_; }
+
+  // [SECTION] Epochs and frames
 
   bool epoch_too_old(double dt) const {
     if (rebase_pending_) return true;
@@ -187,73 +270,96 @@ class FastEngine final : public Engine {
     return tau_ + dt > kMaxFreeSteps * dt;
   }
 
-  /// The margin of a new frame: g starts at zero and, from there, is driven by the CM's
-  /// offset from the origin and its velocity. At least a small fraction of the wall radius.
-  double fresh_margin() const {
-    const double Rw = config_.container_radius.value_or(1.0);
-    double m = kMarginFloor * Rw;
-    if (k_ != 0) m = std::max(m, 2 * (R_cm_.norm() + V_cm_.norm() / rate()));
-    return std::min(m, 0.5 * Rw);
-  }
-
-  /// Starts a new epoch at the current time with h_i = r_i, so g = 0: R_cm and V_cm are
-  /// recomputed from the particles, as the reference engine does every step.
+  /// Starts a new epoch at the current time: Y is recomputed from the y_i (it is zero up to
+  /// rounding right after a re-base) and, for J > 0, how far short of the wall each
+  /// particle's largest |y| falls is tallied for the next frame's margin.
   void start_epoch() {
-    Vec3 sum_r = Vec3::Zero(), sum_v = Vec3::Zero();
-    for (const Orbit& o : orbits_) {
-      sum_r += o.m * o.a;
-      sum_v += o.m * o.b;
+    Vec3 sum_a = Vec3::Zero(), sum_b = Vec3::Zero();
+    const double Rw = config_.container_radius.value_or(0.0);
+    const double reach = Rw - R_cm_.norm();
+    const double bins_per_length = kGapBins / (0.5 * std::max(Rw, 1e-300));
+    const double inv_k = k_ > 0 ? 1 / k_ : 0, inv_rate = std::sqrt(inv_k);
+    gap_histogram_.fill(0);
+    for (const Body& o : orbits_) {
+      sum_a += o.m * o.a;
+      sum_b += o.m * o.b;
+      if (k_ > 0 && Rw > 0) {
+        // max over time of |a cos + b sin / omega|^2 = P + A (fast_engine_window.cpp).
+        const double aa = o.a.squaredNorm(), BB = o.b.squaredNorm() * inv_k;
+        const double Q = 0.5 * (aa - BB), S = o.a.dot(o.b) * inv_rate;
+        const double gap = reach - std::sqrt(0.5 * (aa + BB) + std::sqrt(Q * Q + S * S));
+        gap_histogram_[std::size_t(std::clamp(gap * bins_per_length, 0.0, kGapBins - 1.0))]++;
+      }
     }
-    R_cm_ = aH_ = sum_r / M_;
-    V_cm_ = bH_ = sum_v / M_;
+    aY_ = sum_a / M_;
+    bY_ = sum_b / M_;
     tau_ = 0;
   }
 
-  /// Folds g into every h_i (O(N)) and starts a new frame; the old one stays valid while its
-  /// own g stays within its margin.
+  /// A new current frame. Its margin covers the CM's distance from the centre now, the drift
+  /// of the CM over a few time units, and, when few particles can come near the wall (the
+  /// attractive expansion's later stages), as much more as leaves at most N / kShellBudget
+  /// of them within reach: a wide margin then costs little and lets the frame live long.
+  void start_frame() {
+    const double Rw = config_.container_radius.value_or(1.0);
+    const double base = offset_at(Flow::over(k_, tau_), 0).norm();
+    double extra = kMarginFloor * Rw;
+    if (k_ != 0) extra = std::max(extra, kMarginDriftTimes * V_cm_.norm() / rate());
+    if (k_ > 0) {
+      const std::size_t budget = std::max<std::size_t>(64, orbits_.size() / kShellBudget);
+      std::size_t within = 0;
+      int bin = 0;
+      while (bin < kGapBins && within + gap_histogram_[bin] <= budget) within += gap_histogram_[bin++];
+      extra = std::max(extra, 0.5 * Rw * bin / kGapBins);
+    }
+    extra = std::min(extra, 0.5 * Rw);
+    current_ = {next_frame_id_++, base + extra, base + 0.5 * extra, Vec3::Zero(), Vec3::Zero()};
+  }
+
+  /// Folds Y into every y_i (O(N)) so that y_i is again the oscillation about the CM, and
+  /// starts a new frame; the old one stays valid while its own offset stays within its margin.
   void rebase() {
     ++stats_.rebases;
     rebase_pending_ = false;
     const Flow f = Flow::over(k_, tau_);
-    const Vec3 g = g_at(f, 0), gv = g_velocity_at(f);
-    for (Orbit& o : orbits_) {
-      const Vec3 r = f.c * o.a + f.s * o.b + g;
-      const Vec3 v = f.dc() * o.a + f.c * o.b + gv;
-      o.a = r;
-      o.b = v;
+    const Vec3 Y = f.c * aY_ + f.s * bY_, Yv = f.dc() * aY_ + f.c * bY_;
+    for (Body& o : orbits_) {
+      const Vec3 y = f.c * o.a + f.s * o.b - Y;
+      const Vec3 yv = f.dc() * o.a + f.c * o.b - Yv;
+      o.a = y;
+      o.b = yv;
     }
     const bool keep_schedules = config_.container_radius && !schedule_all_pending_;
     if (keep_schedules) {
-      // Every h_i moved by the free flow of (g, g'): so did every old frame's offset.
+      // Every y_i moved by the free flow of (-Y, -Y'): so did every old frame's offset.
       for (Frame& fr : old_frames_) {
-        const Vec3 p = f.c * fr.p + f.s * fr.q + g;
-        const Vec3 q = f.dc() * fr.p + f.c * fr.q + gv;
+        const Vec3 p = f.c * fr.p + f.s * fr.q - Y;
+        const Vec3 q = f.dc() * fr.p + f.c * fr.q - Yv;
         fr.p = p;
         fr.q = q;
       }
-      current_.p = g;
-      current_.q = gv;
+      current_.p = -Y;
+      current_.q = -Yv;
       old_frames_.push_back(current_);
     } else {
       old_frames_.clear();
       schedule_all_pending_ = true;
     }
     start_epoch();
-    current_ = {next_frame_id_++, fresh_margin(), Vec3::Zero(), Vec3::Zero()};
+    start_frame();
     if (int(old_frames_.size()) > kMaxOldFrames) {
+      fill_ahead();
       expire(old_frames_.front().id);
-      drop_frame(0);
+      old_frames_.erase(old_frames_.begin());
     }
   }
 
-  void drop_frame(std::size_t index) { old_frames_.erase(old_frames_.begin() + long(index)); }
-
-  void expire_violated_frames(const Flow& f1, const Vec3& g1) {
+  void expire_violated_frames(const Flow& f1, const Vec3& o1) {
     for (std::size_t j = 0; j < old_frames_.size();) {
       const Frame& fr = old_frames_[j];
-      if ((g1 + f1.c * fr.p + f1.s * fr.q).norm() > fr.margin) {
+      if ((o1 + f1.c * fr.p + f1.s * fr.q).norm() > fr.margin) {
         expire(fr.id);
-        drop_frame(j);
+        old_frames_.erase(old_frames_.begin() + long(j));
       } else {
         ++j;
       }
@@ -272,56 +378,156 @@ class FastEngine final : public Engine {
   void schedule_all() {
     ++stats_.reschedules;
     schedule_all_pending_ = false;
-    for (auto& bucket : ring_) bucket.clear();
+    for (auto& bucket : near_) bucket.clear();
+    for (auto& bucket : far_) bucket.clear();
+    for (auto& list : lookahead_) list.clear();
     old_frames_.clear();
     for (std::size_t i = 0; i < orbits_.size(); ++i) schedule(std::uint32_t(i), step_);
   }
 
-  /// Puts particle i in the bucket of the first step >= first at whose end |h_i| can reach
-  /// the wall minus the current frame's margin. Step s ends at tau_ + (s + 1 - step_) dt_.
+  // [SECTION] Scheduling
+
+  /// The flow and the predicted offset at the ends of steps step_ .. step_ + kLookahead, from
+  /// the state before this step's hits; and the time the window search starts from.
+  void fill_ahead() {
+    if (dt_ != ahead_dt_) {
+      // How far the offset at those step ends can move away from the prediction, given the
+      // kick budget: each kick kappa moves it by kappa (u - s(u)), u the time since the kick.
+      ahead_dt_ = dt_;
+      step_flow_ = Flow::over(k_, dt_);
+      const double u = (kLookahead + 1) * dt_;
+      kick_drift_ = std::abs(u - Flow::over(k_, u).s);
+    }
+    const Flow& step_flow = step_flow_;
+    Flow f = Flow::over(k_, tau_ + dt_);
+    for (int j = 0; j <= kLookahead; ++j) {
+      ahead_[j] = {f.c, f.s, offset_at(f, (j + 1) * dt_)};
+      // c(tau + dt) = c c_dt - k s s_dt, s(tau + dt) = s c_dt + c s_dt (addition theorems).
+      const double c = f.c * step_flow.c - k_ * f.s * step_flow.s;
+      const double s = f.s * step_flow.c + f.c * step_flow.s;
+      f.c = c;
+      f.s = s;
+    }
+    for (int j = 0; j < 2; ++j) {
+      fast::Clock& c = clock_[j];
+      c.k = k_;
+      c.two_rate = two_rate_;
+      c.dt = dt_;
+      c.tau = tau_ + (j + 1) * dt_;
+      c.E = k_ < 0 ? std::exp(two_rate_ * c.tau) : 1.0;
+    }
+    const double Rw = *config_.container_radius;
+    lookahead_slack_ = kKickBudget * rate() * Rw * kick_drift_ + 1e-12 * Rw;
+  }
+
+  /// Puts particle i in the bucket of the first step >= first (step_ or step_ + 1) in which
+  /// it can hit the wall, as far as the schedule can tell.
   void schedule(std::uint32_t i, StepIndex first) {
+    Body& o = orbits_[i];
+    const bool same_frame = frame_of_[i] == current_.id;
     frame_of_[i] = current_.id;
-    const double T = *config_.container_radius - current_.margin;
+    const double Rw = *config_.container_radius;
+    const double T = Rw - current_.margin;
     StepIndex due = first;
     if (T > 0) {
-      const Orbit& o = orbits_[i];
-      const double tau_from = tau_ + double(first + 1 - step_) * dt_;
-      const double entry = fast::window_entry(o.a, o.b, k_, tau_from, T * T);
-      if (entry == std::numeric_limits<double>::infinity()) {
-        due = kParked;
-      } else {
-        // One part in a million of a step covers the rounding of the closed forms.
-        const double ahead = std::floor((entry - tau_from) / dt_ - 1e-6);
-        due = first + StepIndex(std::clamp(ahead, 0.0, double(kRingSize)));
+      // The window depends only on y_i and the frame's threshold: computed once per hit or frame.
+      if (!o.window_known || !same_frame) {
+        o.window = fast::window_of(o.a, o.b, k_, T * T);
+        o.window_known = true;
+      }
+      const double steps = fast::steps_to_window(o.window, clock_[first - step_]);
+      if (steps == std::numeric_limits<double>::infinity()) {
+        o.due = kParked;  // until its frame expires
+        return;
+      }
+      // A thousandth of a step covers the rounding of the closed forms.
+      due = first + StepIndex(std::clamp(std::floor(steps - 1e-3), 0.0, double(kHorizon)));
+    }
+    if (due <= step_ + kLookahead) due = look_ahead(o, due);
+    due = std::min(due, step_ + kHorizon);
+    o.due = due;
+    enqueue(i, due);
+  }
+
+  /// The first step from `from` to step_ + kLookahead whose predicted end position can be
+  /// outside the wall, or step_ + kLookahead + 1. Recorded, in case the kicks exceed the
+  /// budget the prediction relies on.
+  StepIndex look_ahead(const Body& o, StepIndex from) {
+    const double Rw = *config_.container_radius;
+    const double limit = (Rw - lookahead_slack_) * (Rw - lookahead_slack_);
+    StepIndex due = step_ + kLookahead + 1;
+    for (StepIndex m = from; m <= step_ + kLookahead; ++m) {
+      const Ahead& x = ahead_[m - step_];
+      if ((x.c * o.a + x.s * o.b + x.offset).squaredNorm() >= limit) {
+        due = m;
+        break;
       }
     }
-    due_[i] = due;
-    if (due == kParked) return;  // until its frame expires
-    due = std::min(due, step_ + kRingSize - 1);
-    due_[i] = due;
-    ring_[slot(due)].push_back(i);
+    if (due > from)
+      lookahead_[std::size_t(step_) % lookahead_.size()].push_back(std::uint32_t(&o - orbits_.data()));
+    return due;
+  }
+
+  /// The lookahead of the last kLookahead + 1 steps relied on their kicks staying within
+  /// budget. If they did not, every particle it skipped ahead is rescheduled without it.
+  void redo_lookahead_if_kicks_too_large() {
+    double sum = 0;
+    for (double kick : recent_kicks_) sum += kick;
+    if (k_ == 0 || sum <= kKickBudget * rate() * *config_.container_radius) {
+      // The schedules made kLookahead + 1 steps ago no longer rely on anything unchecked.
+      lookahead_[std::size_t(step_) % lookahead_.size()].clear();
+      return;
+    }
+    ++stats_.lookahead_redone;
+    std::vector<std::uint32_t> ids;
+    for (auto& list : lookahead_) {
+      ids.insert(ids.end(), list.begin(), list.end());
+      list.clear();
+    }
+    for (const std::uint32_t i : ids)
+      if (orbits_[i].due != kParked && orbits_[i].due >= step_) schedule_plain(i);
+    recent_kicks_.fill(0);
+  }
+
+  /// schedule(i, step_) without the lookahead.
+  void schedule_plain(std::uint32_t i) {
+    Body& o = orbits_[i];
+    o.due = step_;
+    frame_of_[i] = current_.id;
+    enqueue(i, step_);
   }
 
   EngineConfig config_;
   double J_ = 0, M_ = 0, k_ = 0, t_ = 0;
-  std::vector<Orbit> orbits_;
+  double two_rate_ = 0;  // 2 sqrt|k|
+  std::vector<Body> orbits_;
+  std::vector<std::uint8_t> frame_of_;  // the frame each schedule relies on; scanned on expiry
 
   // Shared motion, in the current epoch (tau_ is the time since it began).
   double tau_ = 0;
   Vec3 R_cm_ = Vec3::Zero(), V_cm_ = Vec3::Zero();  // at the current time
-  Vec3 aH_ = Vec3::Zero(), bH_ = Vec3::Zero();      // H(tau) = c aH + s bH
+  Vec3 aY_ = Vec3::Zero(), bY_ = Vec3::Zero();      // Y(tau) = c aY + s bY
 
   // The schedule.
   StepIndex step_ = 0;
   double dt_ = 0;
-  std::vector<StepIndex> due_;
-  std::vector<std::uint8_t> frame_of_;
-  std::vector<std::vector<std::uint32_t>> ring_;
+  std::array<std::vector<std::uint32_t>, 2 * kBlock> near_;
+  std::array<std::vector<std::uint32_t>, kFarBlocks> far_;
   std::vector<std::uint32_t> work_;
   Frame current_;
   std::vector<Frame> old_frames_;
   std::uint8_t next_frame_id_ = 0;
   bool schedule_all_pending_ = true, rebase_pending_ = false;
+  fast::Clock clock_[2];
+  std::array<Ahead, kLookahead + 1> ahead_{};
+  double lookahead_slack_ = 0;
+  double ahead_dt_ = 0, kick_drift_ = 0;
+  Flow step_flow_;
+  std::array<double, kLookahead + 1> recent_kicks_{};
+  std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead_;
+  // How many particles' largest |y| (J > 0) falls short of the reach R - |R_cm| by
+  // 0.5 R bin / kGapBins.
+  std::array<std::size_t, kGapBins> gap_histogram_{};
 
   System cache_;
   bool cache_valid_ = false;

@@ -6,55 +6,76 @@
 namespace swarm::fast {
 namespace {
 
-constexpr double kNever = std::numeric_limits<double>::infinity();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kTwoPi = 2 * M_PI;
 
-double entry_attractive(const Vec3& a, const Vec3& b, double k, double tau_from, double T2) {
+Window attractive(const Vec3& a, const Vec3& b, double k, double T2) {
   // With B = b / omega and theta = omega tau:
   // |h|^2 = P + Q cos(2 theta) + S sin(2 theta) = P + A cos(2 theta - phi).
-  const double w = std::sqrt(k);
-  const Vec3 B = b / w;
+  const Vec3 B = b * (1 / std::sqrt(k));
   const double aa = a.squaredNorm(), BB = B.squaredNorm();
   const double P = 0.5 * (aa + BB), Q = 0.5 * (aa - BB), S = a.dot(B);
-  const double A = std::hypot(Q, S);
-  if (T2 <= P - A) return tau_from;  // always at least T away from the origin
-  if (T2 > P + A) return kNever;     // never reaches T
-  const double alpha = std::acos((T2 - P) / A);
-  const double phi = std::atan2(S, Q);
-  const double psi = std::remainder(2 * w * tau_from - phi, 2 * M_PI);
-  if (std::abs(psi) <= alpha) return tau_from;
-  const double ahead = psi > alpha ? 2 * M_PI - alpha - psi : -alpha - psi;
-  return tau_from + ahead / (2 * w);
+  const double A = std::sqrt(Q * Q + S * S);
+  if (T2 <= P - A) return {0, 4};  // always at least sqrt(T2) from the origin
+  if (T2 > P + A) return {0, -1};  // never
+  return {std::atan2(S, Q), std::acos((T2 - P) / A)};
 }
 
-double entry_repulsive(const Vec3& a, const Vec3& b, double k, double tau_from, double T2) {
+Window repulsive(const Vec3& a, const Vec3& b, double k, double T2) {
   // h = C e^{Omega tau} + D e^{-Omega tau}; with E = e^{2 Omega tau},
   // E (|h|^2 - T2) = cc E^2 + beta E + dd, beta = 2 C.D - T2.
-  const double W = std::sqrt(-k);
-  const Vec3 C = 0.5 * (a + b / W), D = 0.5 * (a - b / W);
+  const Vec3 bW = b * (1 / std::sqrt(-k));
+  const Vec3 C = 0.5 * (a + bW), D = 0.5 * (a - bW);
   const double cc = C.squaredNorm(), dd = D.squaredNorm(), beta = 2 * C.dot(D) - T2;
-  const double E = std::exp(2 * W * tau_from);
-  if ((cc * E + beta) * E + dd >= 0) return tau_from;
-  if (cc <= 0) return kNever;  // only the decaying part: |h| keeps falling
-  // Negative somewhere on E > 0, so beta < 0 and the larger root has no cancellation.
-  const double disc = std::max(0.0, beta * beta - 4 * cc * dd);
+  const double disc = beta * beta - 4 * cc * dd;
+  if (beta >= 0 || disc <= 0) return {kInf, kInf};  // never negative for E > 0: always
+  if (cc <= 0) return {-dd / beta, kInf};            // only the decaying part
+  // beta < 0, so neither root suffers cancellation: E_minus E_plus = dd / cc.
   const double E_plus = (-beta + std::sqrt(disc)) / (2 * cc);
-  return std::max(tau_from, std::log(E_plus) / (2 * W));
+  return {dd / (cc * E_plus), E_plus};
 }
 
-double entry_free(const Vec3& a, const Vec3& b, double tau_from, double T2) {
+Window free(const Vec3& a, const Vec3& b, double T2) {
   const double aa = a.squaredNorm(), ab = a.dot(b), bb = b.squaredNorm();
-  if ((bb * tau_from + 2 * ab) * tau_from + aa - T2 >= 0) return tau_from;
-  if (bb <= 0) return kNever;
-  const double disc = std::max(0.0, ab * ab - bb * (aa - T2));
-  return std::max(tau_from, (-ab + std::sqrt(disc)) / bb);
+  if (bb <= 0) return aa >= T2 ? Window{kInf, kInf} : Window{-kInf, kInf};
+  const double disc = ab * ab - bb * (aa - T2);
+  if (disc <= 0) return {kInf, kInf};
+  const double root = std::sqrt(disc);
+  // One root without cancellation, the other from the product of the roots.
+  if (ab <= 0) {
+    const double tau_plus = (-ab + root) / bb;
+    return {(aa - T2) / (bb * tau_plus), tau_plus};
+  }
+  const double tau_minus = (-ab - root) / bb;
+  return {tau_minus, (aa - T2) / (bb * tau_minus)};
 }
 
 }  // namespace
 
-double window_entry(const Vec3& a, const Vec3& b, double k, double tau_from, double T2) {
-  if (k > 0) return entry_attractive(a, b, k, tau_from, T2);
-  if (k < 0) return entry_repulsive(a, b, k, tau_from, T2);
-  return entry_free(a, b, tau_from, T2);
+Window window_of(const Vec3& a, const Vec3& b, double k, double T2) {
+  if (k > 0) return attractive(a, b, k, T2);
+  if (k < 0) return repulsive(a, b, k, T2);
+  return free(a, b, T2);
+}
+
+double steps_to_window(const Window& w, const Clock& clock) {
+  if (clock.k > 0) {
+    const double phi = w.first, alpha = w.second;
+    if (alpha < 0) return kInf;
+    if (alpha >= M_PI) return 0;
+    const double x = clock.two_rate * clock.tau - phi;
+    const double psi = x - kTwoPi * std::nearbyint(x * (1 / kTwoPi));  // in [-pi, pi]
+    if (std::abs(psi) <= alpha) return 0;
+    const double ahead = psi > alpha ? kTwoPi - alpha - psi : -alpha - psi;
+    return ahead / (clock.two_rate * clock.dt);
+  }
+  if (clock.k < 0) {
+    if (clock.E <= w.first || clock.E >= w.second) return 0;
+    if (w.second == kInf) return kInf;
+    return std::log(w.second / clock.E) / (clock.two_rate * clock.dt);
+  }
+  if (clock.tau <= w.first || clock.tau >= w.second) return 0;
+  return (w.second - clock.tau) / clock.dt;
 }
 
 }  // namespace swarm::fast

@@ -5,10 +5,29 @@
 
 namespace swarm::fast {
 
-/// The earliest tau >= tau_from at which |h(tau)| >= sqrt(T2), where h(tau) = a c(tau) +
-/// b s(tau) is the free flow of x'' = -k x (Flow::over(k, tau)); +infinity if never.
-/// J > 0: |h|^2 is a constant plus a sinusoid in 2 omega tau; J < 0: a quadratic in
-/// exp(2 Omega tau); J = 0: a quadratic in tau.
-double window_entry(const Vec3& a, const Vec3& b, double k, double tau_from, double T2);
+/// The times at which a free oscillator h(tau) = c(tau) a + s(tau) b (Flow::over(k, tau))
+/// is at least sqrt(T2) from the origin, in two numbers:
+/// J > 0: |h|^2 = P + A cos(2 omega tau - phi), so the window is |2 omega tau - phi| <= alpha
+///        modulo 2 pi (first = phi, second = alpha; alpha < 0: never, alpha >= pi: always).
+/// J < 0: E (|h|^2 - T2) is a quadratic in E = exp(2 Omega tau) with positive leading
+///        coefficient: the window is E <= first or E >= second.
+/// J = 0: |h|^2 - T2 is a quadratic in tau: the window is tau <= first or tau >= second.
+struct Window {
+  double first = 0, second = 0;
+};
+
+Window window_of(const Vec3& a, const Vec3& b, double k, double T2);
+
+/// The time from which a schedule looks for the window: the end of the first step it may
+/// pick, in the epoch's time.
+struct Clock {
+  double k = 0, two_rate = 0, dt = 0;  ///< two_rate = 2 sqrt|k|
+  double tau = 0;
+  double E = 1;  ///< exp(two_rate tau), used when k < 0
+};
+
+/// How many steps after the first candidate the window can begin: 0 when it already has,
+/// +infinity when it never does. Not rounded: the caller rounds down, with a safety margin.
+double steps_to_window(const Window& w, const Clock& clock);
 
 }  // namespace swarm::fast

@@ -2,23 +2,26 @@
 /// The fast engine: Appendix A (paper collisions, analytic method) at a cost that grows with
 /// the number of wall hits rather than with N times the number of steps.
 ///
-/// Each lab position is split as r_i(t) = h_i(t) + g(t). h_i is a free oscillator about the
-/// origin (x'' = -k x) that changes only at particle i's own wall hits; g = R_cm - H, with
-/// H = sum m_i h_i / M, is one shared 3-vector. A hit of particle j changes v_j by dv: that is
-/// h_j's velocity alone, plus m_j dv / M on the shared R_cm and H velocities, whose difference
-/// g' does not change. So a hit costs O(1), not O(N).
+/// Each lab position is split as r_i(t) = y_i(t) + o(t). y_i is a free oscillator about the
+/// origin (y'' = -k y) that changes only at particle i's own wall hits; o = R_cm - Y, with
+/// Y = sum m_i y_i / M, is one shared 3-vector (the h_i and g, with the h_i taken
+/// about the CM at each re-base). A hit of particle j changes v_j by dv: that is y_j's
+/// velocity alone, plus m_j dv / M on the shared R_cm and Y velocities, whose difference o'
+/// does not change. So a hit costs O(1), not O(N).
 ///
-/// |h_i(t)|^2 is a constant plus a sinusoid in 2 omega t (exponentials for J < 0, a quadratic
+/// |y_i(t)|^2 is a constant plus a sinusoid in 2 omega t (exponentials for J < 0, a quadratic
 /// for J = 0), so the first time particle i can come within a margin G of the wall is known
 /// in closed form; a particle is checked only in the steps it is due, which are kept in a ring
-/// of per-step buckets. Positions are materialised only when system() is called.
+/// of per-step buckets. Within a few steps of that window its exact predicted positions at
+/// the next step ends are looked at, so it is checked again only when it can actually hit.
+/// Positions are materialised only when system() is called.
 ///
-/// The margin G must bound |g|. A "frame" is one choice of the h_i; when |g| grows (always in
-/// the repulsive case, where g and the h_i both grow like exp(Omega t) while r_i stays inside)
-/// the engine re-bases: it folds g into every h_i (O(N), rare) and starts a new frame. The
-/// schedules made in an older frame stay valid while that frame's own g stays within its
-/// margin, which is checked every step; when it does not, the particles still scheduled in it
-/// are rescheduled.
+/// The margin G must bound |o|. A "frame" is one choice of the y_i; when o drifts (with the
+/// CM, or, when J < 0, as Y grows like exp(Omega t) from the wall kicks) the engine re-bases:
+/// it folds Y into every y_i (O(N), rare) and starts a new frame. The schedules made in an
+/// older frame stay valid while that frame's own offset stays within its margin, which is
+/// checked every step; when it does not, the particles still scheduled in it are
+/// rescheduled.
 ///
 /// The engine reproduces the reference engine's wall hits step by step (same predicate on the
 /// same prediction, evaluated from an algebraically identical state) up to rounding.
@@ -44,6 +47,7 @@ struct FastEngineStats {
   std::int64_t rebases = 0;      ///< O(N) re-bases that started a new frame
   std::int64_t reschedules = 0;  ///< O(N) full reschedules (radius or dt changed)
   std::int64_t expired = 0;      ///< particles rescheduled because their frame expired
+  std::int64_t lookahead_redone = 0;  ///< steps whose kicks exceeded the lookahead's budget
 };
 
 /// The counters of engine if it is a fast engine, else nothing.
