@@ -6,6 +6,12 @@
 #include <limits>
 #include <stdexcept>
 #include <vector>
+#ifndef __EMSCRIPTEN__
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+#endif
 
 #include "fast_engine_window.h"
 #include "swarm/regime.h"
@@ -49,6 +55,14 @@ constexpr double kMaxAttractivePhase = 512;
 constexpr double kMaxFreeSteps = 1024;
 // How many ids ahead of the one being checked the particle data is fetched.
 constexpr std::size_t kPrefetch = 8;
+// The particles are split into kLanes halves by index, each with its own buckets and sums, so
+// that a step's checks can run on two cores; the sums are always combined in lane order, so
+// the numbers do not depend on how many threads ran (one in the browser).
+constexpr int kLanes = 2;
+// Steps with fewer checks than this run on one thread: waking the other costs more.
+constexpr std::size_t kParallelChecks = 384;
+// A waiting thread spins this many times before it sleeps on a condition variable.
+constexpr int kSpins = 20000;
 
 inline void prefetch(const void* p) {
 #if defined(__GNUC__)
@@ -81,6 +95,24 @@ struct Frame {
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
 };
 
+/// One lane of the schedule: a two-level timing wheel and the sums of one step.
+struct Lane {
+  std::array<std::vector<std::uint32_t>, 2 * kBlock> near;
+  std::array<std::vector<std::uint32_t>, kFarBlocks> far;
+  std::vector<std::uint32_t> work;
+  std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
+  WallTally tally;
+  Vec3 kick = Vec3::Zero();
+  std::int64_t checks = 0;
+};
+
+/// What every check of one step reads: the flow and the shared offset at its start and end.
+struct StepData {
+  Flow f0, f1;
+  Vec3 o0, o0v, o1;
+  double R2;
+};
+
 /// Flow values and the predicted shared offset at the end of the next few steps.
 struct Ahead {
   double c, s;
@@ -107,6 +139,7 @@ class FastEngine final : public Engine {
       orbits_[i] = {p.r - R_cm_, p.v - V_cm_, p.m, kParked, {}, false};
     }
     frame_of_.assign(orbits_.size(), 0);
+    lane_split_ = orbits_.size() / 2;
 
     cache_ = std::move(initial);
     cache_valid_ = true;
@@ -132,45 +165,37 @@ class FastEngine final : public Engine {
     if (schedule_all_pending_) schedule_all();
     redo_lookahead_if_kicks_too_large();
 
-    const Flow f0 = Flow::over(k_, tau_);
-    const Vec3 o0 = offset_at(f0, 0), o0v = offset_velocity_at(f0);
-    const Flow f1 = Flow::over(k_, tau_ + dt);
-    const Vec3 o1 = offset_at(f1, dt);
-    expire_violated_frames(f1, o1);
+    StepData& d = now_;
+    d.f0 = Flow::over(k_, tau_);
+    d.o0 = offset_at(d.f0, 0);
+    d.o0v = offset_velocity_at(d.f0);
+    d.f1 = Flow::over(k_, tau_ + dt);
+    d.o1 = offset_at(d.f1, dt);
+    d.R2 = *config_.container_radius * *config_.container_radius;
+    expire_violated_frames(d.f1, d.o1);
 
-    // Appendix A: the particles predicted outside at t + dt and moving outward now are
-    // reflected now. Their predictions all use the state before any of this step's hits.
-    const double R2 = *config_.container_radius * *config_.container_radius;
-    Vec3 kick = Vec3::Zero();  // sum of m dv / M: the change of V_cm (and of Y')
-    if ((step_ & (kBlock - 1)) == 0) bring_near(step_ / kBlock + 1);
-    work_.swap(near_[near_slot(step_)]);
-    const std::size_t count = work_.size();
-    for (std::size_t j = 0; j < count; ++j) {
-      if (j + kPrefetch < count) prefetch(&orbits_[work_[j + kPrefetch]]);
-      const std::uint32_t i = work_[j];
-      Body& o = orbits_[i];
-      if (o.due != step_) continue;  // rescheduled since it was put here
-      ++stats_.checks;
-      const Vec3 r1 = f1.c * o.a + f1.s * o.b + o1;
-      if (r1.squaredNorm() > R2) {
-        const Vec3 r0 = f0.c * o.a + f0.s * o.b + o0;
-        const Vec3 v0 = f0.dc() * o.a + f0.c * o.b + o0v;
-        if (v0.dot(r0) > 0) {
-          const Vec3 dv = reflect(o.m, r0, v0, tally);
-          // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv.
-          o.a -= f0.s * dv;
-          o.b += f0.c * dv;
-          o.window_known = false;
-          kick += (o.m / M_) * dv;
-        }
-      }
-      schedule(i, step_ + 1);
+    std::size_t pending = 0;
+    for (const Lane& lane : lanes_) pending += lane.near[near_slot(step_)].size();
+    if (pending >= kParallelChecks && start_worker()) {
+      ++stats_.parallel_steps;
+      run_on_worker();
+      check_lane(lanes_[0]);
+      wait_for_worker();
+    } else {
+      for (Lane& lane : lanes_) check_lane(lane);
     }
-    work_.clear();
+    Vec3 kick = Vec3::Zero();  // sum of m dv / M: the change of V_cm (and of Y')
+    for (const Lane& lane : lanes_) {
+      tally.add(lane.tally);
+      kick += lane.kick;
+      stats_.checks += lane.checks;
+    }
     stats_.hits += tally.hits;
-    finish_step(f0, kick, dt);
+    finish_step(d.f0, kick, dt);
     return tally;
   }
+
+  ~FastEngine() override { stop_worker(); }
 
   const System& system() override {
     if (!cache_valid_) {
@@ -207,23 +232,120 @@ class FastEngine final : public Engine {
  private:
   // [SECTION] Shared motion
 
+  // [SECTION] Checks
+
+  /// Appendix A for one lane: the particles predicted outside at t + dt and moving outward
+  /// now are reflected now. Their predictions all use the state before any of this step's
+  /// hits, so the lanes are independent.
+  void check_lane(Lane& lane) {
+    const StepData& d = now_;
+    lane.tally = WallTally{};
+    lane.kick = Vec3::Zero();
+    lane.checks = 0;
+    if ((step_ & (kBlock - 1)) == 0) bring_near(lane, step_ / kBlock + 1);
+    lane.work.swap(lane.near[near_slot(step_)]);
+    const std::size_t count = lane.work.size();
+    for (std::size_t j = 0; j < count; ++j) {
+      if (j + kPrefetch < count) prefetch(&orbits_[lane.work[j + kPrefetch]]);
+      const std::uint32_t i = lane.work[j];
+      Body& o = orbits_[i];
+      if (o.due != step_) continue;  // rescheduled since it was put here
+      ++lane.checks;
+      const Vec3 r1 = d.f1.c * o.a + d.f1.s * o.b + d.o1;
+      if (r1.squaredNorm() > d.R2) {
+        const Vec3 r0 = d.f0.c * o.a + d.f0.s * o.b + d.o0;
+        const Vec3 v0 = d.f0.dc() * o.a + d.f0.c * o.b + d.o0v;
+        if (v0.dot(r0) > 0) {
+          const Vec3 dv = reflect(o.m, r0, v0, lane.tally);
+          // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv.
+          o.a -= d.f0.s * dv;
+          o.b += d.f0.c * dv;
+          o.window_known = false;
+          lane.kick += (o.m / M_) * dv;
+        }
+      }
+      schedule(i, step_ + 1);
+    }
+    lane.work.clear();
+  }
+
+  // [SECTION] The second thread
+
+#ifndef __EMSCRIPTEN__
+  bool start_worker() {
+    if (worker_.joinable()) return true;
+    if (std::thread::hardware_concurrency() < 2) return false;
+    worker_ = std::thread([this] { worker_loop(); });
+    return true;
+  }
+
+  void worker_loop() {
+    std::uint64_t seen = 0;
+    for (;;) {
+      wait_until([&] { return go_.load(std::memory_order_acquire) != seen; });
+      seen = go_.load(std::memory_order_acquire);
+      if (stop_.load(std::memory_order_acquire)) return;
+      check_lane(lanes_[1]);
+      done_.store(seen, std::memory_order_release);
+      std::lock_guard<std::mutex> lock(mutex_);
+      cv_.notify_all();
+    }
+  }
+
+  /// Spins a little, yielding the core, then sleeps until ready().
+  template <class Ready>
+  void wait_until(Ready ready) {
+    for (int i = 0; i < kSpins && !ready(); ++i) std::this_thread::yield();
+    if (!ready()) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      cv_.wait(lock, ready);
+    }
+  }
+
+  void run_on_worker() {
+    go_.store(++generation_, std::memory_order_release);
+    std::lock_guard<std::mutex> lock(mutex_);
+    cv_.notify_all();
+  }
+
+  void wait_for_worker() {
+    wait_until([&] { return done_.load(std::memory_order_acquire) == generation_; });
+  }
+
+  void stop_worker() {
+    if (!worker_.joinable()) return;
+    stop_.store(true, std::memory_order_release);
+    run_on_worker();
+    worker_.join();
+  }
+#else
+  bool start_worker() { return false; }
+  void run_on_worker() {}
+  void wait_for_worker() {}
+  void stop_worker() {}
+#endif
+
+  // [SECTION] Buckets
+
   static std::size_t near_slot(StepIndex s) { return std::size_t(s & (2 * kBlock - 1)); }
   static std::size_t far_slot(StepIndex block) { return std::size_t(block % kFarBlocks); }
+  Lane& lane_of(std::uint32_t i) { return lanes_[i < lane_split_ ? 0 : 1]; }
 
   /// Puts particle i, due in step `due` (step_ <= due <= step_ + kHorizon), in its bucket.
   void enqueue(std::uint32_t i, StepIndex due) {
+    Lane& lane = lane_of(i);
     if (due / kBlock <= step_ / kBlock + 1)
-      near_[near_slot(due)].push_back(i);
+      lane.near[near_slot(due)].push_back(i);
     else
-      far_[far_slot(due / kBlock)].push_back(i);
+      lane.far[far_slot(due / kBlock)].push_back(i);
   }
 
   /// Moves the particles due in `block` from its block bucket to the step buckets.
-  void bring_near(StepIndex block) {
-    auto& bucket = far_[far_slot(block)];
+  void bring_near(Lane& lane, StepIndex block) {
+    auto& bucket = lane.far[far_slot(block)];
     for (const std::uint32_t i : bucket) {
       const StepIndex due = orbits_[i].due;
-      if (due / kBlock == block && due != kParked) near_[near_slot(due)].push_back(i);
+      if (due / kBlock == block && due != kParked) lane.near[near_slot(due)].push_back(i);
     }
     bucket.clear();
   }
@@ -378,9 +500,11 @@ class FastEngine final : public Engine {
   void schedule_all() {
     ++stats_.reschedules;
     schedule_all_pending_ = false;
-    for (auto& bucket : near_) bucket.clear();
-    for (auto& bucket : far_) bucket.clear();
-    for (auto& list : lookahead_) list.clear();
+    for (Lane& lane : lanes_) {
+      for (auto& bucket : lane.near) bucket.clear();
+      for (auto& bucket : lane.far) bucket.clear();
+      for (auto& list : lane.lookahead) list.clear();
+    }
     old_frames_.clear();
     for (std::size_t i = 0; i < orbits_.size(); ++i) schedule(std::uint32_t(i), step_);
   }
@@ -463,8 +587,10 @@ class FastEngine final : public Engine {
         break;
       }
     }
-    if (due > from)
-      lookahead_[std::size_t(step_) % lookahead_.size()].push_back(std::uint32_t(&o - orbits_.data()));
+    if (due > from) {
+      const auto i = std::uint32_t(&o - orbits_.data());
+      lane_of(i).lookahead[std::size_t(step_) % (kLookahead + 1)].push_back(i);
+    }
     return due;
   }
 
@@ -475,15 +601,16 @@ class FastEngine final : public Engine {
     for (double kick : recent_kicks_) sum += kick;
     if (k_ == 0 || sum <= kKickBudget * rate() * *config_.container_radius) {
       // The schedules made kLookahead + 1 steps ago no longer rely on anything unchecked.
-      lookahead_[std::size_t(step_) % lookahead_.size()].clear();
+      for (Lane& lane : lanes_) lane.lookahead[std::size_t(step_) % (kLookahead + 1)].clear();
       return;
     }
     ++stats_.lookahead_redone;
     std::vector<std::uint32_t> ids;
-    for (auto& list : lookahead_) {
-      ids.insert(ids.end(), list.begin(), list.end());
-      list.clear();
-    }
+    for (Lane& lane : lanes_)
+      for (auto& list : lane.lookahead) {
+        ids.insert(ids.end(), list.begin(), list.end());
+        list.clear();
+      }
     for (const std::uint32_t i : ids)
       if (orbits_[i].due != kParked && orbits_[i].due >= step_) schedule_plain(i);
     recent_kicks_.fill(0);
@@ -511,9 +638,9 @@ class FastEngine final : public Engine {
   // The schedule.
   StepIndex step_ = 0;
   double dt_ = 0;
-  std::array<std::vector<std::uint32_t>, 2 * kBlock> near_;
-  std::array<std::vector<std::uint32_t>, kFarBlocks> far_;
-  std::vector<std::uint32_t> work_;
+  std::array<Lane, kLanes> lanes_;
+  std::size_t lane_split_ = 0;  // particles below it are in lane 0
+  StepData now_{};
   Frame current_;
   std::vector<Frame> old_frames_;
   std::uint8_t next_frame_id_ = 0;
@@ -524,7 +651,6 @@ class FastEngine final : public Engine {
   double ahead_dt_ = 0, kick_drift_ = 0;
   Flow step_flow_;
   std::array<double, kLookahead + 1> recent_kicks_{};
-  std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead_;
   // How many particles' largest |y| (J > 0) falls short of the reach R - |R_cm| by
   // 0.5 R bin / kGapBins.
   std::array<std::size_t, kGapBins> gap_histogram_{};
@@ -532,6 +658,15 @@ class FastEngine final : public Engine {
   System cache_;
   bool cache_valid_ = false;
   FastEngineStats stats_;
+
+#ifndef __EMSCRIPTEN__
+  std::thread worker_;
+  std::atomic<std::uint64_t> go_{0}, done_{0};
+  std::atomic<bool> stop_{false};
+  std::uint64_t generation_ = 0;
+  std::mutex mutex_;
+  std::condition_variable cv_;
+#endif
 };
 
 }  // namespace

@@ -48,6 +48,7 @@ struct FastEngineStats {
   std::int64_t reschedules = 0;  ///< O(N) full reschedules (radius or dt changed)
   std::int64_t expired = 0;      ///< particles rescheduled because their frame expired
   std::int64_t lookahead_redone = 0;  ///< steps whose kicks exceeded the lookahead's budget
+  std::int64_t parallel_steps = 0;    ///< steps whose checks ran on two threads
 };
 
 /// The counters of engine if it is a fast engine, else nothing.
