@@ -21,13 +21,14 @@ std::string axis_name(const Axis& a) {
 
 std::string csv_of(const Figure& figure) {
   std::ostringstream out;
-  out.precision(10);
-  out << "panel,series,x,y\n";
+  out.precision(8);
+  // Every figure's panels share one x quantity, so the header names it.
+  out << "panel,series," << field(figure.panels.empty() ? "x" : axis_name(figure.panels[0].x))
+      << ",y\n";
   for (std::size_t p = 0; p < figure.panels.size(); ++p) {
     const Panel& panel = figure.panels[p];
-    const std::string x_name = axis_name(panel.x), y_name = axis_name(panel.y);
     for (const Series& s : panel.series) {
-      const std::string name = field((s.name.empty() ? y_name : s.name) + " vs " + x_name);
+      const std::string name = field(s.name.empty() ? axis_name(panel.y) : s.name);
       for (std::size_t i = 0; i < s.x.size(); ++i)
         out << p << ',' << name << ',' << s.x[i] << ',' << s.y[i] << '\n';
     }
