@@ -158,8 +158,10 @@ void App::layout_windows() {
 
   if (s.layout.controls) {
     ImGui::SetNextWindowPos(ImVec2(left, top));
-    ImGui::SetNextWindowSize(ImVec2(21 * font, height), ImGuiCond_Appearing);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(15 * font, height), ImVec2(40 * font, height));
+    ImGui::SetNextWindowSize(ImVec2(std::min(21 * font, 0.3f * viewport->Size.x), height),
+                             s.layout.resize_panels ? ImGuiCond_Always : ImGuiCond_Appearing);
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(std::min(15 * font, 0.2f * viewport->Size.x), height), ImVec2(40 * font, height));
     if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
       auto section = [&](const char* title, bool open_first, void (*body)(AppState&)) {
         ImGui::SetNextItemOpen(open_first, ImGuiCond_Once);
@@ -181,12 +183,15 @@ void App::layout_windows() {
   }
   if (s.layout.plots) {
     ImGui::SetNextWindowPos(ImVec2(right, top), ImGuiCond_Always, ImVec2(1, 0));
-    ImGui::SetNextWindowSize(ImVec2(25 * font, height), ImGuiCond_Appearing);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(16 * font, height), ImVec2(60 * font, height));
+    ImGui::SetNextWindowSize(ImVec2(std::min(25 * font, 0.34f * viewport->Size.x), height),
+                             s.layout.resize_panels ? ImGuiCond_Always : ImGuiCond_Appearing);
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(std::min(16 * font, 0.2f * viewport->Size.x), height), ImVec2(60 * font, height));
     if (ImGui::Begin("Plots", &s.layout.plots, panel)) draw_plots_panel(s);
     right -= ImGui::GetWindowWidth();
     ImGui::End();
   }
+  s.layout.resize_panels = false;
   s.layout.view = {left, top, std::max(right - left, 1.0f), std::max(height, 1.0f)};
 
   // Over the 3D view: the transport bar along the top, the read-outs below it.
@@ -256,7 +261,13 @@ void App::update_camera() {
     // Small isolated systems (the paper's orbits, mostly in the x-y plane) are seen from high
     // above so that the ellipses show their shape; a swarm in a sphere from lower down.
     s.camera.set_elevation(s.preset.container_radius ? 0.45f : 1.1f);
+    s.framed_radius = s.scene_radius;
     s.reframe = false;
+  }
+  // The camera backs away as an expansion grows the container, keeping the whole wall in view.
+  if (const auto R = s.run->primary().engine().container_radius(); R && *R > s.framed_radius) {
+    s.camera.scale_distance(float(*R) / s.framed_radius);
+    s.framed_radius = float(*R);
   }
   s.camera.update(s.layout.view);
 }

@@ -47,6 +47,18 @@ void AppState::open(const swarm::Preset& p, std::string from) {
   reframe = true;
 }
 
+std::string AppState::open_json(const std::string& json, std::string from) {
+  const swarm::PresetParse parsed = swarm::parse_preset(json);
+  if (!parsed.preset) {
+    status = parsed.error;
+    status_is_error = true;
+    return parsed.error;
+  }
+  open(*parsed.preset, std::move(from));
+  status.clear();
+  return {};
+}
+
 bool AppState::apply_draft(Section section) {
   const std::string error = swarm::preset_error(draft);
   if (!error.empty()) {

@@ -40,6 +40,7 @@ struct Layout {
   bool controls = true, plots = true, help = false;
   float ui_scale = 1.0f;
   float pending_ui_scale = 1.0f;  ///< applied between frames by the main loop
+  bool resize_panels = false;     ///< fit the panels to the window again (after a new scale)
   ViewRect view;                  ///< the 3D view: the window minus the panels
 };
 
@@ -80,6 +81,7 @@ struct AppState {
   OrbitCamera camera;
   bool reframe = true;  ///< fit the camera to the scene on the next frame
   float scene_radius = 1;
+  float framed_radius = 1;        ///< the container radius the camera distance was set for
   float particle_radius = 0.05f;  ///< world radius of the heaviest particle at size 1
   double heaviest_mass = 1;
   std::optional<std::size_t> selected;
@@ -91,6 +93,10 @@ struct AppState {
 
   /// Opens a valid preset: it becomes origin, preset and draft; the run restarts.
   void open(const swarm::Preset& p, std::string location);
+  /// Opens a preset given as JSON text (a share link, a file picked in the browser). A preset
+  /// that fails validation leaves the running one alone; the message (as in the CLI) is
+  /// returned and shown in the scenario panel.
+  std::string open_json(const std::string& json, std::string location);
   /// Validates the draft; applies it and restarts the run, or keeps the running preset and
   /// records the reason next to `section`. Returns whether it was applied.
   bool apply_draft(Section section);

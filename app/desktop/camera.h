@@ -29,6 +29,8 @@ class OrbitCamera {
   void frame(float radius, float aspect);
   /// Turns the camera by a mouse drag of dx, dy pixels.
   void orbit(float dx, float dy);
+  /// Moves away by this factor (a growing container stays in view).
+  void scale_distance(float factor) { distance_ *= factor; }
   /// Moves closer (steps > 0) or farther, one wheel notch at a time.
   void zoom(float steps);
   void set_target(const Eigen::Vector3f& target) { target_ = target; }

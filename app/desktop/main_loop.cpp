@@ -24,6 +24,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   Layout& layout = f.app->state().layout;
   if (layout.pending_ui_scale != layout.ui_scale && !ImGui::IsAnyItemActive()) {
     layout.ui_scale = layout.pending_ui_scale;
+    layout.resize_panels = true;
     apply_ui_scale(layout.ui_scale);
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();

@@ -38,14 +38,19 @@ std::string format_tick(double v) {
   return text;
 }
 
-/// Tick values: 1-2-5 steps on a linear axis, powers of ten (or 1-2-5 within a decade) on a
-/// log axis.
+/// Tick values: 1-2-5 steps on a linear axis; on a log axis powers of ten over many decades,
+/// 1, 2 and 5 times them over a few, and linear steps within less than half a decade.
 std::vector<double> ticks(const Scale& s, int wanted) {
   std::vector<double> out;
-  if (s.log && s.hi - s.lo >= 1.0) {
-    const int step = std::max(1, int(std::ceil((s.hi - s.lo) / wanted)));
-    for (int e = int(std::ceil(s.lo - 1e-9)); e <= int(std::floor(s.hi + 1e-9)); e += step)
-      out.push_back(std::pow(10.0, e));
+  if (s.log && s.hi - s.lo >= 0.5) {
+    const bool decades_only = s.hi - s.lo >= 3.0;
+    const int step = decades_only ? std::max(1, int(std::ceil((s.hi - s.lo) / wanted))) : 1;
+    for (int e = int(std::floor(s.lo)); e <= int(std::ceil(s.hi)); e += step)
+      for (double m : {1.0, 2.0, 5.0}) {
+        if (decades_only && m != 1.0) continue;
+        const double v = m * std::pow(10.0, e);
+        if (std::log10(v) >= s.lo - 1e-9 && std::log10(v) <= s.hi + 1e-9) out.push_back(v);
+      }
     return out;
   }
   const double lo = s.log ? std::pow(10.0, s.lo) : s.lo;
@@ -59,20 +64,24 @@ std::vector<double> ticks(const Scale& s, int wanted) {
   return out;
 }
 
-/// The data range of one axis over every series (and the fit lines' need nothing).
+/// The data range of one axis over every series: only points that can be drawn (both
+/// coordinates finite, and positive on a log axis) and, for y, that lie in the x window (a
+/// scrolling plot).
 void data_range(const PlotSpec& spec, bool x_axis, const Scale& x_scale, double& lo, double& hi) {
   lo = std::numeric_limits<double>::infinity();
   hi = -lo;
-  const PlotAxis& axis = x_axis ? spec.x : spec.y;
+  auto drawable = [](double v, const PlotAxis& axis) {
+    return std::isfinite(v) && (!axis.log || v > 0);
+  };
   for (const PlotSeries& s : spec.series) {
-    const std::vector<double>& v = x_axis ? *s.x : *s.y;
-    for (std::size_t i = 0; i < v.size() && i < s.x->size() && i < s.y->size(); ++i) {
-      const double xi = (*s.x)[i];
-      // The y range only looks at the points inside the x window (a scrolling plot).
+    const std::size_t n = std::min(s.x->size(), s.y->size());
+    for (std::size_t i = 0; i < n; ++i) {
+      const double xi = (*s.x)[i], yi = (*s.y)[i];
+      if (!drawable(xi, spec.x) || !drawable(yi, spec.y)) continue;
       if (!x_axis && (xi < x_scale.value(x_scale.p0) || xi > x_scale.value(x_scale.p1))) continue;
-      if (!std::isfinite(v[i]) || (axis.log && v[i] <= 0)) continue;
-      lo = std::min(lo, v[i]);
-      hi = std::max(hi, v[i]);
+      const double v = x_axis ? xi : yi;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
     }
   }
 }

@@ -1,5 +1,6 @@
 #include "shaders.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -16,7 +17,7 @@ GLuint compile(const char* name, GLenum kind, const char* source) {
   if (!ok) {
     GLint length = 0;
     glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(std::size_t(length) + 1);
+    std::vector<char> log(std::size_t(std::max(length, 0)) + 1);
     glGetShaderInfoLog(shader, length, nullptr, log.data());
     std::fprintf(stderr, "swarmlab: %s %s shader: %s\n", name,
                  kind == GL_VERTEX_SHADER ? "vertex" : "fragment", log.data());
@@ -43,7 +44,7 @@ GLuint link_program(const char* name, const char* vertex_source, const char* fra
   if (!ok) {
     GLint length = 0;
     glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(std::size_t(length) + 1);
+    std::vector<char> log(std::size_t(std::max(length, 0)) + 1);
     glGetProgramInfoLog(program, length, nullptr, log.data());
     std::fprintf(stderr, "swarmlab: %s program: %s\n", name, log.data());
     glDeleteProgram(program);
