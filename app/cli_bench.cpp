@@ -1,0 +1,171 @@
+// `swarmlab bench headline|fireball|scale`: runs one of the paper's workloads alone and
+// prints its wall time and figures (bench/RESULTS.md collects the numbers).
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "bench_workloads.h"
+#include "cli_bench.h"
+#include "preset_file.h"
+#include "swarm/diagnostics.h"
+#include "swarm/engine.h"
+#include "swarm/fast_engine.h"
+#include "swarm/protocol.h"
+
+namespace swarmlab {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::unique_ptr<swarm::Engine> make(const std::string& engine, swarm::System s,
+                                    const swarm::EngineConfig& config) {
+  if (engine == "reference") return swarm::make_reference_engine(std::move(s), config);
+  return swarm::make_engine(std::move(s), config);
+}
+
+void print_memory(long particles) {
+  if (const auto peak = swarm::bench::peak_memory())
+    std::printf("%-18s %.1f MiB = %.1f bytes per particle (whole process)\n", "peak memory",
+                double(*peak) / (1 << 20), double(*peak) / double(particles));
+}
+
+void print_work(const swarm::Engine& engine) {
+  if (const auto st = swarm::fast_engine_stats(engine))
+    std::printf("%-18s %lld checks, %lld re-bases, %lld rescheduled, %lld two-thread steps\n",
+                "fast engine", (long long)st->checks, (long long)st->rebases,
+                (long long)(st->expired + st->reschedules), (long long)st->parallel_steps);
+}
+
+/// Runs the reference and the chosen engine side by side for `steps` steps and says whether
+/// every step had the same hits, and how far the final states are apart.
+bool compare_with_reference(const swarm::Preset& preset, const std::string& engine, long steps) {
+  const swarm::RunPlan plan = swarm::run_plan(preset);
+  auto ref = swarm::make_reference_engine(swarm::initial_system(preset), plan.engine);
+  auto run = make(engine, swarm::initial_system(preset), plan.engine);
+  const long per_stage = plan.expansion ? swarm::steps_per_stage(*plan.expansion, plan.dt) : 0;
+  long differing = 0, hits = 0;
+  for (long i = 0; i < steps; ++i) {
+    if (per_stage > 0 && i > 0 && i % per_stage == 0) {  // the protocol's expansion step
+      const double R = *ref->container_radius() * plan.expansion->factor;
+      ref->set_container_radius(R);
+      run->set_container_radius(R);
+    }
+    const long a = ref->step(plan.dt).hits, b = run->step(plan.dt).hits;
+    hits += a;
+    if (a != b) ++differing;
+  }
+  double worst = 0;
+  const auto& x = ref->system().particles;
+  const auto& y = run->system().particles;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    worst = std::max({worst, (x[i].r - y[i].r).norm(), (x[i].v - y[i].v).norm()});
+  std::printf("%-18s first %ld steps, %ld wall hits: %s; final states differ by %.2e\n",
+              "vs reference", steps, hits,
+              differing == 0 ? "the same hits in every step" : "HITS DIFFER", worst);
+  return differing == 0;
+}
+
+int expansion(const BenchOptions& o) {
+  const bool repulsive = o.workload == "fireball";
+  const long n = o.particles > 0 ? o.particles : 40000;
+  swarm::Preset preset = swarm::bench::expansion_preset(repulsive, n);
+  if (!o.preset_path.empty()) {
+    const swarm::PresetParse parsed = read_preset_file(o.preset_path);
+    if (!parsed.preset) {
+      std::fprintf(stderr, "swarmlab bench: %s\n", parsed.error.c_str());
+      return 2;
+    }
+    preset = swarm::bench::scaled(*parsed.preset, n);
+  }
+  const swarm::RunPlan plan = swarm::run_plan(preset);
+  std::printf("%-18s %s\n%-18s %ld particles, %ld steps of dt = %g, %s engine\n", "workload",
+              preset.name.c_str(), "", n, plan.steps, plan.dt, o.engine.c_str());
+  std::fflush(stdout);
+
+  const Clock::time_point start = Clock::now();
+  swarm::ProtocolRun run(make(o.engine, swarm::initial_system(preset), plan.engine), plan);
+  run.finish();
+  const double wall = seconds_since(start);
+  const swarm::RunSummary s = run.summary();
+
+  std::printf("%-18s %.3f s (set-up, all steps, P and T every step, samples every %ld)\n",
+              "wall time", wall, plan.sample_every);
+  std::printf("%-18s %.3g particle-steps per second\n", "throughput",
+              double(n) * double(plan.steps) / wall);
+  std::printf("%-18s %lld\n%-18s %.3e\n", "wall_hits", (long long)s.wall_hits, "energy_drift",
+              s.energy_drift);
+  print_work(run.engine());
+  print_memory(n);
+  std::printf("\n%6s %10s %14s %14s %10s\n", "stage", "R", "P", "T", "hits");
+  for (std::size_t i = 0; i < run.stages().size(); ++i) {
+    const swarm::Stage& st = run.stages()[i];
+    std::printf("%6zu %10.5f %14.6g %14.6g %10ld\n", i, st.R, st.P, st.T, st.hits);
+  }
+  const swarm::StageFits f = run.fits();
+  for (const auto& [name, fit] : {std::pair{"P-V", f.P_V}, {"T-V", f.T_V}, {"P-T", f.P_T}})
+    if (fit.valid) std::printf("fit %-4s exponent %+.4f  R^2 = %.4f\n", name, fit.slope, fit.r_squared);
+  if (o.compare_steps > 0 && !compare_with_reference(preset, o.engine, o.compare_steps)) return 1;
+  return 0;
+}
+
+int scale(const BenchOptions& o) {
+  const long n = o.particles > 0 ? o.particles : 1000000;
+  swarm::Preset preset = swarm::bench::expansion_preset(o.repulsive, n);
+  preset.expansion.reset();  // the first stage's fixed container
+  const Clock::time_point start = Clock::now();
+  swarm::System initial = swarm::initial_system(preset);
+  const double E0 = swarm::total_energy(initial);
+  auto engine = make(o.engine, std::move(initial), {preset.method, preset.collisions, 1.0});
+  const double setup = seconds_since(start);
+  long hits = 0;
+  for (long i = 0; i < o.steps; ++i) hits += engine->step(preset.dt).hits;
+  const double E1 = swarm::total_energy(engine->system());
+  const double wall = seconds_since(start);
+  std::printf("%-18s %s swarm, %ld particles, %ld steps of dt = %g in a fixed container, %s engine\n",
+              "workload", o.repulsive ? "repulsive" : "attractive", n, o.steps, preset.dt,
+              o.engine.c_str());
+  std::printf("%-18s %.3f s (of which %.3f s drawing the swarm and building the engine)\n",
+              "wall time", wall, setup);
+  std::printf("%-18s %.3g particle-steps per second\n", "throughput",
+              double(n) * double(o.steps) / (wall - setup));
+  std::printf("%-18s %ld\n%-18s %.3e\n", "wall_hits", hits, "energy_drift", (E1 - E0) / std::abs(E0));
+  print_work(*engine);
+  print_memory(n);
+  return 0;
+}
+
+}  // namespace
+
+CLI::App* add_bench_subcommand(CLI::App& app, BenchOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Time a headline workload: headline (the attractive expansion of Fig. 2, "
+               "N = 40,000, 500,000 steps), fireball (the same, repulsive), scale (N = 1,000,000)");
+  cmd->add_option("workload", o.workload, "headline, fireball or scale")
+      ->check(CLI::IsMember({"headline", "fireball", "scale"}));
+  cmd->add_option("--particles,-n", o.particles, "Particles (default 40,000; scale: 1,000,000)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--steps", o.steps, "scale: steps (default 10,000)")->check(CLI::PositiveNumber);
+  cmd->add_flag("--repulsive", o.repulsive, "scale: J < 0");
+  cmd->add_option("--engine", o.engine, "fast (the default engine) or reference (Appendix A as written)")
+      ->check(CLI::IsMember({"fast", "reference"}));
+  cmd->add_option("--preset", o.preset_path, "headline, fireball: run this preset, scaled to --particles")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--compare", o.compare_steps,
+                  "Afterwards, check the first STEPS steps against the reference engine, step by step")
+      ->check(CLI::NonNegativeNumber);
+  return cmd;
+}
+
+int bench_command(const BenchOptions& o) {
+  if (o.workload == "scale") return scale(o);
+  return expansion(o);
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,96 @@
+// swarm_bench: particle-steps per second of the fast and the reference (straightforward
+// Appendix A) engines on the paper's expansion presets, and of the O(N^2) pairwise
+// integrators, for N from 1,000 to 1,000,000; plus the fast engine's peak memory per particle.
+// Run: build-dir/bench/swarm_bench [--benchmark_filter=...] (see bench/RESULTS.md).
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "bench_workloads.h"
+#include "swarm/engine.h"
+#include "swarm/fast_engine.h"
+#include "swarm/integrators.h"
+
+namespace {
+
+using namespace swarm;
+
+/// One step per iteration of the given engine on the expansion preset with N = range(0),
+/// in its first stage (container radius 1). The engine is built, and its first step (which
+/// schedules every particle) taken, outside the timing.
+template <bool Fast, bool Repulsive>
+void BM_Engine(benchmark::State& state) {
+  const long n = long(state.range(0));
+  const Preset preset = bench::expansion_preset(Repulsive, n);
+  const RunPlan plan = run_plan(preset);
+  bench::reset_peak_memory();
+  const auto before = bench::current_memory();
+  std::unique_ptr<Engine> engine = Fast ? make_fast_engine(initial_system(preset), plan.engine)
+                                        : make_reference_engine(initial_system(preset), plan.engine);
+  engine->step(plan.dt);
+  long hits = 0;
+  for (auto _ : state) hits += engine->step(plan.dt).hits;
+  state.SetItemsProcessed(state.iterations() * n);
+  state.counters["hits/step"] = double(hits) / double(state.iterations());
+  const auto peak = bench::peak_memory();
+  if (before && peak) state.counters["B/particle"] = double(*peak - *before) / double(n);
+  state.SetLabel("particle-steps/s = items/s");
+}
+
+/// One step per iteration of a pairwise integrator, isolated system, N = range(0).
+template <Method M>
+void BM_Pairwise(benchmark::State& state) {
+  const long n = long(state.range(0));
+  System s = initial_system(bench::expansion_preset(false, n));
+  for (auto _ : state) step(M, s, 1e-3);
+  state.SetItemsProcessed(state.iterations() * n);
+  state.counters["steps/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+// Wall-clock time throughout: the fast engine and the pairwise forces use a second thread.
+// The fast engine's step cost does not grow with N (only the hits do); the reference's does.
+BENCHMARK(BM_Engine<true, false>)->Name("fast/attractive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Engine<true, true>)->Name("fast/repulsive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Engine<false, false>)->Name("reference/attractive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Engine<false, true>)->Name("reference/repulsive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+BENCHMARK(BM_Pairwise<Method::euler>)->Name("pairwise/euler")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Pairwise<Method::euler_cromer>)->Name("pairwise/euler-cromer")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Pairwise<Method::verlet>)->Name("pairwise/verlet")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Pairwise<Method::rk4>)->Name("pairwise/rk4")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The in-code presets must be the shipped ones, or the numbers measure something else.
+void check_presets_match_shipped() {
+#ifdef SWARM_PRESET_DIR
+  for (bool repulsive : {false, true}) {
+    const std::string path = std::string(SWARM_PRESET_DIR) +
+                             (repulsive ? "/fig3-repulsive-fireball.json" : "/fig2-attractive-expansion.json");
+    std::ifstream in(path);
+    if (!in) continue;
+    std::stringstream text;
+    text << in.rdbuf();
+    const PresetParse parsed = parse_preset(text.str());
+    if (!parsed.preset) continue;
+    Preset built = bench::expansion_preset(repulsive, 4000);
+    built.name = parsed.preset->name;
+    built.description = parsed.preset->description;
+    if (preset_to_json(built) != preset_to_json(*parsed.preset))
+      std::fprintf(stderr, "warning: %s differs from the benchmark's built-in preset\n", path.c_str());
+  }
+#endif
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  check_presets_match_shipped();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
