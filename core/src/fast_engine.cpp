@@ -75,15 +75,17 @@ inline void prefetch(const void* p) {
 
 // [SECTION] State
 
-/// Everything the scheduler touches for one particle, together: a check is then one or two
-/// cache lines, fetched ahead of time (the ids due in a step are known in advance).
+/// Everything the scheduler touches for one particle, together (80 bytes): a check is then
+/// one or two cache lines, fetched ahead of time (the ids due in a step are known in advance).
 struct Body {
   Vec3 a, b;  ///< y_i(tau) = c(tau) a + s(tau) b: the free oscillation about the CM path
   double m;
   StepIndex due;        ///< the step in whose bucket the particle waits, or kParked
-  fast::Window window;  ///< valid in the particle's frame until its next hit
-  bool window_known;
+  fast::Window window;  ///< valid in the particle's frame until its next hit; NaN: unknown
 };
+
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+static_assert(sizeof(Body) == 80, "a Body should stay within 80 bytes");
 
 /// A choice of the y_i (they change at every re-base). Schedules made in it assume that the
 /// shared offset o = r_i - y_i satisfies |o| <= margin at every step end. After re-bases,
@@ -136,7 +138,7 @@ class FastEngine final : public Engine {
     orbits_.resize(initial.particles.size());
     for (std::size_t i = 0; i < orbits_.size(); ++i) {
       const Particle& p = initial.particles[i];
-      orbits_[i] = {p.r - R_cm_, p.v - V_cm_, p.m, kParked, {}, false};
+      orbits_[i] = {p.r - R_cm_, p.v - V_cm_, p.m, kParked, {kUnknown, kUnknown}};
     }
     frame_of_.assign(orbits_.size(), 0);
     lane_split_ = orbits_.size() / 2;
@@ -260,7 +262,7 @@ class FastEngine final : public Engine {
           // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv.
           o.a -= d.f0.s * dv;
           o.b += d.f0.c * dv;
-          o.window_known = false;
+          o.window.first = kUnknown;
           lane.kick += (o.m / M_) * dv;
         }
       }
@@ -555,9 +557,8 @@ class FastEngine final : public Engine {
     StepIndex due = first;
     if (T > 0) {
       // The window depends only on y_i and the frame's threshold: computed once per hit or frame.
-      if (!o.window_known || !same_frame) {
+      if (std::isnan(o.window.first) || !same_frame) {
         o.window = fast::window_of(o.a, o.b, k_, T * T);
-        o.window_known = true;
       }
       const double steps = fast::steps_to_window(o.window, clock_[first - step_]);
       if (steps == std::numeric_limits<double>::infinity()) {
