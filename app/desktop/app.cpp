@@ -102,12 +102,12 @@ void App::advance_simulation(double seconds) {
     s.step_debt -= wanted;
     steps = long(std::min(wanted, 1e9));
     if (!s.fixed_frame_time)
-      steps = std::min(steps, std::max(1L, long(kStepBudgetMs / std::max(step_ms_, 1e-6))));
+      steps = std::min(steps, std::max(1L, long(kStepBudgetMs / std::max(s.stats.step_ms, 1e-6))));
   }
   const Clock::time_point start = Clock::now();
   const long taken = steps > 0 ? s.run->advance(steps) : 0;
   const double ms = milliseconds_since(start);
-  if (taken > 0) smooth(step_ms_, ms / double(taken));
+  if (taken > 0) smooth(s.stats.step_ms, ms / double(taken));
   smooth(s.stats.simulation_ms, ms);
   if (wanted >= 1)
     smooth(s.stats.speed_ratio, double(steps) / wanted);
@@ -158,7 +158,7 @@ void App::layout_windows() {
 
   if (s.layout.controls) {
     ImGui::SetNextWindowPos(ImVec2(left, top));
-    ImGui::SetNextWindowSize(ImVec2(std::min(21 * font, 0.3f * viewport->Size.x), height),
+    ImGui::SetNextWindowSize(ImVec2(std::min(22 * font, 0.3f * viewport->Size.x), height),
                              s.layout.resize_panels ? ImGuiCond_Always : ImGuiCond_Appearing);
     ImGui::SetNextWindowSizeConstraints(
         ImVec2(std::min(15 * font, 0.2f * viewport->Size.x), height), ImVec2(40 * font, height));

@@ -44,7 +44,6 @@ class App {
   bool quit_ = false;
   bool dragging_ = false;
   float drag_distance_ = 0;
-  double step_ms_ = 0.05;  // smoothed cost of one step of every method, for the time budget
 };
 
 }  // namespace swarmlab

@@ -47,6 +47,7 @@ struct Layout {
 /// Frame timing, smoothed, in milliseconds.
 struct FrameStats {
   double frame_ms = 16, simulation_ms = 0, scene_ms = 0;
+  double step_ms = 0.05;   ///< one step of every method run side by side
   double speed_ratio = 1;  ///< simulated speed achieved / requested (< 1: the budget ran out)
   long frames = 0;
 };

@@ -15,6 +15,8 @@ constexpr std::size_t kTrailPoints = 600;
 }  // namespace
 
 LiveRun::LiveRun(const swarm::Preset& preset) : preset_(preset) {
+  static long runs_made = 0;
+  id_ = ++runs_made;
   const swarm::System initial = swarm::initial_system(preset);
   const swarm::RunPlan plan = swarm::run_plan(preset);
   primary_ = std::make_unique<swarm::ProtocolRun>(initial, plan);

@@ -36,6 +36,8 @@ class LiveRun {
   bool finished() const { return primary_->finished(); }
 
   const swarm::Preset& preset() const { return preset_; }
+  /// Different for every LiveRun ever made: caches of derived data key on it.
+  long id() const { return id_; }
   swarm::ProtocolRun& primary() { return *primary_; }
   const swarm::System& system() { return primary_->engine().system(); }
   double time() { return primary_->engine().time(); }
@@ -62,6 +64,7 @@ class LiveRun {
   void record_errors();
   void record_trails();
 
+  long id_;
   swarm::Preset preset_;
   std::unique_ptr<swarm::ProtocolRun> primary_;
   std::vector<std::unique_ptr<swarm::ProtocolRun>> compared_;

@@ -41,7 +41,7 @@ ImU32 colour_of(swarm::Method m) {
 /// The sample series of the primary run, with P and T averaged over a trailing time window.
 /// Rebuilt only when a sample arrives or the window changes.
 struct SampleSeries {
-  const LiveRun* run = nullptr;
+  long run = 0;  // LiveRun::id()
   std::size_t count = 0;
   double window = -1;
   std::vector<double> t, P, T, P_mean, T_mean;  // from the second sample on
@@ -49,8 +49,8 @@ struct SampleSeries {
 
   void update(LiveRun& live, double average_window) {
     const auto& samples = live.primary().samples();
-    if (run == &live && count == samples.size() && window == average_window) return;
-    run = &live;
+    if (run == live.id() && count == samples.size() && window == average_window) return;
+    run = live.id();
     count = samples.size();
     window = average_window;
     for (auto* v : {&t, &P, &T, &P_mean, &T_mean, &t_all, &KE, &PE, &E, &drift}) v->clear();

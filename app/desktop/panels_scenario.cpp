@@ -14,8 +14,10 @@ void show_refusal(AppState& state, Section section) {
   ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
   ImGui::PopStyleColor();
   if (ImGui::SmallButton("Undo the edit")) state.revert_draft();
-  ImGui::SameLine();
-  ImGui::TextDisabled("(the run goes on with the last valid values)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Show the running values again. Until then the run goes on with the "
+        "last valid preset.");
 }
 
 void help_marker(const char* text) {

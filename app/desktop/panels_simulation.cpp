@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -94,6 +95,18 @@ void draw_simulation_panel(AppState& state) {
   ImGui::Separator();
   const swarm::RunPlan& plan = state.run->primary().plan();
   ImGui::TextDisabled("%ld steps, a sample every %ld steps", plan.steps, plan.sample_every);
+  ImGui::TextDisabled("one step: %.3g ms", state.stats.step_ms);
+  const bool pairwise =
+      swarm::is_pairwise(state.preset.method) ||
+      std::any_of(state.preset.compare.begin(), state.preset.compare.end(), swarm::is_pairwise);
+  if (pairwise && state.run->system().particles.size() > 2000) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.35f, 1.0f));
+    ImGui::TextWrapped(
+        "The numerical methods sum over all %zu^2 / 2 pairs every step: expect a "
+        "slow simulation. The analytic method is O(N).",
+        state.run->system().particles.size());
+    ImGui::PopStyleColor();
+  }
 }
 
 void draw_transport_bar(AppState& state) {

@@ -63,7 +63,7 @@ void draw_table(AppState& state, ParticleList& list) {
   std::optional<std::size_t> remove;
   if (ImGui::BeginTable("particles", 4, flags)) {
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
-    ImGui::TableSetupColumn("m", ImGuiTableColumnFlags_WidthStretch, 0.8f);
+    ImGui::TableSetupColumn("m", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("r (x, y, z)", ImGuiTableColumnFlags_WidthStretch, 2.5f);
     ImGui::TableSetupColumn("v (x, y, z)", ImGuiTableColumnFlags_WidthStretch, 2.5f);
     ImGui::TableHeadersRow();
