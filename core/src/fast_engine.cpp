@@ -113,6 +113,7 @@ struct StepData {
   Flow f0, f1;
   Vec3 o0, o0v, o1;
   double R2;
+  double determinant;  ///< c^2 - dc s of f0, 1 up to rounding
 };
 
 /// Flow values and the predicted shared offset at the end of the next few steps.
@@ -174,6 +175,7 @@ class FastEngine final : public Engine {
     d.f1 = Flow::over(k_, tau_ + dt);
     d.o1 = offset_at(d.f1, dt);
     d.R2 = *config_.container_radius * *config_.container_radius;
+    d.determinant = d.f0.c * d.f0.c - d.f0.dc() * d.f0.s;
     expire_violated_frames(d.f1, d.o1);
 
     std::size_t pending = 0;
@@ -259,9 +261,13 @@ class FastEngine final : public Engine {
         const Vec3 v0 = d.f0.dc() * o.a + d.f0.c * o.b + d.o0v;
         if (v0.dot(r0) > 0) {
           const Vec3 dv = reflect(o.m, r0, v0, lane.tally);
-          // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv.
-          o.a -= d.f0.s * dv;
-          o.b += d.f0.c * dv;
+          // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv. The
+          // flow's determinant c^2 + k s^2 is 1 only up to rounding, which for J < 0 (cosh^2 -
+          // sinh^2) is a bias of its own: dividing by its computed value keeps the evaluated
+          // velocity jump dv, and the energy, unbiased.
+          const Vec3 jump = dv / d.determinant;
+          o.a -= d.f0.s * jump;
+          o.b += d.f0.c * jump;
           o.window.first = kUnknown;
           lane.kick += (o.m / M_) * dv;
         }
