@@ -65,7 +65,6 @@ void OrbitCamera::update(const ViewRect& rect) {
 ScreenPoint OrbitCamera::project(const Eigen::Vector3f& p, const ViewRect& rect) const {
   const Eigen::Vector4f clip = view_projection_ * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
   ScreenPoint out;
-  out.depth = clip.w();
   out.visible = clip.w() > 1e-6f;
   if (!out.visible) return out;
   out.x = rect.x + (0.5f + 0.5f * clip.x() / clip.w()) * rect.width;

@@ -18,7 +18,6 @@ struct ViewRect {
 /// A point of the scene on the screen.
 struct ScreenPoint {
   float x = 0, y = 0;
-  float depth = 0;       ///< distance along the view direction
   bool visible = false;  ///< in front of the camera
 };
 
@@ -36,7 +35,6 @@ class OrbitCamera {
   void set_target(const Eigen::Vector3f& target) { target_ = target; }
   /// Height of the eye above the x-y plane, radians (0: level, pi/2: looking straight down).
   void set_elevation(float radians);
-  const Eigen::Vector3f& target() const { return target_; }
 
   Eigen::Vector3f eye() const;
   Eigen::Matrix4f view() const;

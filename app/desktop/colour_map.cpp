@@ -5,18 +5,6 @@
 
 namespace swarmlab {
 
-const char* name_of(ColourBy c) {
-  switch (c) {
-    case ColourBy::speed:
-      return "speed";
-    case ColourBy::mass:
-      return "mass";
-    case ColourBy::energy:
-      return "energy";
-  }
-  return "";
-}
-
 const char* legend_title(ColourBy c) {
   switch (c) {
     case ColourBy::speed:

@@ -10,7 +10,6 @@ namespace swarmlab {
 
 enum class ColourBy { speed, mass, energy };
 
-const char* name_of(ColourBy c);
 /// The quantity with its symbol and unit, for the legend.
 const char* legend_title(ColourBy c);
 

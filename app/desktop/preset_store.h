@@ -13,8 +13,7 @@ namespace swarmlab {
 
 /// A preset that ships with the app, for the scenario list.
 struct ShippedPreset {
-  std::string id;        ///< file name, e.g. "fig1-four-masses.json"
-  std::string location;  ///< what open() and save() take for it (a path on the desktop)
+  std::string id;  ///< file name, e.g. "fig1-four-masses.json"
   swarm::Preset preset;
 };
 

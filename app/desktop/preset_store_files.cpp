@@ -20,8 +20,7 @@ class FilePresetStore final : public PresetStore {
       // A shipped preset that fails validation is left out of the list rather than shown
       // broken; the CLI test suite catches it.
       swarm::PresetParse parsed = read_preset_file(entry.path().string());
-      if (parsed.preset)
-        out.push_back({entry.path().filename().string(), entry.path().string(), *parsed.preset});
+      if (parsed.preset) out.push_back({entry.path().filename().string(), *parsed.preset});
     }
     std::sort(out.begin(), out.end(),
               [](const ShippedPreset& a, const ShippedPreset& b) { return a.id < b.id; });
