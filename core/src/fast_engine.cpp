@@ -520,7 +520,7 @@ class FastEngine final : public Engine {
   // [SECTION] Scheduling
 
   /// The flow and the predicted offset at the ends of steps step_ .. step_ + kLookahead, from
-  /// the state before this step's hits; and the time the window search starts from.
+  /// the state before this step's hits; and the times the window searches start from.
   void fill_ahead() {
     if (dt_ != ahead_dt_) {
       // How far the offset at those step ends can move away from the prediction, given the
@@ -540,12 +540,13 @@ class FastEngine final : public Engine {
       f.c = c;
       f.s = s;
     }
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < 3; ++j) {
       fast::Clock& c = clock_[j];
+      const int steps_ahead = j < 2 ? j : kLookahead + 1;
       c.k = k_;
       c.two_rate = two_rate_;
       c.dt = dt_;
-      c.tau = tau_ + (j + 1) * dt_;
+      c.tau = tau_ + (steps_ahead + 1) * dt_;
       c.E = k_ < 0 ? std::exp(two_rate_ * c.tau) : 1.0;
     }
     const double Rw = *config_.container_radius;
@@ -560,24 +561,33 @@ class FastEngine final : public Engine {
     frame_of_[i] = current_.id;
     const double Rw = *config_.container_radius;
     const double T = Rw - current_.margin;
-    StepIndex due = first;
-    if (T > 0) {
-      // The window depends only on y_i and the frame's threshold: computed once per hit or frame.
-      if (std::isnan(o.window.first) || !same_frame) {
-        o.window = fast::window_of(o.a, o.b, k_, T * T);
-      }
-      const double steps = fast::steps_to_window(o.window, clock_[first - step_]);
-      if (steps == std::numeric_limits<double>::infinity()) {
-        o.due = kParked;  // until its frame expires
-        return;
-      }
-      // A thousandth of a step covers the rounding of the closed forms.
-      due = first + StepIndex(std::clamp(std::floor(steps - 1e-3), 0.0, double(kHorizon)));
+    // The window depends only on y_i and the frame's threshold: computed once per hit or frame.
+    if (T > 0 && (std::isnan(o.window.first) || !same_frame))
+      o.window = fast::window_of(o.a, o.b, k_, T * T);
+    StepIndex due = window_step(o, T, first, clock_[first - step_]);
+    if (due <= step_ + kLookahead) {
+      due = look_ahead(o, due);
+      // Nothing within the lookahead (typically just after a hit, on the way in): carry on
+      // with the window from the first step after it rather than checking there.
+      if (due == step_ + kLookahead + 1) due = window_step(o, T, due, clock_[2]);
     }
-    if (due <= step_ + kLookahead) due = look_ahead(o, due);
+    if (due == kParked) {
+      o.due = kParked;  // until its frame expires
+      return;
+    }
     due = std::min(due, step_ + kHorizon);
     o.due = due;
     enqueue(i, due);
+  }
+
+  /// The first step >= first at whose end |y| can be >= T (the frame's wall threshold), or
+  /// kParked; clock is the time at the end of step `first`.
+  StepIndex window_step(const Body& o, double T, StepIndex first, const fast::Clock& clock) const {
+    if (T <= 0) return first;
+    const double steps = fast::steps_to_window(o.window, clock);
+    if (steps == std::numeric_limits<double>::infinity()) return kParked;
+    // A thousandth of a step covers the rounding of the closed forms.
+    return first + StepIndex(std::clamp(std::floor(steps - 1e-3), 0.0, double(kHorizon)));
   }
 
   /// The first step from `from` to step_ + kLookahead whose predicted end position can be
@@ -652,7 +662,8 @@ class FastEngine final : public Engine {
   std::vector<Frame> old_frames_;
   std::uint8_t next_frame_id_ = 0;
   bool schedule_all_pending_ = true, rebase_pending_ = false;
-  fast::Clock clock_[2];
+  // The ends of steps step_, step_ + 1 and step_ + kLookahead + 1.
+  fast::Clock clock_[3];
   std::array<Ahead, kLookahead + 1> ahead_{};
   double lookahead_slack_ = 0;
   double ahead_dt_ = 0, kick_drift_ = 0;
