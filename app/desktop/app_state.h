@@ -2,6 +2,7 @@
 // What the window shows and edits: the preset being run, the edited draft of it, the live run,
 // the camera and the display options. Panels read and change this; app.cpp draws it.
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -69,6 +70,9 @@ struct AppState {
   std::string shipped_id;  ///< the shipped preset opened last, empty after opening a file
   std::string status;      ///< last open or save result
   bool status_is_error = false;
+  /// Draws the scenario panel's storage controls in place of the path field with Open and
+  /// Save, when set: the browser build's Open preset, Download preset and Copy link.
+  std::function<void(AppState&)> storage_controls;
 
   std::unique_ptr<LiveRun> run;
   bool playing = true;

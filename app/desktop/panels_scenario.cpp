@@ -71,34 +71,38 @@ void draw_scenario_panel(AppState& state) {
   }
 
   ImGui::Spacing();
-  ImGui::SetNextItemWidth(-1);
-  ImGui::InputTextWithHint("##location", state.store->location_hint(), &state.location);
-  if (ImGui::Button("Open")) {
-    const swarm::PresetParse parsed = state.store->open(state.location);
-    if (parsed.preset) {
-      state.open(*parsed.preset, state.location);
-      state.status = "Opened " + state.location;
-      state.status_is_error = false;
-    } else {
-      state.status = parsed.error;
-      state.status_is_error = true;
+  if (state.storage_controls) {
+    state.storage_controls(state);
+  } else {
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputTextWithHint("##location", state.store->location_hint(), &state.location);
+    if (ImGui::Button("Open")) {
+      const swarm::PresetParse parsed = state.store->open(state.location);
+      if (parsed.preset) {
+        state.open(*parsed.preset, state.location);
+        state.status = "Opened " + state.location;
+        state.status_is_error = false;
+      } else {
+        state.status = parsed.error;
+        state.status_is_error = true;
+      }
     }
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("Save")) {
-    const std::string error =
-        state.store->save(state.location, swarm::preset_to_json(state.preset));
-    state.status = error.empty() ? "Saved " + state.location : error;
-    state.status_is_error = !error.empty();
-    if (error.empty()) {
-      state.origin = state.preset;
-      state.modified = false;
+    ImGui::SameLine();
+    if (ImGui::Button("Save")) {
+      const std::string error =
+          state.store->save(state.location, swarm::preset_to_json(state.preset));
+      state.status = error.empty() ? "Saved " + state.location : error;
+      state.status_is_error = !error.empty();
+      if (error.empty()) {
+        state.origin = state.preset;
+        state.modified = false;
+      }
     }
+    help_marker(
+        "Open reads a preset file; Save writes the running preset (every edit you made) as a "
+        "preset file that 'swarmlab run' and the browser run identically. Files are written "
+        "whole or not at all.");
   }
-  help_marker(
-      "Open reads a preset file; Save writes the running preset (every edit you made) as a "
-      "preset file that 'swarmlab run' and the browser run identically. Files are written "
-      "whole or not at all.");
   if (!state.status.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, state.status_is_error ? ImVec4(1, 0.45f, 0.4f, 1)
                                                                : ImVec4(0.55f, 0.9f, 0.6f, 1));
