@@ -281,8 +281,8 @@ class FastEngine final : public Engine {
 
 #ifndef __EMSCRIPTEN__
   bool start_worker() {
+    if (thread_limit() < 2) return false;
     if (worker_.joinable()) return true;
-    if (std::thread::hardware_concurrency() < 2) return false;
     worker_ = std::thread([this] { worker_loop(); });
     return true;
   }
@@ -688,6 +688,24 @@ class FastEngine final : public Engine {
 };
 
 }  // namespace
+
+namespace {
+#ifndef __EMSCRIPTEN__
+std::atomic<int> g_thread_limit{std::thread::hardware_concurrency() >= 2 ? 2 : 1};
+#else
+int g_thread_limit = 1;
+#endif
+}  // namespace
+
+void set_thread_limit(int threads) {
+#ifndef __EMSCRIPTEN__
+  g_thread_limit = std::clamp(threads, 1, 2);
+#else
+  (void)threads;
+#endif
+}
+
+int thread_limit() { return g_thread_limit; }
 
 bool fast_engine_applies(const EngineConfig& config) {
   return config.method == Method::analytic && config.collisions == CollisionMode::paper;

@@ -4,6 +4,7 @@
 #include <thread>
 #endif
 
+#include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
 
 // The accumulators never alias the positions: telling the compiler lets it vectorise the
@@ -76,7 +77,7 @@ void pairwise_accelerations(const System& s, std::vector<Vec3>& a) {
     add_rows(c, begin, end, acc.data(), acc.data() + n, acc.data() + 2 * n);
   };
 #ifndef __EMSCRIPTEN__
-  if (n >= kThreadedPairs && std::thread::hardware_concurrency() >= 2) {
+  if (n >= kThreadedPairs && thread_limit() >= 2) {
     std::thread helper([&] { block(second, split, n); });
     block(first, 0, split);
     helper.join();

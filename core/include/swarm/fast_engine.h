@@ -54,4 +54,10 @@ struct FastEngineStats {
 /// The counters of engine if it is a fast engine, else nothing.
 std::optional<FastEngineStats> fast_engine_stats(const Engine& engine);
 
+/// How many threads the fast engine and the pairwise forces may use: 2 by default where
+/// the platform has threads and at least two cores, 1 in the browser. Results do not depend
+/// on it (sums are combined in a fixed order); benchmarks set it to compare like with like.
+void set_thread_limit(int threads);
+int thread_limit();
+
 }  // namespace swarm

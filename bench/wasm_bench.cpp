@@ -1,0 +1,76 @@
+// The same workloads timed natively and as WebAssembly under node (bench/wasm_bench.sh builds
+// and runs both): plain C++ with a steady clock, since Google Benchmark is not built for wasm.
+// Usage: wasm_bench [threads]   (native only: 1 or 2; wasm always runs one thread)
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+
+#include "bench_workloads.h"
+#include "swarm/engine.h"
+#include "swarm/fast_engine.h"
+#include "swarm/integrators.h"
+#include "swarm/protocol.h"
+
+namespace {
+
+using namespace swarm;
+
+double seconds(const std::function<void()>& work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The expansion preset with N particles for its first `stages` stages (all 50: the headline).
+double expansion(bool repulsive, long n, long stages, long* hits) {
+  Preset p = bench::expansion_preset(repulsive, n);
+  p.expansion->stages = stages;
+  const RunPlan plan = run_plan(p);
+  return seconds([&] {
+    ProtocolRun run(make_engine(initial_system(p), plan.engine), plan);
+    run.finish();
+    *hits = run.summary().wall_hits;
+  });
+}
+
+double engine_steps(bool fast, long n, long steps, long* hits) {
+  Preset p = bench::expansion_preset(false, n);
+  System s = initial_system(p);
+  const EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
+  return seconds([&] {
+    auto e = fast ? make_fast_engine(std::move(s), config) : make_reference_engine(std::move(s), config);
+    *hits = 0;
+    for (long i = 0; i < steps; ++i) *hits += e->step(p.dt).hits;
+  });
+}
+
+double pairwise(Method m, long n, long steps) {
+  System s = initial_system(bench::expansion_preset(false, n));
+  return seconds([&] {
+    for (long i = 0; i < steps; ++i) step(m, s, 1e-3);
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc > 1) set_thread_limit(std::atoi(argv[1]));
+  std::printf("threads %d\n", thread_limit());
+  long hits = 0;
+  double t = expansion(false, 40000, 50, &hits);
+  std::printf("%-44s %8.3f s  %ld hits\n", "headline: attractive N=40000, 500000 steps", t, hits);
+  t = expansion(true, 40000, 5, &hits);
+  std::printf("%-44s %8.3f s  %ld hits\n", "fireball: repulsive N=40000, first 50000 steps", t, hits);
+  t = engine_steps(true, 1000000, 1000, &hits);
+  std::printf("%-44s %8.3f s  %ld hits\n", "fast: N=1000000, 1000 steps", t, hits);
+  t = engine_steps(false, 40000, 1000, &hits);
+  std::printf("%-44s %8.3f s  %ld hits\n", "reference: N=40000, 1000 steps", t, hits);
+  for (Method m : {Method::euler, Method::euler_cromer, Method::verlet, Method::rk4}) {
+    t = pairwise(m, 2000, 20);
+    std::printf("pairwise %-13s N=2000, 20 steps           %8.3f s  %.1f steps/s\n",
+                std::string(name_of(m)).c_str(), t, 20 / t);
+  }
+  return 0;
+}
