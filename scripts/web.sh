@@ -5,8 +5,8 @@
 #   scripts/web.sh --lan         build, then serve on all interfaces (0.0.0.0:8080) for a classroom
 #   scripts/web.sh --port N      another port (also: PORT=N)
 # The first run prepares SDL2/ImGui for wasm (scripts/web-deps.sh, a few minutes, needs root for
-# apt-get); later runs only rebuild what changed. Environment: SWARMLAB_WEB_SOURCES (see
-# web/CMakeLists.txt), WEB_JOBS (parallel compile jobs, default 2).
+# apt-get); later runs only rebuild what changed. Environment: WEB_JOBS (parallel compile jobs,
+# default 2).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -39,8 +39,7 @@ if command -v flock >/dev/null; then exec 9>build/.web-build.lock; flock 9; fi
 generator=()
 if [ ! -f "$bdir/CMakeCache.txt" ] && command -v ninja >/dev/null; then generator=(-G Ninja); fi
 say "configuring ($bdir)"
-emcmake cmake -S web -B "$bdir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release \
-  -DSWARMLAB_WEB_SOURCES="${SWARMLAB_WEB_SOURCES:-}" >"$root/build/web-configure.log" 2>&1 \
+emcmake cmake -S web -B "$bdir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >"$root/build/web-configure.log" 2>&1 \
   || { cat "$root/build/web-configure.log" >&2; say "configure failed"; exit 1; }
 say "building with -j$jobs"
 nice cmake --build "$bdir" -j"$jobs"

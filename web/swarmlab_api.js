@@ -1,33 +1,178 @@
-// window.swarmlab: the page's JS API, linked into swarmlab.js with --post-js.
-// It wraps functions the C++ app must export (extern "C" + EMSCRIPTEN_KEEPALIVE; the link
-// fails if one is missing, see SWARMLAB_WEB_EXPORTS in web/CMakeLists.txt):
-//   double      swarmlab_time()                 -> swarmlab.time()      simulated clock (number)
-//   const char* swarmlab_preset()               -> swarmlab.preset()    current preset (object, from JSON)
-//   const char* swarmlab_load(const char* json) -> swarmlab.load(json)  json: string or object;
-//                                                 returns true, throws Error(message) if rejected
-// and adds, independent of the app:
-//   swarmlab.ready          Promise resolved once main() has started
-//   swarmlab.frames()       number of frames the main loop has run (requestAnimationFrame callbacks)
-//   swarmlab.firstFrameMs   performance.now() at the end of the first frame (ms since navigation), or null
+// window.swarmlab: the JS API for pages that embed Swarm Lab (a course page, a test), linked
+// into swarmlab.js with --post-js after share_link.js. It wraps the C functions of
+// web/js_api.cpp:
+//   swarmlab.time()        the simulated time of the running preset (a number)
+//   swarmlab.preset()      the running preset, every edit included, as a JSON string
+//   swarmlab.load(json)    opens a preset (a JSON string, or an object); returns true, or, if
+//                          it fails validation, keeps the running preset, shows the message in
+//                          the scenario panel and on the page, and throws Error(message); the
+//                          message is the CLI's, e.g. "swarmlab.load(): dt: must be > 0"
+//   swarmlab.link()        Promise of a share link to the running preset (#z=... or #preset=...)
+//   swarmlab.copyLink()    the Copy link button: puts that link in the address bar and on the
+//                          clipboard, and shows it on the page; Promise of the link
+//   swarmlab.openLink(hash) opens the preset of a fragment; Promise of "" or the error message
+//   swarmlab.openFile()    the Open preset... button: a file picker, then as load()
+//   swarmlab.download()    the Download preset button; returns the file name
+//   swarmlab.ready         Promise resolved once main() has started (and a start link is open)
+//   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks)
+//   swarmlab.firstFrameMs  performance.now() at the end of the first frame, or null
+//   swarmlab.lastMessage   the last message shown on the page: { kind, text } or null
+// A page that opens with a share link starts its preset (decoded before main() runs). A link
+// that cannot be decoded or fails validation leaves the default preset running and says why.
 (function () {
+  'use strict';
   var frames = 0;
+  var startLink = null; // what the address's share link decoded to, until main() opens it
+
+  function check() {
+    if (!runtimeInitialized || !Module.swarmlabMainStarted)
+      throw new Error('swarmlab: the app has not started yet (await swarmlab.ready)');
+  }
+
+  function presetText(indent) { return Module.ccall('swarmlab_preset', 'string', ['number'], [indent]); }
+
+  function setStatus(text, isError) {
+    Module.ccall('swarmlab_set_status', null, ['string', 'number'], [text, isError ? 1 : 0]);
+  }
+
+  function runningName() {
+    try { return JSON.parse(presetText(-1)).name || 'the previous preset'; } catch (e) { return 'the previous preset'; }
+  }
+
+  // The page's message line (web/shell.html has #notice; a page without it gets the console).
+  function notice(kind, text, link) {
+    api.lastMessage = { kind: kind, text: text };
+    (kind === 'error' ? console.warn : console.log)('swarmlab: ' + text + (link ? ' ' + link : ''));
+    if (typeof Module.showNotice === 'function') Module.showNotice(kind, text, link || '');
+  }
+
+  // Opens JSON text in the app. Returns '' or the error message (shown in the UI and the page).
+  function openJson(text, source, location) {
+    var error = Module.ccall('swarmlab_open_json', 'string', ['string', 'string', 'string'],
+                             [String(text), source, location]);
+    if (error) notice('error', error + ' \u2014 still running: \u201c' + runningName() + '\u201d.');
+    else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
+    return error;
+  }
+
+  // { json } or { error } from SwarmlabLink.read, into the app. Returns '' or the message.
+  function openLinkResult(result) {
+    if (result.error) {
+      setStatus(result.error, true);
+      notice('error', result.error + ' \u2014 still running: \u201c' + runningName() + '\u201d.');
+      return result.error;
+    }
+    return openJson(result.json, 'share link', 'shared-preset.json');
+  }
+
+  function copyText(text) { // Promise: true when on the clipboard
+    function fallback() {
+      var area = document.createElement('textarea');
+      area.value = text;
+      area.setAttribute('readonly', '');
+      area.style.position = 'fixed';
+      area.style.opacity = '0';
+      document.body.appendChild(area);
+      area.select();
+      var ok = false;
+      try { ok = document.execCommand('copy'); } catch (e) { ok = false; }
+      area.remove();
+      if (Module.canvas) Module.canvas.focus();
+      return ok;
+    }
+    // navigator.clipboard exists only in secure contexts (https, localhost); a classroom LAN
+    // address is plain http, where the old execCommand('copy') still works after a click.
+    if (navigator.clipboard && window.isSecureContext) {
+      return navigator.clipboard.writeText(text).then(function () { return true; }, fallback);
+    }
+    return Promise.resolve(fallback());
+  }
+
+  function pageAddress() { return location.href.split('#')[0]; }
+
   var api = {
     firstFrameMs: null,
+    lastMessage: null,
     frames: function () { return frames; },
     time: function () { check(); return Module.ccall('swarmlab_time', 'number', [], []); },
-    preset: function () { check(); return JSON.parse(Module.ccall('swarmlab_preset', 'string', [], [])); },
+    preset: function () { check(); return presetText(2); },
     load: function (json) {
       check();
       var text = typeof json === 'string' ? json : JSON.stringify(json);
-      var error = Module.ccall('swarmlab_load', 'string', ['string'], [text]);
-      if (error) throw new Error('swarmlab.load: ' + error);
+      var error = openJson(text, 'swarmlab.load()', 'preset.json');
+      if (error) throw new Error(error);
       return true;
     },
+    link: function () {
+      check();
+      return SwarmlabLink.fragment(presetText(-1)).then(function (f) { return pageAddress() + f; });
+    },
+    copyLink: function () {
+      return api.link().then(function (url) {
+        history.replaceState(null, '', url); // the address bar shows it too; no reload
+        return copyText(url).then(function (copied) {
+          var what = copied ? 'Link copied to the clipboard' : 'Copy this link';
+          setStatus(what + (copied ? ' (' + url.length + ' characters)' : ' from the page or the address bar'), false);
+          notice('link', what + ': whoever opens it starts \u201c' + runningName() + '\u201d.', url);
+          return url;
+        });
+      });
+    },
+    openLink: function (hash) {
+      check();
+      var pending = SwarmlabLink.read(hash);
+      if (!pending) return Promise.resolve('share link: no #preset= or #z= in "' + hash + '"');
+      return pending.then(openLinkResult);
+    },
+    openFile: function () {
+      check();
+      var input = document.createElement('input');
+      input.type = 'file';
+      input.accept = '.json,application/json';
+      input.style.display = 'none';
+      input.addEventListener('change', function () {
+        var file = input.files && input.files[0];
+        input.remove();
+        if (file) file.text().then(function (text) { openJson(text, file.name, file.name); });
+      });
+      document.body.appendChild(input);
+      input.click();
+    },
+    download: function () { check(); return Module.ccall('swarmlab_download', 'string', [], []); },
   };
-  function check() {
-    if (!runtimeInitialized) throw new Error('swarmlab: the app has not started yet (await swarmlab.ready)');
+
+  // A share link in the address: decode it (deflate is asynchronous) before main() runs.
+  if (typeof location !== 'undefined') {
+    var pending = SwarmlabLink.read(location.hash);
+    if (pending) {
+      addRunDependency('swarmlab-share-link');
+      pending.then(function (result) {
+        startLink = result;
+        removeRunDependency('swarmlab-share-link');
+      });
+    }
   }
+  // Called by main() once the app exists, before the first frame.
+  Module.swarmlabStarted = function () {
+    Module.swarmlabMainStarted = true;
+    if (startLink) openLinkResult(startLink);
+    startLink = null;
+  };
   api.ready = new Promise(function (resolve) { addOnPostRun(function () { resolve(api); }); });
+
+  if (typeof window !== 'undefined') {
+    // A link pasted into the address bar of an open page changes only the fragment.
+    window.addEventListener('hashchange', function () {
+      if (Module.swarmlabMainStarted && SwarmlabLink.read(location.hash)) api.openLink(location.hash);
+    });
+    // A preset file dropped on the page opens like Open preset.
+    window.addEventListener('dragover', function (e) { e.preventDefault(); });
+    window.addEventListener('drop', function (e) {
+      e.preventDefault();
+      var file = e.dataTransfer && e.dataTransfer.files && e.dataTransfer.files[0];
+      if (file && Module.swarmlabMainStarted) file.text().then(function (text) { openJson(text, file.name, file.name); });
+    });
+  }
 
   // Count main-loop frames: emscripten_set_main_loop(..., fps = 0, ...) runs on requestAnimationFrame.
   if (typeof window !== 'undefined' && window.requestAnimationFrame) {

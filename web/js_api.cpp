@@ -1,0 +1,85 @@
+// The C side of window.swarmlab (web/swarmlab_api.js calls these through ccall), and the
+// opening and downloading of presets that the API and the scenario panel's buttons share.
+
+#include <emscripten.h>
+
+#include <string>
+
+#include "web_app.h"
+#include "web_preset_store.h"
+
+namespace swarmlab {
+
+std::string open_preset_json(AppState& state, const std::string& json, const std::string& source,
+                             const std::string& location) {
+  std::string error = state.open_json(json, location);
+  if (!error.empty()) {
+    // The CLI says "error: FILE: field: problem"; here the source takes the file's place.
+    error = source + ": " + error;
+    state.status = error;
+    state.status_is_error = true;
+    return error;
+  }
+  state.status = "Opened " + source;
+  state.status_is_error = false;
+  return {};
+}
+
+std::string download_preset(AppState& state) {
+  const std::string name = download_file_name(state.location);
+  const std::string error = state.store->save(name, swarm::preset_to_json(state.preset));
+  state.status = error.empty() ? "Downloaded " + name + " (see the browser's downloads)" : error;
+  state.status_is_error = !error.empty();
+  return name;
+}
+
+}  // namespace swarmlab
+
+namespace {
+
+// The strings handed to JavaScript stay valid until the next call of the same function.
+std::string preset_text, open_error, download_name;
+
+}  // namespace
+
+extern "C" {
+
+/// The simulated time of the running preset (the primary method's clock).
+EMSCRIPTEN_KEEPALIVE double swarmlab_time() {
+  swarmlab::App* app = swarmlab::web_app();
+  return app ? app->state().run->time() : 0.0;
+}
+
+/// The running preset (every edit included) as JSON; indent < 0 gives one compact line.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_preset(int indent) {
+  swarmlab::App* app = swarmlab::web_app();
+  preset_text = app ? swarm::preset_to_json(app->state().preset, indent) : std::string();
+  return preset_text.c_str();
+}
+
+/// Opens a preset from JSON text; "" on success, else the message also shown in the panel.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_json(const char* json, const char* source,
+                                                    const char* location) {
+  swarmlab::App* app = swarmlab::web_app();
+  open_error = app ? swarmlab::open_preset_json(app->state(), json, source, location)
+                   : std::string("the app has not started");
+  return open_error.c_str();
+}
+
+/// Sets the scenario panel's status line (the result of Copy link, a share link that cannot
+/// be decoded).
+EMSCRIPTEN_KEEPALIVE void swarmlab_set_status(const char* text, int is_error) {
+  if (swarmlab::App* app = swarmlab::web_app()) {
+    app->state().status = text;
+    app->state().status_is_error = is_error != 0;
+  }
+}
+
+/// What the Download preset button does; returns the file name.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_download() {
+  swarmlab::App* app = swarmlab::web_app();
+  download_name = app ? swarmlab::download_preset(app->state()) : std::string();
+  return download_name.c_str();
+}
+
+}  // extern "C"

@@ -1,0 +1,98 @@
+// Share links: a preset carried in the URL fragment, linked into swarmlab.js with --post-js
+// (before swarmlab_api.js, which uses it). Two forms, both accepted when a page opens:
+//   #preset=<base64url of the preset's UTF-8 JSON>            always written and read
+//   #z=<base64url of the JSON compressed with deflate-raw>     shorter; needs CompressionStream
+// base64url is RFC 4648 section 5 without padding; padding and the '+' '/' of plain base64 are
+// accepted too, as is whitespace a mail program may have inserted. The fragment never reaches
+// the web server, so a link works from any static host.
+var SwarmlabLink = (function () {
+  'use strict';
+
+  var utf8 = new TextEncoder();
+  var strictUtf8 = new TextDecoder('utf-8', { fatal: true });
+
+  function toBase64url(bytes) {
+    var binary = '';
+    for (var i = 0; i < bytes.length; i += 0x8000)
+      binary += String.fromCharCode.apply(null, bytes.subarray(i, i + 0x8000));
+    return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+  }
+
+  function fromBase64url(text) { // throws on anything that is not base64(url)
+    var b64 = text.replace(/\s+/g, '').replace(/-/g, '+').replace(/_/g, '/').replace(/=+$/, '');
+    if (!b64 || /[^A-Za-z0-9+\/]/.test(b64) || b64.length % 4 === 1) throw new Error('not base64url');
+    while (b64.length % 4) b64 += '=';
+    var binary = atob(b64), bytes = new Uint8Array(binary.length);
+    for (var i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);
+    return bytes;
+  }
+
+  function canCompress() {
+    try {
+      new CompressionStream('deflate-raw');
+      new DecompressionStream('deflate-raw');
+      return true;
+    } catch (e) {
+      return false;
+    }
+  }
+
+  function transform(bytes, stream) { // Promise<Uint8Array>
+    return new Response(new Blob([bytes]).stream().pipeThrough(stream)).arrayBuffer()
+      .then(function (buffer) { return new Uint8Array(buffer); });
+  }
+
+  /// The fragment for a preset's JSON text: '#z=...' when the browser compresses and that is
+  /// shorter, else '#preset=...'. Promise<string>.
+  function fragment(json) {
+    var bytes = utf8.encode(json);
+    var plain = '#preset=' + toBase64url(bytes);
+    if (!canCompress()) return Promise.resolve(plain);
+    return transform(bytes, new CompressionStream('deflate-raw')).then(function (z) {
+      var short = '#z=' + toBase64url(z);
+      return short.length < plain.length ? short : plain;
+    }, function () { return plain; });
+  }
+
+  /// The preset in a fragment ('#preset=...', '#z=...', possibly among other key=value pairs
+  /// separated by '&'): null when there is none, else a Promise that always resolves, to
+  /// { json } or to { error } (a message for the page, "share link: ...").
+  function read(hash) {
+    var parts = String(hash || '').replace(/^#/, '').split('&');
+    for (var i = 0; i < parts.length; ++i) {
+      var eq = parts[i].indexOf('=');
+      if (eq < 0) continue;
+      var key = parts[i].slice(0, eq), value = parts[i].slice(eq + 1);
+      if (key !== 'preset' && key !== 'z') continue;
+      try { value = decodeURIComponent(value); } catch (e) { /* keep it as it is */ }
+      return decode(key, value);
+    }
+    return null;
+  }
+
+  function decode(key, value) {
+    var what = 'share link: the text after #' + key + '= ';
+    var bytes;
+    try {
+      bytes = fromBase64url(value);
+    } catch (e) {
+      return Promise.resolve({ error: what + 'is not base64url (the link may have been cut short)' });
+    }
+    var inflated = key === 'preset' ? Promise.resolve(bytes)
+      : !canCompress() ? Promise.reject(new Error('this browser cannot decompress (no DecompressionStream)'))
+      : transform(bytes, new DecompressionStream('deflate-raw'));
+    return inflated.then(function (raw) {
+      try {
+        return { json: strictUtf8.decode(raw) };
+      } catch (e) {
+        return { error: what + 'is not UTF-8 text' };
+      }
+    }, function (e) {
+      return { error: what + 'does not decompress (' + (e && e.message || e) +
+                      '; the link may have been cut short)' };
+    });
+  }
+
+  return { fragment: fragment, read: read, toBase64url: toBase64url, fromBase64url: fromBase64url,
+           canCompress: canCompress };
+})();

@@ -1,0 +1,47 @@
+#include "storage_controls.h"
+
+#include <emscripten.h>
+#include <imgui.h>
+
+#include "panels.h"
+#include "web_app.h"
+#include "web_preset_store.h"
+
+namespace swarmlab {
+namespace {
+
+// Both run a few milliseconds after the click that pressed the button (ImGui sees the click in
+// the next animation frame), well within the browser's transient user activation, which a
+// file picker and the clipboard require.
+EM_JS(void, js_open_file, (), { Module.swarmlab.openFile(); });
+EM_JS(void, js_copy_link, (), { Module.swarmlab.copyLink(); });
+
+/// Puts the next button on the same line when it fits.
+void same_line_if_fits(const char* next_label) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::CalcTextSize(next_label, nullptr, true).x + 2 * style.FramePadding.x;
+  const float right = ImGui::GetItemRectMax().x + style.ItemSpacing.x + width;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
+}  // namespace
+
+void draw_storage_controls(AppState& state) {
+  if (ImGui::Button("Open preset\u2026")) js_open_file();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A preset file from this computer (also: drop a .json file on the page)");
+  same_line_if_fits("Download preset");
+  if (ImGui::Button("Download preset")) download_preset(state);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The running preset, every edit included, as %s",
+                      download_file_name(state.location).c_str());
+  same_line_if_fits("Copy link");
+  if (ImGui::Button("Copy link")) js_copy_link();
+  help_marker(
+      "Open preset reads a preset file; Download preset saves the running preset (every edit "
+      "you made) as a file that the desktop app, 'swarmlab run' and this page run identically. "
+      "Copy link puts the running preset into the page's address (#z=... or #preset=...): "
+      "whoever opens that link starts this preset.");
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,40 @@
+// The browser entry of Swarm Lab: the desktop's window, App and frame loop (app/desktop) with
+// the browser's preset store and storage buttons, driven by requestAnimationFrame.
+
+#include <emscripten.h>
+
+#include <memory>
+#include <string>
+
+#include "main_loop.h"
+#include "storage_controls.h"
+#include "web_app.h"
+#include "web_preset_store.h"
+
+namespace {
+
+swarmlab::Frontend frontend;  // lives as long as the page
+
+}  // namespace
+
+swarmlab::App* swarmlab::web_app() { return frontend.app.get(); }
+
+int main() {
+  std::string error;
+  frontend.window = swarmlab::open_window("Swarm Lab", 1280, 720, error);
+  if (!frontend.window.window) {
+    EM_ASM({ Module.onAbort && Module.onAbort(UTF8ToString($0)); }, error.c_str());
+    return 1;
+  }
+  frontend.app = std::make_unique<swarmlab::App>(swarmlab::make_web_preset_store("/presets"),
+                                                 /*preset_location=*/"",
+                                                 /*fixed_frame_time=*/false);
+  frontend.app->state().storage_controls = swarmlab::draw_storage_controls;
+  // A share link in the address replaces the default preset before the first frame.
+  EM_ASM({ Module.swarmlabStarted && Module.swarmlabStarted(); });
+  // fps = 0: one frame per requestAnimationFrame; never returns (main's stack frame stays).
+  emscripten_set_main_loop_arg(
+      [](void* f) { swarmlab::run_frame(*static_cast<swarmlab::Frontend*>(f)); }, &frontend, 0,
+      true);
+  return 0;
+}

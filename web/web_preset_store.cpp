@@ -1,0 +1,55 @@
+#include "web_preset_store.h"
+
+#include <emscripten.h>
+
+namespace swarmlab {
+namespace {
+
+// A Blob behind an <a download>: the browser saves it in its downloads folder (or asks where).
+EM_JS(void, start_download, (const char* name, const char* text), {
+  var blob = new Blob([UTF8ToString(text)], {type : 'application/json'});
+  var a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = UTF8ToString(name);
+  a.style.display = 'none';
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(function() { URL.revokeObjectURL(a.href); }, 60000);
+});
+
+class WebPresetStore final : public PresetStore {
+ public:
+  explicit WebPresetStore(std::string directory)
+      : files_(make_file_preset_store(std::move(directory))) {}
+
+  std::vector<ShippedPreset> shipped() override { return files_->shipped(); }
+
+  // Only paths in the in-memory file system (the embedded /presets): the page has no other.
+  swarm::PresetParse open(const std::string& location) override { return files_->open(location); }
+
+  std::string save(const std::string& location, const std::string& json) override {
+    start_download(download_file_name(location).c_str(), (json + "\n").c_str());
+    return {};
+  }
+
+  const char* location_hint() const override { return "file name for Download preset"; }
+
+ private:
+  std::unique_ptr<PresetStore> files_;
+};
+
+}  // namespace
+
+std::string download_file_name(const std::string& location) {
+  std::string name = location.substr(location.find_last_of("/\\") + 1);
+  if (name.empty()) name = "preset";
+  if (name.size() < 5 || name.compare(name.size() - 5, 5, ".json") != 0) name += ".json";
+  return name;
+}
+
+std::unique_ptr<PresetStore> make_web_preset_store(std::string shipped_directory) {
+  return std::make_unique<WebPresetStore>(std::move(shipped_directory));
+}
+
+}  // namespace swarmlab
