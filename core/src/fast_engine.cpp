@@ -48,7 +48,7 @@ constexpr double kMarginDriftTimes = 4;
 constexpr std::size_t kShellBudget = 100;
 constexpr int kGapBins = 128;
 constexpr int kMaxOldFrames = 6;
-// Re-base before exp(Omega tau) eats more than a few bits of the h_i (J < 0), and before the
+// Re-base before exp(Omega tau) eats more than a few bits of the y_i (J < 0), and before the
 // phase omega tau or the drift b tau gets large enough to cost digits (J >= 0).
 constexpr double kMaxRepulsivePhase = 2.5;
 constexpr double kMaxAttractivePhase = 512;
@@ -61,7 +61,7 @@ constexpr std::size_t kPrefetch = 8;
 constexpr int kLanes = 2;
 // Steps with fewer checks than this run on one thread: waking the other costs more.
 constexpr std::size_t kParallelChecks = 384;
-// A waiting thread spins this many times before it sleeps on a condition variable.
+// A waiting thread yields this many times before it sleeps on a condition variable.
 constexpr int kSpins = 20000;
 
 inline void prefetch(const void* p) {
@@ -195,7 +195,7 @@ class FastEngine final : public Engine {
       stats_.checks += lane.checks;
     }
     stats_.hits += tally.hits;
-    finish_step(d.f0, kick, dt);
+    finish_step(d.f0, kick, dt, d.determinant);
     return tally;
   }
 
@@ -366,10 +366,13 @@ class FastEngine final : public Engine {
   Vec3 offset_velocity_at(const Flow& f) const { return V_cm_ - (f.dc() * aY_ + f.c * bY_); }
 
   /// R_cm and Y take the same velocity kick at tau_, so o keeps its position and velocity.
-  void finish_step(const Flow& f0, const Vec3& kick, double dt) {
+  /// Y's coefficients change exactly as the sum of the y_i's do, i.e. by the kick divided by
+  /// the flow's computed determinant (see check_lane), so that R_cm stays the particles' CM.
+  void finish_step(const Flow& f0, const Vec3& kick, double dt, double determinant = 1) {
     V_cm_ += kick;
-    aY_ -= f0.s * kick;
-    bY_ += f0.c * kick;
+    const Vec3 jump = kick / determinant;
+    aY_ -= f0.s * jump;
+    bY_ += f0.c * jump;
     R_cm_ += V_cm_ * dt;
     recent_kicks_[std::size_t(step_) % recent_kicks_.size()] = kick.norm();
     tau_ += dt;
