@@ -97,10 +97,16 @@ struct Frame {
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
 };
 
+/// A particle waiting in a block bucket, with the step it is due in (its low 32 bits), so that
+/// moving it to its step bucket does not touch the particle's record.
+struct FarEntry {
+  std::uint32_t id, due;
+};
+
 /// One lane of the schedule: a two-level timing wheel and the sums of one step.
 struct Lane {
   std::array<std::vector<std::uint32_t>, 2 * kBlock> near;
-  std::array<std::vector<std::uint32_t>, kFarBlocks> far;
+  std::array<std::vector<FarEntry>, kFarBlocks> far;
   std::vector<std::uint32_t> work;
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
   WallTally tally;
@@ -249,6 +255,7 @@ class FastEngine final : public Engine {
     if ((step_ & (kBlock - 1)) == 0) bring_near(lane, step_ / kBlock + 1);
     lane.work.swap(lane.near[near_slot(step_)]);
     const std::size_t count = lane.work.size();
+    for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j) prefetch(&orbits_[lane.work[j]]);
     for (std::size_t j = 0; j < count; ++j) {
       if (j + kPrefetch < count) prefetch(&orbits_[lane.work[j + kPrefetch]]);
       const std::uint32_t i = lane.work[j];
@@ -345,16 +352,14 @@ class FastEngine final : public Engine {
     if (due / kBlock <= step_ / kBlock + 1)
       lane.near[near_slot(due)].push_back(i);
     else
-      lane.far[far_slot(due / kBlock)].push_back(i);
+      lane.far[far_slot(due / kBlock)].push_back({i, std::uint32_t(due)});
   }
 
-  /// Moves the particles due in `block` from its block bucket to the step buckets.
+  /// Moves the particles due in `block` from its block bucket to the step buckets. Those
+  /// rescheduled since are weeded out when their step comes.
   void bring_near(Lane& lane, StepIndex block) {
     auto& bucket = lane.far[far_slot(block)];
-    for (const std::uint32_t i : bucket) {
-      const StepIndex due = orbits_[i].due;
-      if (due / kBlock == block && due != kParked) lane.near[near_slot(due)].push_back(i);
-    }
+    for (const FarEntry& e : bucket) lane.near[near_slot(e.due)].push_back(e.id);
     bucket.clear();
   }
 
