@@ -160,10 +160,13 @@ CLI::App* add_bench_subcommand(CLI::App& app, BenchOptions& o) {
   cmd->add_option("--compare", o.compare_steps,
                   "Afterwards, check the first STEPS steps against the reference engine, step by step")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", o.threads, "Threads for the engine (1 or 2; default 2 where there are two cores)")
+      ->check(CLI::Range(1, 2));
   return cmd;
 }
 
 int bench_command(const BenchOptions& o) {
+  if (o.threads > 0) swarm::set_thread_limit(o.threads);
   if (o.workload == "scale") return scale(o);
   return expansion(o);
 }
