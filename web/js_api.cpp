@@ -38,7 +38,7 @@ std::string download_preset(AppState& state) {
 namespace {
 
 // The strings handed to JavaScript stay valid until the next call of the same function.
-std::string preset_text, open_error, download_name;
+std::string preset_text, open_error, download_name, shipped_text;
 
 }  // namespace
 
@@ -73,6 +73,15 @@ EMSCRIPTEN_KEEPALIVE void swarmlab_set_status(const char* text, int is_error) {
     app->state().status = text;
     app->state().status_is_error = is_error != 0;
   }
+}
+
+/// The scenario list's shipped presets, one "file name<TAB>preset name" line each.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_shipped() {
+  shipped_text.clear();
+  if (swarmlab::App* app = swarmlab::web_app())
+    for (const swarmlab::ShippedPreset& s : app->state().shipped)
+      shipped_text += s.id + "\t" + s.preset.name + "\n";
+  return shipped_text.c_str();
 }
 
 /// What the Download preset button does; returns the file name.

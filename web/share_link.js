@@ -79,17 +79,19 @@ var SwarmlabLink = (function () {
       return Promise.resolve({ error: what + 'is not base64url (the link may have been cut short)' });
     }
     var inflated = key === 'preset' ? Promise.resolve(bytes)
-      : !canCompress() ? Promise.reject(new Error('this browser cannot decompress (no DecompressionStream)'))
+      : !canCompress() ? null
       : transform(bytes, new DecompressionStream('deflate-raw'));
+    if (!inflated)
+      return Promise.resolve({ error: what + 'needs a browser that can decompress (DecompressionStream); ' +
+                                      'a #preset= link works everywhere' });
     return inflated.then(function (raw) {
       try {
         return { json: strictUtf8.decode(raw) };
       } catch (e) {
         return { error: what + 'is not UTF-8 text' };
       }
-    }, function (e) {
-      return { error: what + 'does not decompress (' + (e && e.message || e) +
-                      '; the link may have been cut short)' };
+    }, function () {
+      return { error: what + 'does not decompress (the link may have been cut short)' };
     });
   }
 

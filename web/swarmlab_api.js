@@ -13,6 +13,7 @@
 //   swarmlab.openLink(hash) opens the preset of a fragment; Promise of "" or the error message
 //   swarmlab.openFile()    the Open preset... button: a file picker, then as load()
 //   swarmlab.download()    the Download preset button; returns the file name
+//   swarmlab.shipped()     the preset list: [{ id: file name, name }]
 //   swarmlab.ready         Promise resolved once main() has started (and a start link is open)
 //   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks)
 //   swarmlab.firstFrameMs  performance.now() at the end of the first frame, or null
@@ -139,6 +140,13 @@
       input.click();
     },
     download: function () { check(); return Module.ccall('swarmlab_download', 'string', [], []); },
+    shipped: function () {
+      check();
+      return Module.ccall('swarmlab_shipped', 'string', [], []).split('\n').filter(Boolean).map(function (line) {
+        var tab = line.indexOf('\t');
+        return { id: line.slice(0, tab), name: line.slice(tab + 1) };
+      });
+    },
   };
 
   // A share link in the address: decode it (deflate is asynchronous) before main() runs.
