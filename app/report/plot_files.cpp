@@ -19,6 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+[[maybe_unused]] constexpr const char* kRenderer = "rsvg-convert";
+
 std::string write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << text;
@@ -33,7 +35,6 @@ std::string render_png(const fs::path& svg, const fs::path& png) {
   (void)svg, (void)png;
   return "PNG output is not available in the wasm build";
 #else
-  constexpr const char* kRenderer = "rsvg-convert";
   const std::string in = svg.string(), out = png.string();
   const char* argv[] = {kRenderer, "--background-color=white", "-o", out.c_str(), in.c_str(),
                         nullptr};
