@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "storage_controls.h"
 #include "web_app.h"
 #include "web_preset_store.h"
 
@@ -38,7 +39,7 @@ std::string download_preset(AppState& state) {
 namespace {
 
 // The strings handed to JavaScript stay valid until the next call of the same function.
-std::string preset_text, open_error, download_name, shipped_text;
+std::string preset_text, open_error, download_name, shipped_text, rect_text;
 
 }  // namespace
 
@@ -89,6 +90,13 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_download() {
   swarmlab::App* app = swarmlab::web_app();
   download_name = app ? swarmlab::download_preset(app->state()) : std::string();
   return download_name.c_str();
+}
+
+/// Where the scenario panel's button `label` was drawn: "x y width height" in CSS pixels, or
+/// "" when the panel is closed (for tests that click it).
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_button_rect(const char* label) {
+  rect_text = swarmlab::storage_button_rect(label);
+  return rect_text.c_str();
 }
 
 }  // extern "C"

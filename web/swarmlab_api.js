@@ -14,6 +14,9 @@
 //   swarmlab.openFile()    the Open preset... button: a file picker, then as load()
 //   swarmlab.download()    the Download preset button; returns the file name
 //   swarmlab.shipped()     the preset list: [{ id: file name, name }]
+//   swarmlab.buttonRect(label) where the scenario panel's button 'Open preset…', 'Download
+//                          preset' or 'Copy link' is drawn: { x, y, width, height } in CSS
+//                          pixels of the canvas, or null (for tests that click like a person)
 //   swarmlab.ready         Promise resolved once main() has started (and a start link is open)
 //   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks)
 //   swarmlab.firstFrameMs  performance.now() at the end of the first frame, or null
@@ -140,6 +143,11 @@
       input.click();
     },
     download: function () { check(); return Module.ccall('swarmlab_download', 'string', [], []); },
+    buttonRect: function (label) {
+      check();
+      var r = Module.ccall('swarmlab_button_rect', 'string', ['string'], [label]).split(' ').map(Number);
+      return r.length === 4 ? { x: r[0], y: r[1], width: r[2], height: r[3] } : null;
+    },
     shipped: function () {
       check();
       return Module.ccall('swarmlab_shipped', 'string', [], []).split('\n').filter(Boolean).map(function (line) {

@@ -33,8 +33,14 @@ int main() {
   // A share link in the address replaces the default preset before the first frame.
   EM_ASM({ Module.swarmlabStarted && Module.swarmlabStarted(); });
   // fps = 0: one frame per requestAnimationFrame; never returns (main's stack frame stays).
+  // Scenario > Quit stops the frames, and the page offers to start again.
   emscripten_set_main_loop_arg(
-      [](void* f) { swarmlab::run_frame(*static_cast<swarmlab::Frontend*>(f)); }, &frontend, 0,
-      true);
+      [](void* f) {
+        if (!swarmlab::run_frame(*static_cast<swarmlab::Frontend*>(f))) {
+          emscripten_cancel_main_loop();
+          EM_ASM({ Module.onQuit && Module.onQuit(); });
+        }
+      },
+      &frontend, 0, true);
   return 0;
 }

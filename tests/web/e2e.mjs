@@ -177,6 +177,20 @@ async function screenshot(page, file, rects) {
   return img;
 }
 
+// Clicks a button of the scenario panel where the app drew it, holding the mouse for a few
+// frames as a hand does (ImGui 1.86 reads the button state once a frame).
+async function clickButton(page, label) {
+  const r = await page.evaluate((l) => window.swarmlab.buttonRect(l), label);
+  if (!r) return false;
+  await page.mouse.move(r.x + r.width / 2, r.y + r.height / 2);
+  await sleep(80);
+  await page.mouse.down();
+  await sleep(120);
+  await page.mouse.up();
+  await sleep(120);
+  return true;
+}
+
 // What the CLI says about a preset file ("error: FILE: field: problem" -> "field: problem").
 function cliMessage(json) {
   if (!existsSync(cliPath)) return null;
@@ -286,12 +300,13 @@ async function main() {
   const malformed = await page.evaluate(() => { try { window.swarmlab.load('{ this is not json'); return null; } catch (e) { return e.message; } });
   check('load() rejects malformed JSON', !!malformed, malformed || 'accepted');
 
-  // 7. Download preset and Open preset.
-  const [download] = await Promise.all([page.waitForEvent('download', { timeout: 10_000 }),
-                                        page.evaluate(() => window.swarmlab.download())]);
-  const downloaded = readFileSync(await download.path(), 'utf8');
-  check('Download preset: the running preset as a JSON file', download.suggestedFilename().endsWith('.json') &&
-        JSON.parse(downloaded).name === DEFAULT_PRESET, `${download.suggestedFilename()}, ${downloaded.length} bytes`);
+  // 7. Download preset (the scenario panel's button, clicked) and Open preset (a file picker).
+  const [download, clicked] = await Promise.all([page.waitForEvent('download', { timeout: 10_000 }).catch(() => null),
+                                                 clickButton(page, 'Download preset')]);
+  const downloaded = download ? readFileSync(await download.path(), 'utf8') : '';
+  check('Download preset button: the running preset as a JSON file', clicked && download &&
+        download.suggestedFilename().endsWith('.json') && JSON.parse(downloaded).name === DEFAULT_PRESET,
+        download ? `${download.suggestedFilename()}, ${downloaded.length} bytes` : clicked ? 'no download' : 'button not found');
   const upload = { ...shipped('fig4-equilibration.json'), name: 'E2E uploaded preset' };
   const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: 10_000 }),
                                        page.evaluate(() => window.swarmlab.openFile())]);
@@ -322,11 +337,17 @@ async function main() {
     const img = await screenshot(z.page, 'screenshot-swarm.png', { ...VIEW_RECTS, ...PLOT_RECTS });
     check('a swarm\'s particles are drawn', vividIn(img, ['viewRight', 'viewLower']) >= 300,
           `${vividIn(img, ['viewRight', 'viewLower'])} coloured pixels`);
-    // Copy link: the running preset into the address, the same preset back from it.
-    const copied = await z.page.evaluate(() => window.swarmlab.copyLink());
+    // Copy link (the button, clicked): the running preset into the address, the same preset back from it.
+    await z.page.evaluate(() => history.replaceState(null, '', location.pathname));
+    const clickedCopy = await clickButton(z.page, 'Copy link');
+    await z.page.waitForFunction(() => location.hash.length > 3, null, { timeout: 5000 }).catch(() => {});
     const shown = await state(z.page);
-    check('Copy link puts the preset in the address and shows the link', shown.hash.length > 3 && copied.endsWith(shown.hash) &&
-          /^#(z|preset)=/.test(shown.hash) && shown.noticeKind === 'link', `${shown.hash.slice(0, 24)}... (${shown.hash.length} characters)`);
+    const copied = await z.page.evaluate(() => location.href);
+    const linkShown = await z.page.evaluate(() => document.getElementById('notice-link').value);
+    const apiLink = await z.page.evaluate(() => window.swarmlab.link());
+    check('Copy link button puts the preset in the address and shows the link', clickedCopy && /^#(z|preset)=/.test(shown.hash) &&
+          shown.noticeKind === 'link' && linkShown === copied && apiLink === copied,
+          `${shown.hash.slice(0, 24)}... (${shown.hash.length} characters)`);
     const running = await z.page.evaluate(() => window.swarmlab.preset());
     await z.page.close();
     const again = await openApp(copied, 'copied-link');
