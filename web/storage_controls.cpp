@@ -20,7 +20,7 @@ EM_JS(void, js_open_file, (), { Module.swarmlab.openFile(); });
 EM_JS(void, js_copy_link, (), { Module.swarmlab.copyLink(); });
 
 std::map<std::string, std::string> button_rects;  // by label, as last drawn
-int rects_frame = -1;                              // ImGui's frame count then
+int rects_frame = -1;                             // ImGui's frame count then
 
 /// A button that remembers where it was drawn.
 bool button(const char* label) {

@@ -23,7 +23,11 @@ int main() {
   std::string error;
   frontend.window = swarmlab::open_window("Swarm Lab", 1280, 720, error);
   if (!frontend.window.window) {
-    EM_ASM({ Module.onAbort && Module.onAbort(UTF8ToString($0)); }, error.c_str());
+    EM_ASM(
+        {
+          if (Module.onAbort) Module.onAbort(UTF8ToString($0));
+        },
+        error.c_str());
     return 1;
   }
   frontend.app = std::make_unique<swarmlab::App>(swarmlab::make_web_preset_store("/presets"),
@@ -31,14 +35,18 @@ int main() {
                                                  /*fixed_frame_time=*/false);
   frontend.app->state().storage_controls = swarmlab::draw_storage_controls;
   // A share link in the address replaces the default preset before the first frame.
-  EM_ASM({ Module.swarmlabStarted && Module.swarmlabStarted(); });
+  EM_ASM({
+    if (Module.swarmlabStarted) Module.swarmlabStarted();
+  });
   // fps = 0: one frame per requestAnimationFrame; never returns (main's stack frame stays).
   // Scenario > Quit stops the frames, and the page offers to start again.
   emscripten_set_main_loop_arg(
       [](void* f) {
         if (!swarmlab::run_frame(*static_cast<swarmlab::Frontend*>(f))) {
           emscripten_cancel_main_loop();
-          EM_ASM({ Module.onQuit && Module.onQuit(); });
+          EM_ASM({
+            if (Module.onQuit) Module.onQuit();
+          });
         }
       },
       &frontend, 0, true);

@@ -6,6 +6,7 @@ namespace swarmlab {
 namespace {
 
 // A Blob behind an <a download>: the browser saves it in its downloads folder (or asks where).
+// clang-format off
 EM_JS(void, start_download, (const char* name, const char* text), {
   var blob = new Blob([UTF8ToString(text)], {type : 'application/json'});
   var a = document.createElement('a');
@@ -17,6 +18,7 @@ EM_JS(void, start_download, (const char* name, const char* text), {
   a.remove();
   setTimeout(function() { URL.revokeObjectURL(a.href); }, 60000);
 });
+// clang-format on
 
 class WebPresetStore final : public PresetStore {
  public:
