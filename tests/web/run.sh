@@ -2,7 +2,7 @@
 # Browser end-to-end test of the web build: (re)builds build/web (scripts/web.sh --build-only,
 # seconds when nothing changed; --no-build skips it), installs playwright-core from npm into
 # tests/web/node_modules if needed, then runs e2e.mjs in Debian's headless Chromium.
-# Last line: "N passed, M failed". Screenshot: build/web-test/screenshot.png.
+# Last line: "N passed, M failed". Screenshots and the console log: build/web-test/.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
