@@ -23,3 +23,6 @@ echo "== the same presets natively and in wasm reach the same final state"
 python3 tests/wasm/same_final_state.py build/app/swarmlab build-wasm-core/app/swarmlab.js \
   tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
   assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
+
+echo "== the browser app in headless Chromium (build/web, playwright-core)"
+tests/web/run.sh
