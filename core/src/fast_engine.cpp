@@ -97,16 +97,20 @@ struct Frame {
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
 };
 
-/// A particle waiting in a block bucket, with the step it is due in (its low 32 bits), so that
-/// moving it to its step bucket does not touch the particle's record.
-struct FarEntry {
-  std::uint32_t id, due;
-};
+/// A particle waiting in a block bucket: its id and its step within the block, packed into
+/// 32 bits so that moving it to its step bucket does not touch the particle's record.
+using FarEntry = std::uint32_t;
+constexpr FarEntry far_entry(std::uint32_t id, StepIndex due) {
+  return (id << kBlockBits) | FarEntry(due & (kBlock - 1));
+}
+static_assert(kMaxFastEngineParticles <= (std::size_t(1) << (32 - kBlockBits)),
+              "particle ids must fit a FarEntry");
 
 /// One lane of the schedule: a two-level timing wheel and the sums of one step.
 struct Lane {
   std::array<std::vector<std::uint32_t>, 2 * kBlock> near;
   std::array<std::vector<FarEntry>, kFarBlocks> far;
+  std::size_t far_entries = 0;  // in all block buckets, stale ones included
   std::vector<std::uint32_t> work;
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
   WallTally tally;
@@ -135,6 +139,8 @@ class FastEngine final : public Engine {
   FastEngine(System initial, const EngineConfig& config) : config_(config) {
     if (!fast_engine_applies(config))
       throw std::invalid_argument("the fast engine runs the analytic method with paper collisions");
+    if (initial.particles.size() > kMaxFastEngineParticles)
+      throw std::invalid_argument("the fast engine takes at most 2^26 particles");
     J_ = initial.J;
     t_ = initial.t;
     M_ = total_mass(initial);
@@ -282,6 +288,7 @@ class FastEngine final : public Engine {
       schedule(i, step_ + 1);
     }
     lane.work.clear();
+    release_if_large(lane.work);
   }
 
   // [SECTION] The second thread
@@ -351,16 +358,48 @@ class FastEngine final : public Engine {
     Lane& lane = lane_of(i);
     if (due / kBlock <= step_ / kBlock + 1)
       lane.near[near_slot(due)].push_back(i);
-    else
-      lane.far[far_slot(due / kBlock)].push_back({i, std::uint32_t(due)});
+    else {
+      lane.far[far_slot(due / kBlock)].push_back(far_entry(i, due));
+      // Particles rescheduled before their step leave stale entries; weed them out before
+      // they cost memory (frames expire often when J < 0).
+      if (++lane.far_entries > lane_split_ + lane_split_ / 2 + 4096) compact(lane);
+    }
   }
 
   /// Moves the particles due in `block` from its block bucket to the step buckets. Those
   /// rescheduled since are weeded out when their step comes.
   void bring_near(Lane& lane, StepIndex block) {
     auto& bucket = lane.far[far_slot(block)];
-    for (const FarEntry& e : bucket) lane.near[near_slot(e.due)].push_back(e.id);
+    const StepIndex first = block * kBlock;
+    for (const FarEntry e : bucket)
+      lane.near[near_slot(first + StepIndex(e & (kBlock - 1)))].push_back(e >> kBlockBits);
+    lane.far_entries -= bucket.size();
     bucket.clear();
+    release_if_large(bucket);
+  }
+
+  /// Frees an emptied bucket that once held far more than its share: bursts (a new wall, an
+  /// expired frame) would otherwise leave every bucket holding memory for a large part of N.
+  template <class Bucket>
+  void release_if_large(Bucket& bucket) const {
+    if (bucket.capacity() > lane_split_ / 16 + 4096) Bucket().swap(bucket);
+  }
+
+  /// Drops the stale entries of every block bucket of lane.
+  void compact(Lane& lane) {
+    lane.far_entries = 0;
+    for (std::size_t b = 0; b < lane.far.size(); ++b) {
+      auto& bucket = lane.far[b];
+      bucket.erase(std::remove_if(bucket.begin(), bucket.end(),
+                                  [&](FarEntry e) {
+                                    const StepIndex due = orbits_[e >> kBlockBits].due;
+                                    return due == kParked || far_slot(due / kBlock) != b ||
+                                           far_entry(e >> kBlockBits, due) != e;
+                                  }),
+                   bucket.end());
+      lane.far_entries += bucket.size();
+      if (bucket.capacity() > 2 * bucket.size() + 4096) bucket.shrink_to_fit();
+    }
   }
 
   /// The shared offset o = R_cm - Y at tau_ + dt_ahead, f being the flow at that time:
@@ -519,6 +558,7 @@ class FastEngine final : public Engine {
     for (Lane& lane : lanes_) {
       for (auto& bucket : lane.near) bucket.clear();
       for (auto& bucket : lane.far) bucket.clear();
+      lane.far_entries = 0;
       for (auto& list : lane.lookahead) list.clear();
     }
     old_frames_.clear();

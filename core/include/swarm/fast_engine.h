@@ -26,6 +26,7 @@
 /// The engine reproduces the reference engine's wall hits step by step (same predicate on the
 /// same prediction, evaluated from an algebraically identical state) up to rounding.
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 
@@ -37,7 +38,11 @@ namespace swarm {
 /// collisions, or an isolated system.
 bool fast_engine_applies(const EngineConfig& config);
 
-/// Throws std::invalid_argument when !fast_engine_applies(config).
+/// The most particles the fast engine takes (ids are packed into 26 bits).
+inline constexpr std::size_t kMaxFastEngineParticles = std::size_t(1) << 26;
+
+/// Throws std::invalid_argument when !fast_engine_applies(config) or there are more than
+/// kMaxFastEngineParticles particles.
 std::unique_ptr<Engine> make_fast_engine(System initial, const EngineConfig& config);
 
 /// Work counters of a fast engine, for benchmarks and tests.
