@@ -1,6 +1,8 @@
 // `swarmlab bench headline|fireball|scale`: runs one of the paper's workloads alone and
 // prints its wall time and figures (bench/RESULTS.md collects the numbers).
 
+#include "cli_bench.h"
+
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <memory>
 
 #include "bench_workloads.h"
-#include "cli_bench.h"
 #include "preset_file.h"
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"
@@ -110,7 +111,8 @@ int expansion(const BenchOptions& o) {
   }
   const swarm::StageFits f = run.fits();
   for (const auto& [name, fit] : {std::pair{"P-V", f.P_V}, {"T-V", f.T_V}, {"P-T", f.P_T}})
-    if (fit.valid) std::printf("fit %-4s exponent %+.4f  R^2 = %.4f\n", name, fit.slope, fit.r_squared);
+    if (fit.valid)
+      std::printf("fit %-4s exponent %+.4f  R^2 = %.4f\n", name, fit.slope, fit.r_squared);
   if (o.compare_steps > 0 && !compare_with_reference(preset, o.engine, o.compare_steps)) return 1;
   return 0;
 }
@@ -128,14 +130,16 @@ int scale(const BenchOptions& o) {
   for (long i = 0; i < o.steps; ++i) hits += engine->step(preset.dt).hits;
   const double E1 = swarm::total_energy(engine->system());
   const double wall = seconds_since(start);
-  std::printf("%-18s %s swarm, %ld particles, %ld steps of dt = %g in a fixed container, %s engine\n",
-              "workload", o.repulsive ? "repulsive" : "attractive", n, o.steps, preset.dt,
-              o.engine.c_str());
+  std::printf(
+      "%-18s %s swarm, %ld particles, %ld steps of dt = %g in a fixed container, %s engine\n",
+      "workload", o.repulsive ? "repulsive" : "attractive", n, o.steps, preset.dt,
+      o.engine.c_str());
   std::printf("%-18s %.3f s (of which %.3f s drawing the swarm and building the engine)\n",
               "wall time", wall, setup);
   std::printf("%-18s %.3g particle-steps per second\n", "throughput",
               double(n) * double(o.steps) / (wall - setup));
-  std::printf("%-18s %ld\n%-18s %.3e\n", "wall_hits", hits, "energy_drift", (E1 - E0) / std::abs(E0));
+  std::printf("%-18s %ld\n%-18s %.3e\n", "wall_hits", hits, "energy_drift",
+              (E1 - E0) / std::abs(E0));
   print_work(*engine);
   print_memory(n);
   return 0;
@@ -145,22 +149,27 @@ int scale(const BenchOptions& o) {
 
 CLI::App* add_bench_subcommand(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "bench", "Time a headline workload: headline (the attractive expansion of Fig. 2, "
-               "N = 40,000, 500,000 steps), fireball (the same, repulsive), scale (N = 1,000,000)");
+      "bench",
+      "Time a headline workload: headline (the attractive expansion of Fig. 2, "
+      "N = 40,000, 500,000 steps), fireball (the same, repulsive), scale (N = 1,000,000)");
   cmd->add_option("workload", o.workload, "headline, fireball or scale")
       ->check(CLI::IsMember({"headline", "fireball", "scale"}));
   cmd->add_option("--particles,-n", o.particles, "Particles (default 40,000; scale: 1,000,000)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--steps", o.steps, "scale: steps (default 10,000)")->check(CLI::PositiveNumber);
   cmd->add_flag("--repulsive", o.repulsive, "scale: J < 0");
-  cmd->add_option("--engine", o.engine, "fast (the default engine) or reference (Appendix A as written)")
+  cmd->add_option("--engine", o.engine,
+                  "fast (the default engine) or reference (Appendix A as written)")
       ->check(CLI::IsMember({"fast", "reference"}));
-  cmd->add_option("--preset", o.preset_path, "headline, fireball: run this preset, scaled to --particles")
+  cmd->add_option("--preset", o.preset_path,
+                  "headline, fireball: run this preset, scaled to --particles")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--compare", o.compare_steps,
-                  "Afterwards, check the first STEPS steps against the reference engine, step by step")
+  cmd->add_option(
+         "--compare", o.compare_steps,
+         "Afterwards, check the first STEPS steps against the reference engine, step by step")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--threads", o.threads, "Threads for the engine (1 or 2; default 2 where there are two cores)")
+  cmd->add_option("--threads", o.threads,
+                  "Threads for the engine (1 or 2; default 2 where there are two cores)")
       ->check(CLI::Range(1, 2));
   return cmd;
 }

@@ -29,8 +29,9 @@ void BM_Engine(benchmark::State& state) {
   const RunPlan plan = run_plan(preset);
   bench::reset_peak_memory();
   const auto before = bench::current_memory();
-  std::unique_ptr<Engine> engine = Fast ? make_fast_engine(initial_system(preset), plan.engine)
-                                        : make_reference_engine(initial_system(preset), plan.engine);
+  std::unique_ptr<Engine> engine = Fast
+                                       ? make_fast_engine(initial_system(preset), plan.engine)
+                                       : make_reference_engine(initial_system(preset), plan.engine);
   engine->step(plan.dt);
   long hits = 0;
   for (auto _ : state) hits += engine->step(plan.dt).hits;
@@ -48,27 +49,73 @@ void BM_Pairwise(benchmark::State& state) {
   System s = initial_system(bench::expansion_preset(false, n));
   for (auto _ : state) step(M, s, 1e-3);
   state.SetItemsProcessed(state.iterations() * n);
-  state.counters["steps/s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["steps/s"] =
+      benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 // Wall-clock time throughout: the fast engine and the pairwise forces use a second thread.
 // The fast engine's step cost does not grow with N (only the hits do); the reference's does.
-BENCHMARK(BM_Engine<true, false>)->Name("fast/attractive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK(BM_Engine<true, true>)->Name("fast/repulsive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK(BM_Engine<false, false>)->Name("reference/attractive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK(BM_Engine<false, true>)->Name("reference/repulsive")->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Engine<true, false>)
+    ->Name("fast/attractive")
+    ->RangeMultiplier(10)
+    ->Range(1000, 1000000)
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+BENCHMARK(BM_Engine<true, true>)
+    ->Name("fast/repulsive")
+    ->RangeMultiplier(10)
+    ->Range(1000, 1000000)
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+BENCHMARK(BM_Engine<false, false>)
+    ->Name("reference/attractive")
+    ->RangeMultiplier(10)
+    ->Range(1000, 1000000)
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+BENCHMARK(BM_Engine<false, true>)
+    ->Name("reference/repulsive")
+    ->RangeMultiplier(10)
+    ->Range(1000, 1000000)
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
 
-BENCHMARK(BM_Pairwise<Method::euler>)->Name("pairwise/euler")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Pairwise<Method::euler_cromer>)->Name("pairwise/euler-cromer")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Pairwise<Method::verlet>)->Name("pairwise/verlet")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_Pairwise<Method::rk4>)->Name("pairwise/rk4")->Arg(1000)->Arg(2000)->Arg(4000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Pairwise<Method::euler>)
+    ->Name("pairwise/euler")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Pairwise<Method::euler_cromer>)
+    ->Name("pairwise/euler-cromer")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Pairwise<Method::verlet>)
+    ->Name("pairwise/verlet")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Pairwise<Method::rk4>)
+    ->Name("pairwise/rk4")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 /// The in-code presets must be the shipped ones, or the numbers measure something else.
 void check_presets_match_shipped() {
 #ifdef SWARM_PRESET_DIR
   for (bool repulsive : {false, true}) {
-    const std::string path = std::string(SWARM_PRESET_DIR) +
-                             (repulsive ? "/fig3-repulsive-fireball.json" : "/fig2-attractive-expansion.json");
+    const std::string path =
+        std::string(SWARM_PRESET_DIR) +
+        (repulsive ? "/fig3-repulsive-fireball.json" : "/fig2-attractive-expansion.json");
     std::ifstream in(path);
     if (!in) continue;
     std::stringstream text;
@@ -79,7 +126,8 @@ void check_presets_match_shipped() {
     built.name = parsed.preset->name;
     built.description = parsed.preset->description;
     if (preset_to_json(built) != preset_to_json(*parsed.preset))
-      std::fprintf(stderr, "warning: %s differs from the benchmark's built-in preset\n", path.c_str());
+      std::fprintf(stderr, "warning: %s differs from the benchmark's built-in preset\n",
+                   path.c_str());
   }
 #endif
 }

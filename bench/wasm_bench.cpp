@@ -40,7 +40,8 @@ double engine_steps(bool fast, long n, long steps, long* hits) {
   System s = initial_system(p);
   const EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
   return seconds([&] {
-    auto e = fast ? make_fast_engine(std::move(s), config) : make_reference_engine(std::move(s), config);
+    auto e =
+        fast ? make_fast_engine(std::move(s), config) : make_reference_engine(std::move(s), config);
     *hits = 0;
     for (long i = 0; i < steps; ++i) *hits += e->step(p.dt).hits;
   });
@@ -62,7 +63,8 @@ int main(int argc, char** argv) {
   double t = expansion(false, 40000, 50, &hits);
   std::printf("%-44s %8.3f s  %ld hits\n", "headline: attractive N=40000, 500000 steps", t, hits);
   t = expansion(true, 40000, 5, &hits);
-  std::printf("%-44s %8.3f s  %ld hits\n", "fireball: repulsive N=40000, first 50000 steps", t, hits);
+  std::printf("%-44s %8.3f s  %ld hits\n", "fireball: repulsive N=40000, first 50000 steps", t,
+              hits);
   t = engine_steps(true, 1000000, 1000, &hits);
   std::printf("%-44s %8.3f s  %ld hits\n", "fast: N=1000000, 1000 steps", t, hits);
   t = engine_steps(false, 40000, 1000, &hits);

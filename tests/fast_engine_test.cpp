@@ -1,3 +1,5 @@
+#include "swarm/fast_engine.h"
+
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "swarm/analytic.h"
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"
-#include "swarm/fast_engine.h"
 #include "swarm/preset.h"
 #include "test_systems.h"
 

@@ -174,7 +174,8 @@ class FastEngine final : public Engine {
       dt_ = dt;
       schedule_all_pending_ = true;
     }
-    if (epoch_too_old(dt) || offset_at(Flow::over(k_, tau_ + dt), dt).norm() > current_.rebase_level)
+    if (epoch_too_old(dt) ||
+        offset_at(Flow::over(k_, tau_ + dt), dt).norm() > current_.rebase_level)
       rebase();
     fill_ahead();
     if (schedule_all_pending_) schedule_all();
@@ -486,7 +487,8 @@ class FastEngine final : public Engine {
       const std::size_t budget = std::max<std::size_t>(64, orbits_.size() / kShellBudget);
       std::size_t within = 0;
       int bin = 0;
-      while (bin < kGapBins && within + gap_histogram_[bin] <= budget) within += gap_histogram_[bin++];
+      while (bin < kGapBins && within + gap_histogram_[bin] <= budget)
+        within += gap_histogram_[bin++];
       extra = std::max(extra, 0.5 * Rw * bin / kGapBins);
     }
     extra = std::min(extra, 0.5 * Rw);

@@ -29,7 +29,7 @@ Window repulsive(const Vec3& a, const Vec3& b, double k, double T2) {
   const double cc = C.squaredNorm(), dd = D.squaredNorm(), beta = 2 * C.dot(D) - T2;
   const double disc = beta * beta - 4 * cc * dd;
   if (beta >= 0 || disc <= 0) return {kInf, kInf};  // never negative for E > 0: always
-  if (cc <= 0) return {-dd / beta, kInf};            // only the decaying part
+  if (cc <= 0) return {-dd / beta, kInf};           // only the decaying part
   // beta < 0, so neither root suffers cancellation: E_minus E_plus = dd / cc.
   const double E_plus = (-beta + std::sqrt(disc)) / (2 * cc);
   return {dd / (cc * E_plus), E_plus};

@@ -47,11 +47,11 @@ std::unique_ptr<Engine> make_fast_engine(System initial, const EngineConfig& con
 
 /// Work counters of a fast engine, for benchmarks and tests.
 struct FastEngineStats {
-  std::int64_t checks = 0;       ///< particles whose hit predicate was evaluated
-  std::int64_t hits = 0;         ///< wall hits
-  std::int64_t rebases = 0;      ///< O(N) re-bases that started a new frame
-  std::int64_t reschedules = 0;  ///< O(N) full reschedules (radius or dt changed)
-  std::int64_t expired = 0;      ///< particles rescheduled because their frame expired
+  std::int64_t checks = 0;            ///< particles whose hit predicate was evaluated
+  std::int64_t hits = 0;              ///< wall hits
+  std::int64_t rebases = 0;           ///< O(N) re-bases that started a new frame
+  std::int64_t reschedules = 0;       ///< O(N) full reschedules (radius or dt changed)
+  std::int64_t expired = 0;           ///< particles rescheduled because their frame expired
   std::int64_t lookahead_redone = 0;  ///< steps whose kicks exceeded the lookahead's budget
   std::int64_t parallel_steps = 0;    ///< steps whose checks ran on two threads
 };
