@@ -171,3 +171,24 @@ TEST_CASE("the fast engine's wall hits do not bias the energy (repulsive, 100,00
   CHECK(hits > 3000000);
   CHECK(std::abs(total_energy(engine->system()) - E0) / std::abs(E0) < 5e-11);
 }
+
+TEST_CASE("the fast engine follows changes of dt and of the wall like the reference") {
+  for (double sign : {+1.0, -1.0}) {
+    CAPTURE(sign);
+    const System s = crowded_swarm(500, sign, 13);
+    const EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
+    auto reference = make_reference_engine(s, config);
+    auto fast = make_fast_engine(s, config);
+    for (int i = 0; i < 3000; ++i) {
+      if (i % 500 == 250) {  // grow, shrink, remove and restore the wall
+        const std::optional<double> R =
+            i == 1250 ? std::nullopt : std::optional<double>(0.9 + 0.05 * (i % 1000 == 250));
+        reference->set_container_radius(R);
+        fast->set_container_radius(R);
+      }
+      const double dt = i % 700 < 350 ? 1e-3 : 2.5e-3;
+      REQUIRE(reference->step(dt).hits == fast->step(dt).hits);
+    }
+    CHECK(max_state_difference(reference->system(), fast->system()) < 1e-9);
+  }
+}
