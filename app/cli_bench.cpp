@@ -107,7 +107,7 @@ int expansion(const BenchOptions& o) {
   std::printf("\n%6s %10s %14s %14s %10s\n", "stage", "R", "P", "T", "hits");
   for (std::size_t i = 0; i < run.stages().size(); ++i) {
     const swarm::Stage& st = run.stages()[i];
-    std::printf("%6zu %10.5f %14.6g %14.6g %10ld\n", i, st.R, st.P, st.T, st.hits);
+    std::printf("%6zu %10.5f %14.6g %14.6g %10lld\n", i, st.R, st.P, st.T, (long long)st.hits);
   }
   const swarm::StageFits f = run.fits();
   for (const auto& [name, fit] : {std::pair{"P-V", f.P_V}, {"T-V", f.T_V}, {"P-T", f.P_T}})

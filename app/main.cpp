@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli.h"
+#include "cli_bench.h"
 #ifdef SWARMLAB_HAS_DESKTOP
 #include "desktop/desktop.h"
 #endif
@@ -50,10 +51,14 @@ int main(int argc, char** argv) {
   CLI::App* validate_cmd = app.add_subcommand("validate", "Check a preset and say what is wrong");
   validate_cmd->add_option("preset", validate_path, "Preset file (JSON)")->required();
 
+  swarmlab::BenchOptions bench;
+  CLI::App* bench_cmd = swarmlab::add_bench_subcommand(app, bench);
+
   CLI11_PARSE(app, argc, argv);
 
   if (*run_cmd) return swarmlab::run_command(run);
   if (*validate_cmd) return swarmlab::validate_command(validate_path);
+  if (*bench_cmd) return swarmlab::bench_command(bench);
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop({window_preset, frames, screenshot});

@@ -62,7 +62,7 @@ constexpr int kLanes = 2;
 // Steps with fewer checks than this run on one thread: waking the other costs more.
 constexpr std::size_t kParallelChecks = 384;
 // A waiting thread yields this many times before it sleeps on a condition variable.
-constexpr int kSpins = 20000;
+[[maybe_unused]] constexpr int kSpins = 20000;  // threads only exist natively
 
 inline void prefetch(const void* p) {
 #if defined(__GNUC__)

@@ -19,7 +19,7 @@ namespace swarm {
 namespace {
 
 // Below this many particles a second thread costs more than it saves.
-constexpr std::size_t kThreadedPairs = 400;
+[[maybe_unused]] constexpr std::size_t kThreadedPairs = 400;  // threads only exist natively
 
 struct Columns {
   std::vector<double> x, y, z, m;
