@@ -14,16 +14,9 @@
 
 using namespace swarm;
 using doctest::Approx;
+using testing::crowded_swarm;
 
 namespace {
-
-/// Masses in [4, 5], positions in the unit ball, speeds up to `speed`, J = sign / M so that
-/// sqrt(|J| M) = 1: an amplitude above the container radius, so the wall is hit often.
-System crowded_swarm(long n, double sign, std::uint64_t seed, double speed = 1.5) {
-  System s = testing::random_swarm(n, 1.0, seed, 1.0, speed);
-  s.J = sign / total_mass(s);
-  return s;
-}
 
 Preset shipped_preset(const std::string& name) {
   std::ifstream in(std::string(SWARM_PRESET_DIR) + "/" + name);
@@ -102,17 +95,7 @@ TEST_CASE("the fast engine reproduces the reference on the shipped expansion pre
 }
 
 TEST_CASE("the fast engine conserves energy to 1e-10 over 100,000 steps in a fixed container") {
-  for (double sign : {+1.0, -1.0}) {
-    CAPTURE(sign);
-    const System s = crowded_swarm(200, sign, 21);
-    auto engine = make_fast_engine(s, {Method::analytic, CollisionMode::paper, 1.0});
-    const double E0 = total_energy(s);
-    long hits = 0;
-    for (int i = 0; i < 100000; ++i) hits += engine->step(1e-3).hits;
-    CHECK(hits > 10000);
-    CHECK(std::abs(total_energy(engine->system()) - E0) / std::abs(E0) < 1e-10);
-    for (const auto& p : engine->system().particles) CHECK(p.r.norm() < 1.01);
-  }
+  testing::check_energy_kept_in_fixed_container(make_fast_engine);
 }
 
 TEST_CASE("the fast engine gives the wall the momentum the system loses") {
