@@ -55,11 +55,17 @@ void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
   } else {
     const auto& samples = run.samples();
     const std::size_t rows = std::min<std::size_t>(samples.size(), 11);
-    std::printf("\n%12s %12s %12s %14s %14s %14s\n", "t", "P", "T", "KE", "PE", "E");
+    // Without a container there is no wall, so no pressure or temperature to show.
+    const bool walled = run.plan().engine.container_radius.has_value();
+    std::printf("\n%12s", "t");
+    if (walled) std::printf(" %12s %12s", "P", "T");
+    std::printf(" %14s %14s %14s\n", "KE", "PE", "E");
     for (std::size_t r = 0; r < rows; ++r) {
       const swarm::Sample& x =
           samples[r * (samples.size() - 1) / std::max<std::size_t>(1, rows - 1)];
-      std::printf("%12.5g %12.5g %12.5g %14.8g %14.8g %14.10g\n", x.t, x.P, x.T, x.KE, x.PE, x.E);
+      std::printf("%12.5g", x.t);
+      if (walled) std::printf(" %12.5g %12.5g", x.P, x.T);
+      std::printf(" %14.8g %14.8g %14.10g\n", x.KE, x.PE, x.E);
     }
   }
   for (const auto& track : runs.tracks()) {
@@ -125,6 +131,8 @@ int run_command(const RunOptions& options) {
         return 1;
       }
     if (!options.quiet) {
+      std::printf("%s\n\n",
+                  preset.name.empty() ? options.preset_path.c_str() : preset.name.c_str());
       print_table(run.summary(), runs);
       if (!options.plots_dir.empty())
         std::printf("\nwrote %zu figures to %s\n", figures.size(), options.plots_dir.c_str());
