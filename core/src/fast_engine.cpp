@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -204,14 +205,8 @@ class FastEngine final : public Engine {
 
     std::size_t pending = 0;
     for (const Lane& lane : lanes_) pending += lane.near[near_slot(step_)].size();
-    if (pending >= kParallelChecks && start_worker()) {
+    if (on_both_lanes([this](int lane) { check_lane(lanes_[lane]); }, pending >= kParallelChecks))
       ++stats_.parallel_steps;
-      run_on_worker();
-      check_lane(lanes_[0]);
-      wait_for_worker();
-    } else {
-      for (Lane& lane : lanes_) check_lane(lane);
-    }
     Vec3 kick = Vec3::Zero();  // sum of m dv / M: the change of V_cm (and of Y')
     for (const Lane& lane : lanes_) {
       tally.add(lane.tally);
@@ -305,6 +300,28 @@ class FastEngine final : public Engine {
 
   // [SECTION] The second thread
 
+  /// Runs task(0) and task(1), on two threads when parallel and possible (lane 1 on the
+  /// worker). Says whether it used two.
+  template <class Task>
+  bool on_both_lanes(Task&& task, bool parallel = true) {
+    if (parallel && start_worker()) {
+#ifndef __EMSCRIPTEN__
+      worker_task_ = [&task](int lane) { task(lane); };
+#endif
+      run_on_worker();
+      task(0);
+      wait_for_worker();
+      return true;
+    }
+    task(0);
+    task(1);
+    return false;
+  }
+
+  /// The particles of lane `lane`: [begin, end).
+  std::size_t lane_begin(int lane) const { return lane == 0 ? 0 : lane_split_; }
+  std::size_t lane_end(int lane) const { return lane == 0 ? lane_split_ : orbits_.size(); }
+
 #ifndef __EMSCRIPTEN__
   bool start_worker() {
     if (thread_limit() < 2) return false;
@@ -319,7 +336,7 @@ class FastEngine final : public Engine {
       wait_until([&] { return go_.load(std::memory_order_acquire) != seen; });
       seen = go_.load(std::memory_order_acquire);
       if (stop_.load(std::memory_order_acquire)) return;
-      check_lane(lanes_[1]);
+      worker_task_(1);
       done_.store(seen, std::memory_order_release);
       std::lock_guard<std::mutex> lock(mutex_);
       cv_.notify_all();
@@ -515,12 +532,15 @@ class FastEngine final : public Engine {
     rebase_pending_ = false;
     const Flow f = Flow::over(k_, tau_);
     const Vec3 Y = f.c * aY_ + f.s * bY_, Yv = f.dc() * aY_ + f.c * bY_;
-    for (Body& o : orbits_) {
-      const Vec3 y = f.c * o.a + f.s * o.b - Y;
-      const Vec3 yv = f.dc() * o.a + f.c * o.b - Yv;
-      o.a = y;
-      o.b = yv;
-    }
+    on_both_lanes([&](int lane) {
+      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
+        Body& o = orbits_[i];
+        const Vec3 y = f.c * o.a + f.s * o.b - Y;
+        const Vec3 yv = f.dc() * o.a + f.c * o.b - Yv;
+        o.a = y;
+        o.b = yv;
+      }
+    });
     const bool keep_schedules = config_.container_radius && !schedule_all_pending_;
     if (keep_schedules) {
       // Every y_i moved by the free flow of (-Y, -Y'): so did every old frame's offset.
@@ -560,11 +580,15 @@ class FastEngine final : public Engine {
 
   /// Reschedules, in the current frame, every particle still scheduled in frame id.
   void expire(std::uint8_t id) {
-    for (std::size_t i = 0; i < orbits_.size(); ++i)
-      if (frame_of_[i] == id) {
-        ++stats_.expired;
-        schedule(std::uint32_t(i), step_);
-      }
+    std::array<std::int64_t, kLanes> expired{};
+    on_both_lanes([&](int lane) {
+      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
+        if (frame_of_[i] == id) {
+          ++expired[std::size_t(lane)];
+          schedule(std::uint32_t(i), step_);
+        }
+    });
+    for (const std::int64_t n : expired) stats_.expired += n;
   }
 
   void schedule_all() {
@@ -577,7 +601,10 @@ class FastEngine final : public Engine {
       for (auto& list : lane.lookahead) list.clear();
     }
     old_frames_.clear();
-    for (std::size_t i = 0; i < orbits_.size(); ++i) schedule(std::uint32_t(i), step_);
+    on_both_lanes([&](int lane) {
+      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
+        schedule(std::uint32_t(i), step_);
+    });
   }
 
   // [SECTION] Scheduling
@@ -745,6 +772,7 @@ class FastEngine final : public Engine {
   std::atomic<std::uint64_t> go_{0}, done_{0};
   std::atomic<bool> stop_{false};
   std::uint64_t generation_ = 0;
+  std::function<void(int)> worker_task_;
   std::mutex mutex_;
   std::condition_variable cv_;
 #endif
