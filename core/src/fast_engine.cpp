@@ -487,17 +487,28 @@ class FastEngine final : public Engine {
     const double reach = Rw - R_cm_.norm();
     const double bins_per_length = kGapBins / (0.5 * std::max(Rw, 1e-300));
     const double inv_k = k_ > 0 ? 1 / k_ : 0, inv_rate = std::sqrt(inv_k);
-    gap_histogram_.fill(0);
+    // The sums in particle order (their rounding is part of the results); the histogram,
+    // a count, on both threads.
     for (const Body& o : orbits_) {
       sum_a += o.m * o.a;
       sum_b += o.m * o.b;
-      if (k_ > 0 && Rw > 0) {
-        // max over time of |a cos + b sin / omega|^2 = P + A (fast_engine_window.cpp).
-        const double aa = o.a.squaredNorm(), BB = o.b.squaredNorm() * inv_k;
-        const double Q = 0.5 * (aa - BB), S = o.a.dot(o.b) * inv_rate;
-        const double gap = reach - std::sqrt(0.5 * (aa + BB) + std::sqrt(Q * Q + S * S));
-        gap_histogram_[std::size_t(std::clamp(gap * bins_per_length, 0.0, kGapBins - 1.0))]++;
-      }
+    }
+    gap_histogram_.fill(0);
+    if (k_ > 0 && Rw > 0) {
+      std::array<std::array<std::size_t, kGapBins>, kLanes> counts{};
+      on_both_lanes([&](int lane) {
+        auto& count = counts[std::size_t(lane)];
+        for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
+          const Body& o = orbits_[i];
+          // max over time of |a cos + b sin / omega|^2 = P + A (fast_engine_window.cpp).
+          const double aa = o.a.squaredNorm(), BB = o.b.squaredNorm() * inv_k;
+          const double Q = 0.5 * (aa - BB), S = o.a.dot(o.b) * inv_rate;
+          const double gap = reach - std::sqrt(0.5 * (aa + BB) + std::sqrt(Q * Q + S * S));
+          count[std::size_t(std::clamp(gap * bins_per_length, 0.0, kGapBins - 1.0))]++;
+        }
+      });
+      for (const auto& count : counts)
+        for (int b = 0; b < kGapBins; ++b) gap_histogram_[std::size_t(b)] += count[std::size_t(b)];
     }
     aY_ = sum_a / M_;
     bY_ = sum_b / M_;
