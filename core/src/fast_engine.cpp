@@ -310,7 +310,12 @@ class FastEngine final : public Engine {
 #endif
       run_on_worker();
       task(0);
-      wait_for_worker();
+      // Whichever thread claims lane 1 first runs it: a worker that is slow to wake (or whose
+      // core the host has taken away) then costs one thread's time, not a wait.
+      if (claim(generation_))
+        task(1);
+      else
+        wait_for_worker();
       return true;
     }
     task(0);
@@ -336,6 +341,7 @@ class FastEngine final : public Engine {
       wait_until([&] { return go_.load(std::memory_order_acquire) != seen; });
       seen = go_.load(std::memory_order_acquire);
       if (stop_.load(std::memory_order_acquire)) return;
+      if (!claim(seen)) continue;
       worker_task_(1);
       done_.store(seen, std::memory_order_release);
       std::lock_guard<std::mutex> lock(mutex_);
@@ -361,6 +367,13 @@ class FastEngine final : public Engine {
     cv_.notify_all();
   }
 
+  /// Claims lane 1 of task generation g for the calling thread. Each generation is claimed
+  /// exactly once, before the next starts, so the claims go 1, 2, 3, ...
+  bool claim(std::uint64_t g) {
+    std::uint64_t expected = g - 1;
+    return claimed_.compare_exchange_strong(expected, g, std::memory_order_acq_rel);
+  }
+
   void wait_for_worker() {
     wait_until([&] { return done_.load(std::memory_order_acquire) == generation_; });
   }
@@ -375,6 +388,7 @@ class FastEngine final : public Engine {
   bool start_worker() { return false; }
   void run_on_worker() {}
   void wait_for_worker() {}
+  bool claim(std::uint64_t) { return true; }
   void stop_worker() {}
 #endif
 
@@ -780,7 +794,7 @@ class FastEngine final : public Engine {
 
 #ifndef __EMSCRIPTEN__
   std::thread worker_;
-  std::atomic<std::uint64_t> go_{0}, done_{0};
+  std::atomic<std::uint64_t> go_{0}, done_{0}, claimed_{0};
   std::atomic<bool> stop_{false};
   std::uint64_t generation_ = 0;
   std::function<void(int)> worker_task_;
