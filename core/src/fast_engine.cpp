@@ -227,13 +227,15 @@ class FastEngine final : public Engine {
       cache_.J = J_;
       cache_.t = t_;
       cache_.particles.resize(orbits_.size());
-      for (std::size_t i = 0; i < orbits_.size(); ++i) {
-        const Body& b = orbits_[i];
-        Particle& p = cache_.particles[i];
-        p.m = b.m;
-        p.r = f.c * b.a + f.s * b.b + o;
-        p.v = f.dc() * b.a + f.c * b.b + ov;
-      }
+      on_both_lanes([&](int lane) {
+        for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
+          const Body& b = orbits_[i];
+          Particle& p = cache_.particles[i];
+          p.m = b.m;
+          p.r = f.c * b.a + f.s * b.b + o;
+          p.v = f.dc() * b.a + f.c * b.b + ov;
+        }
+      });
       cache_valid_ = true;
     }
     return cache_;
