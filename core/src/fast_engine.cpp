@@ -68,7 +68,7 @@ constexpr std::size_t kParallelChecks = 1;
 // Before that, it polls this many times without giving up the core.
 [[maybe_unused]] constexpr int kBusySpins = 4000;
 
-inline void cpu_relax() {
+[[maybe_unused]] inline void cpu_relax() {
 #if defined(__x86_64__) || defined(__i386__)
   __builtin_ia32_pause();
 #elif defined(__aarch64__)
@@ -314,7 +314,7 @@ class FastEngine final : public Engine {
       task(0);
       // Whichever thread claims lane 1 first runs it: a worker that is slow to wake (or whose
       // core the host has taken away) then costs one thread's time, not a wait.
-      if (claim(generation_))
+      if (claim_current())
         task(1);
       else
         wait_for_worker();
@@ -376,6 +376,8 @@ class FastEngine final : public Engine {
     return claimed_.compare_exchange_strong(expected, g, std::memory_order_acq_rel);
   }
 
+  bool claim_current() { return claim(generation_); }
+
   void wait_for_worker() {
     wait_until([&] { return done_.load(std::memory_order_acquire) == generation_; });
   }
@@ -390,7 +392,7 @@ class FastEngine final : public Engine {
   bool start_worker() { return false; }
   void run_on_worker() {}
   void wait_for_worker() {}
-  bool claim(std::uint64_t) { return true; }
+  bool claim_current() { return true; }
   void stop_worker() {}
 #endif
 
