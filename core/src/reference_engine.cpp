@@ -46,17 +46,7 @@ class ReferenceEngine final : public Engine {
   /// the centre-of-mass velocity because the step recomputes it from the particles.
   void reflect_predicted_leavers(double dt, WallTally& tally) {
     const double R2 = *config_.container_radius * *config_.container_radius;
-    if (config_.method == Method::analytic) {
-      const Vec3 R = cm_position(system_);
-      const Vec3 V = cm_velocity(system_);
-      const Flow f = Flow::over(spring_rate(system_), dt);
-      const Vec3 R_next = R + V * dt;
-      for (auto& p : system_.particles) {
-        const Vec3 r_next = R_next + f.c * (p.r - R) + f.s * (p.v - V);
-        if (r_next.squaredNorm() > R2 && moving_outward(p)) reflect_at_wall(p, tally);
-      }
-      return;
-    }
+    // The prediction is the method's own step, taken on a copy before anyone is reflected.
     System predicted = system_;
     swarm::step(config_.method, predicted, dt);
     for (std::size_t i = 0; i < system_.particles.size(); ++i) {
