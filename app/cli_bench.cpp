@@ -15,6 +15,7 @@
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
 #include "swarm/protocol.h"
+#include "swarm/side_by_side.h"
 
 namespace swarmlab {
 namespace {
@@ -47,28 +48,23 @@ void print_work(const swarm::Engine& engine) {
 /// Runs the reference and the chosen engine side by side for `steps` steps and says whether
 /// every step had the same hits, and how far the final states are apart.
 bool compare_with_reference(const swarm::Preset& preset, const std::string& engine, long steps) {
-  const swarm::RunPlan plan = swarm::run_plan(preset);
-  auto ref = swarm::make_reference_engine(swarm::initial_system(preset), plan.engine);
-  auto run = make(engine, swarm::initial_system(preset), plan.engine);
-  const long per_stage = plan.expansion ? swarm::steps_per_stage(*plan.expansion, plan.dt) : 0;
-  long differing = 0, hits = 0;
-  for (long i = 0; i < steps; ++i) {
-    if (per_stage > 0 && i > 0 && i % per_stage == 0) {  // the protocol's expansion step
-      const double R = *ref->container_radius() * plan.expansion->factor;
-      ref->set_container_radius(R);
-      run->set_container_radius(R);
-    }
-    const long a = ref->step(plan.dt).hits, b = run->step(plan.dt).hits;
-    hits += a;
-    if (a != b) ++differing;
+  // Both engines run under the same protocol (expansion steps included), sampled every step,
+  // so each sample's hits are that step's hits.
+  swarm::RunPlan plan = swarm::run_plan(preset);
+  plan.steps = std::min(plan.steps, steps);
+  plan.sample_every = 1;
+  const swarm::System initial = swarm::initial_system(preset);
+  swarm::ProtocolRun ref(swarm::make_reference_engine(initial, plan.engine), plan);
+  swarm::ProtocolRun run(make(engine, initial, plan.engine), plan);
+  long differing = 0;
+  while (!ref.finished()) {
+    ref.advance(1);
+    run.advance(1);
+    if (ref.samples().back().hits != run.samples().back().hits) ++differing;
   }
-  double worst = 0;
-  const auto& x = ref->system().particles;
-  const auto& y = run->system().particles;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    worst = std::max({worst, (x[i].r - y[i].r).norm(), (x[i].v - y[i].v).norm()});
-  std::printf("%-18s first %ld steps, %ld wall hits: %s; final states differ by %.2e\n",
-              "vs reference", steps, hits,
+  const double worst = swarm::max_position_difference(ref.engine().system(), run.engine().system());
+  std::printf("%-18s first %ld steps, %lld wall hits: %s; final positions differ by %.2e\n",
+              "vs reference", plan.steps, (long long)ref.summary().wall_hits,
               differing == 0 ? "the same hits in every step" : "HITS DIFFER", worst);
   return differing == 0;
 }
@@ -124,7 +120,7 @@ int scale(const BenchOptions& o) {
   const Clock::time_point start = Clock::now();
   swarm::System initial = swarm::initial_system(preset);
   const double E0 = swarm::total_energy(initial);
-  auto engine = make(o.engine, std::move(initial), {preset.method, preset.collisions, 1.0});
+  auto engine = make(o.engine, std::move(initial), swarm::run_plan(preset).engine);
   const double setup = seconds_since(start);
   long hits = 0;
   for (long i = 0; i < o.steps; ++i) hits += engine->step(preset.dt).hits;
@@ -139,7 +135,7 @@ int scale(const BenchOptions& o) {
   std::printf("%-18s %.3g particle-steps per second\n", "throughput",
               double(n) * double(o.steps) / (wall - setup));
   std::printf("%-18s %ld\n%-18s %.3e\n", "wall_hits", hits, "energy_drift",
-              (E1 - E0) / std::abs(E0));
+              swarm::relative_energy_change(E0, E1, 0));
   print_work(*engine);
   print_memory(n);
   return 0;

@@ -6,9 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "bench_workloads.h"
 #include "swarm/engine.h"
@@ -109,33 +107,9 @@ BENCHMARK(BM_Pairwise<Method::rk4>)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-/// The in-code presets must be the shipped ones, or the numbers measure something else.
-void check_presets_match_shipped() {
-#ifdef SWARM_PRESET_DIR
-  for (bool repulsive : {false, true}) {
-    const std::string path =
-        std::string(SWARM_PRESET_DIR) +
-        (repulsive ? "/fig3-repulsive-fireball.json" : "/fig2-attractive-expansion.json");
-    std::ifstream in(path);
-    if (!in) continue;
-    std::stringstream text;
-    text << in.rdbuf();
-    const PresetParse parsed = parse_preset(text.str());
-    if (!parsed.preset) continue;
-    Preset built = bench::expansion_preset(repulsive, 4000);
-    built.name = parsed.preset->name;
-    built.description = parsed.preset->description;
-    if (preset_to_json(built) != preset_to_json(*parsed.preset))
-      std::fprintf(stderr, "warning: %s differs from the benchmark's built-in preset\n",
-                   path.c_str());
-  }
-#endif
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  check_presets_match_shipped();
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

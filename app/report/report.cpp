@@ -56,15 +56,16 @@ std::vector<double> column(const std::vector<swarm::Sample>& samples, F f) {
   return out;
 }
 
-double energy_scale(const RunRecord& r) {
-  if (r.summary.E0 != 0) return std::abs(r.summary.E0);
+/// The relative energy change as the run's summary defines it (swarm::relative_energy_change).
+auto energy_change(const RunRecord& r) {
   const swarm::Sample& first = r.samples.front();
-  return first.KE + std::abs(first.PE);
+  const double E0 = r.summary.E0, fallback = first.KE + std::abs(first.PE);
+  return [E0, fallback](double E) { return swarm::relative_energy_change(E0, E, fallback); };
 }
 
 NamedFigure energy_figure(const RunRecord& r, const TimeAxis& time) {
   const std::vector<double> t = time.of(r.samples);
-  const double E0 = r.summary.E0, scale = energy_scale(r);
+  const auto change = energy_change(r);
   Panel energies{time.axis(), {"energy", "mass·length²/time²"}};
   energies.y.include_zero = true;  // room for the legend below or above the curves
   energies.series = {
@@ -74,8 +75,7 @@ NamedFigure energy_figure(const RunRecord& r, const TimeAxis& time) {
   Panel drift{time.axis(), {"(E − E₀)/|E₀|", ""}};
   drift.height = 0.45;
   drift.zero_line = true;
-  drift.series = {
-      series("", t, column(r.samples, [&](auto& s) { return (s.E - E0) / scale; }), grey)};
+  drift.series = {series("", t, column(r.samples, [&](auto& s) { return change(s.E); }), grey)};
   drift.note =
       printed("relative change of the total energy: %.2e at the end", r.summary.energy_drift);
   Figure f{"Energy over time", r.preset.name, {energies, drift}, true};
@@ -241,9 +241,9 @@ NamedFigure loglog_figure(const RunRecord& r, const StageColumn& y, const StageC
 /// Energy and position error of each method run side by side with the preset's own.
 std::vector<NamedFigure> comparison_figures(const RunRecord& r, const TimeAxis& time) {
   const std::string primary(swarm::name_of(r.preset.method));
-  const double E0 = r.summary.E0, scale = energy_scale(r);
   const std::vector<double> t = time.of(r.samples);
-  auto relative = [&](double E) { return std::abs(E - E0) / scale; };
+  const auto change_of = energy_change(r);
+  auto relative = [&](double E) { return std::abs(change_of(E)); };
 
   Panel energy{time.axis(), {"total energy E", "mass·length²/time²"}};
   Panel change{time.axis(), {"|E − E₀|/|E₀|", ""}};
