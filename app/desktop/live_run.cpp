@@ -32,12 +32,10 @@ LiveRun::LiveRun(const swarm::Preset& preset) : preset_(preset) {
     if (preset.compare[i] == swarm::Method::analytic) exact = compared_[i].get();
   if (exact && exact != primary_.get()) analytic_reference_ = exact;
   if (exact) {
-    if (preset.method != swarm::Method::analytic) errors_.push_back({preset.method, {}, {}, {}});
+    if (preset.method != swarm::Method::analytic) errors_.push_back({preset.method, {}, {}});
     for (swarm::Method m : preset.compare)
-      if (m != swarm::Method::analytic) errors_.push_back({m, {}, {}, {}});
+      if (m != swarm::Method::analytic) errors_.push_back({m, {}, {}});
   }
-  E0_.push_back(primary_->samples().front().E);
-  for (const auto& run : compared_) E0_.push_back(run->samples().front().E);
   record_errors();
 
   const double k = swarm::spring_rate(initial);
@@ -65,17 +63,16 @@ void LiveRun::record_errors() {
   swarm::ProtocolRun& exact = analytic_reference_ ? *analytic_reference_ : *primary_;
   const swarm::System& reference = exact.engine().system();
   std::size_t track = 0;
-  auto add = [&](swarm::ProtocolRun& run, double E0) {
+  // Energy errors need no track: the Compare tab reads them from each run's samples.
+  auto add = [&](swarm::ProtocolRun& run) {
     ErrorTrack& e = errors_[track++];
     const swarm::System& s = run.engine().system();
     e.t.push_back(s.t);
     e.position_error.push_back(swarm::max_position_difference(s, reference));
-    const double E = swarm::total_energy(s);
-    e.energy_error.push_back(E0 != 0 ? (E - E0) / std::abs(E0) : E - E0);
   };
-  if (preset_.method != swarm::Method::analytic) add(*primary_, E0_[0]);
+  if (preset_.method != swarm::Method::analytic) add(*primary_);
   for (std::size_t i = 0; i < compared_.size(); ++i)
-    if (preset_.compare[i] != swarm::Method::analytic) add(*compared_[i], E0_[i + 1]);
+    if (preset_.compare[i] != swarm::Method::analytic) add(*compared_[i]);
 }
 
 void LiveRun::expand_container(double factor) {

@@ -16,7 +16,6 @@ struct ErrorTrack {
   swarm::Method method;
   std::vector<double> t;
   std::vector<double> position_error;  ///< max_i |r_i - r_i(analytic)|, length
-  std::vector<double> energy_error;    ///< (E - E0) / |E0|
 };
 
 /// The recent path of one particle, in the lab frame.
@@ -70,7 +69,6 @@ class LiveRun {
   std::vector<std::unique_ptr<swarm::ProtocolRun>> compared_;
   swarm::ProtocolRun* analytic_reference_ = nullptr;
   std::vector<ErrorTrack> errors_;
-  std::vector<double> E0_;  // initial energy of primary and compared runs, in that order
   std::vector<Trail> trails_;
   long trail_stride_ = 1;  // steps between trail points: about 150 points per period
   long steps_since_trail_point_ = 0;

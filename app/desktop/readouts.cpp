@@ -49,6 +49,8 @@ double hit_rate(LiveRun& run, double window) {
 }  // namespace
 
 void draw_readouts(AppState& state) {
+  if (!ImGui::CollapsingHeader("Read-outs", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  // The O(N) diagnostics below only run while the section is open.
   const swarm::System& s = state.run->system();
   const double M = swarm::total_mass(s);
   const double k = swarm::spring_rate(s);
@@ -60,7 +62,6 @@ void draw_readouts(AppState& state) {
   const double p = swarm::total_momentum(s).norm();
   const double L = swarm::angular_momentum_cm(s).norm();
 
-  if (!ImGui::CollapsingHeader("Read-outs", ImGuiTreeNodeFlags_DefaultOpen)) return;
   char value[96];
   const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
   if (!ImGui::BeginTable("readouts", 2, flags)) return;
