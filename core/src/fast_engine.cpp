@@ -561,6 +561,7 @@ class FastEngine final : public Engine {
     rebase_pending_ = false;
     const Flow f = Flow::over(k_, tau_);
     const Vec3 Y = f.c * aY_ + f.s * bY_, Yv = f.dc() * aY_ + f.c * bY_;
+    const bool keep_schedules = config_.container_radius && !schedule_all_pending_;
     on_both_lanes([&](int lane) {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
         Body& o = orbits_[i];
@@ -568,9 +569,11 @@ class FastEngine final : public Engine {
         const Vec3 yv = f.dc() * o.a + f.c * o.b - Yv;
         o.a = y;
         o.b = yv;
+        // Dropped schedules are rebuilt from scratch: frame ids are 8 bits and wrap, so after
+        // 256 re-bases without a wall an old window could pass for one of the current frame.
+        if (!keep_schedules) o.window.first = kUnknown;
       }
     });
-    const bool keep_schedules = config_.container_radius && !schedule_all_pending_;
     if (keep_schedules) {
       // Every y_i moved by the free flow of (-Y, -Y'): so did every old frame's offset.
       for (Frame& fr : old_frames_) {
