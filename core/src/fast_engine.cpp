@@ -105,6 +105,7 @@ static_assert(sizeof(Body) == 80, "a Body should stay within 80 bytes");
 struct Frame {
   std::uint8_t id = 0;
   double margin = 0;
+  double threshold = 0, threshold2 = 0;  ///< T = R - margin and T^2: the windows' radius
   double rebase_level = 0;  ///< while current: re-base when |o| passes this
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
 };
@@ -158,6 +159,7 @@ class FastEngine final : public Engine {
     M_ = total_mass(initial);
     k_ = J_ * M_;
     two_rate_ = 2 * std::sqrt(std::abs(k_));
+    spring_ = {k_, k_ != 0 ? 1 / std::sqrt(std::abs(k_)) : 0.0};
     R_cm_ = cm_position(initial);
     V_cm_ = cm_velocity(initial);
     orbits_.resize(initial.particles.size());
@@ -180,24 +182,31 @@ class FastEngine final : public Engine {
     if (!config_.container_radius || orbits_.empty()) {
       if (epoch_too_old(dt)) rebase();
       finish_step(Flow::over(k_, tau_), Vec3::Zero(), dt);
+      flow_carried_ = false;
       return tally;
     }
     if (dt != dt_) {
       dt_ = dt;
       schedule_all_pending_ = true;
     }
-    if (epoch_too_old(dt) ||
-        offset_at(Flow::over(k_, tau_ + dt), dt).norm() > current_.rebase_level)
+    StepData& d = now_;
+    // The flow at the step's end; at its start it is the last step's end, unless a re-base
+    // restarted the epoch's time since.
+    const Flow last_end = d.f1;
+    d.f1 = Flow::over(k_, tau_ + dt);
+    const bool rebased = epoch_too_old(dt) || offset_at(d.f1, dt).norm() > current_.rebase_level;
+    if (rebased) {
       rebase();
-    fill_ahead();
+      d.f1 = Flow::over(k_, tau_ + dt);
+    }
+    d.f0 = rebased || !flow_carried_ ? Flow::over(k_, tau_) : last_end;
+    flow_carried_ = true;
+    fill_ahead(d.f1);
     if (schedule_all_pending_) schedule_all();
     redo_lookahead_if_kicks_too_large();
 
-    StepData& d = now_;
-    d.f0 = Flow::over(k_, tau_);
     d.o0 = offset_at(d.f0, 0);
     d.o0v = offset_velocity_at(d.f0);
-    d.f1 = Flow::over(k_, tau_ + dt);
     d.o1 = offset_at(d.f1, dt);
     d.R2 = *config_.container_radius * *config_.container_radius;
     d.determinant = d.f0.c * d.f0.c - d.f0.dc() * d.f0.s;
@@ -551,7 +560,9 @@ class FastEngine final : public Engine {
       extra = std::max(extra, 0.5 * Rw * bin / kGapBins);
     }
     extra = std::min(extra, 0.5 * Rw);
-    current_ = {next_frame_id_++, base + extra, base + 0.5 * extra, Vec3::Zero(), Vec3::Zero()};
+    const double T = Rw - (base + extra);
+    current_ = {next_frame_id_++, base + extra,          T,           T * T,
+                base + 0.5 * extra, Vec3::Zero(), Vec3::Zero()};
   }
 
   /// Folds Y into every y_i (O(N)) so that y_i is again the oscillation about the CM, and
@@ -592,7 +603,7 @@ class FastEngine final : public Engine {
     start_epoch();
     start_frame();
     if (int(old_frames_.size()) > kMaxOldFrames) {
-      fill_ahead();
+      fill_ahead(Flow::over(k_, tau_ + dt_));
       expire(old_frames_.front().id);
       old_frames_.erase(old_frames_.begin());
     }
@@ -643,7 +654,7 @@ class FastEngine final : public Engine {
 
   /// The flow and the predicted offset at the ends of steps step_ .. step_ + kLookahead, from
   /// the state before this step's hits; and the times the window searches start from.
-  void fill_ahead() {
+  void fill_ahead(const Flow& step_end) {
     if (dt_ != ahead_dt_) {
       // How far the offset at those step ends can move away from the prediction, given the
       // kick budget: each kick kappa moves it by kappa (u - s(u)), u the time since the kick.
@@ -653,7 +664,7 @@ class FastEngine final : public Engine {
       kick_drift_ = std::abs(u - Flow::over(k_, u).s);
     }
     const Flow& step_flow = step_flow_;
-    Flow f = Flow::over(k_, tau_ + dt_);
+    Flow f = step_end;
     for (int j = 0; j <= kLookahead; ++j) {
       ahead_[j] = {f.c, f.s, offset_at(f, (j + 1) * dt_)};
       // c(tau + dt) = c c_dt - k s s_dt, s(tau + dt) = s c_dt + c s_dt (addition theorems).
@@ -669,10 +680,10 @@ class FastEngine final : public Engine {
       c.two_rate = two_rate_;
       c.dt = dt_;
       c.tau = tau_ + (steps_ahead + 1) * dt_;
-      c.E = k_ < 0 ? std::exp(two_rate_ * c.tau) : 1.0;
     }
     const double Rw = *config_.container_radius;
-    lookahead_slack_ = kKickBudget * rate() * Rw * kick_drift_ + 1e-12 * Rw;
+    const double slack = kKickBudget * rate() * Rw * kick_drift_ + 1e-12 * Rw;
+    lookahead_limit2_ = (Rw - slack) * (Rw - slack);
   }
 
   /// Puts particle i in the bucket of the first step >= first (step_ or step_ + 1) in which
@@ -681,11 +692,10 @@ class FastEngine final : public Engine {
     Body& o = orbits_[i];
     const bool same_frame = frame_of_[i] == current_.id;
     frame_of_[i] = current_.id;
-    const double Rw = *config_.container_radius;
-    const double T = Rw - current_.margin;
+    const double T = current_.threshold;
     // The window depends only on y_i and the frame's threshold: computed once per hit or frame.
     if (T > 0 && (std::isnan(o.window.first) || !same_frame))
-      o.window = fast::window_of(o.a, o.b, k_, T * T);
+      o.window = fast::window_of(o.a, o.b, spring_, current_.threshold2);
     StepIndex due = window_step(o, T, first, clock_[first - step_]);
     if (due <= step_ + kLookahead) {
       due = look_ahead(o, due);
@@ -716,8 +726,7 @@ class FastEngine final : public Engine {
   /// outside the wall, or step_ + kLookahead + 1. Recorded, in case the kicks exceed the
   /// budget the prediction relies on.
   StepIndex look_ahead(const Body& o, StepIndex from) {
-    const double Rw = *config_.container_radius;
-    const double limit = (Rw - lookahead_slack_) * (Rw - lookahead_slack_);
+    const double limit = lookahead_limit2_;
     StepIndex due = step_ + kLookahead + 1;
     for (StepIndex m = from; m <= step_ + kLookahead; ++m) {
       const Ahead& x = ahead_[m - step_];
@@ -766,6 +775,7 @@ class FastEngine final : public Engine {
   EngineConfig config_;
   double J_ = 0, M_ = 0, k_ = 0, t_ = 0;
   double two_rate_ = 0;  // 2 sqrt|k|
+  fast::Spring spring_;
   std::vector<Body> orbits_;
   std::vector<std::uint8_t> frame_of_;  // the frame each schedule relies on; scanned on expiry
 
@@ -780,6 +790,7 @@ class FastEngine final : public Engine {
   std::array<Lane, kLanes> lanes_;
   std::size_t lane_split_ = 0;  // particles below it are in lane 0
   StepData now_{};
+  bool flow_carried_ = false;  // now_.f1 holds the flow at tau_
   Frame current_;
   std::vector<Frame> old_frames_;
   std::uint8_t next_frame_id_ = 0;
@@ -787,7 +798,7 @@ class FastEngine final : public Engine {
   // The ends of steps step_, step_ + 1 and step_ + kLookahead + 1.
   fast::Clock clock_[3];
   std::array<Ahead, kLookahead + 1> ahead_{};
-  double lookahead_slack_ = 0;
+  double lookahead_limit2_ = 0;  // (R - slack)^2: the kicks within budget move |r| less than slack
   double ahead_dt_ = 0, kick_drift_ = 0;
   Flow step_flow_;
   std::array<double, kLookahead + 1> recent_kicks_{};

@@ -1,7 +1,11 @@
 #include "fast_engine_window.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+
+#include "fast_math.h"
 
 namespace swarm::fast {
 namespace {
@@ -9,30 +13,33 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTwoPi = 2 * M_PI;
 
-Window attractive(const Vec3& a, const Vec3& b, double k, double T2) {
+Window attractive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
   // With B = b / omega and theta = omega tau:
   // |h|^2 = P + Q cos(2 theta) + S sin(2 theta) = P + A cos(2 theta - phi).
-  const Vec3 B = b * (1 / std::sqrt(k));
+  const Vec3 B = b * inv_rate;
   const double aa = a.squaredNorm(), BB = B.squaredNorm();
   const double P = 0.5 * (aa + BB), Q = 0.5 * (aa - BB), S = a.dot(B);
   const double A = std::sqrt(Q * Q + S * S);
   if (T2 <= P - A) return {0, 4};  // always at least sqrt(T2) from the origin
   if (T2 > P + A) return {0, -1};  // never
-  return {std::atan2(S, Q), std::acos((T2 - P) / A)};
+  // alpha = acos(cos_alpha); phi and alpha may each be off by kAtanError.
+  const double cos_alpha = (T2 - P) / A;
+  const double sin_alpha = std::sqrt(std::max(0.0, (1 - cos_alpha) * (1 + cos_alpha)));
+  return {fast_atan2(S, Q), fast_atan2(sin_alpha, cos_alpha) + 2 * kAtanError};
 }
 
-Window repulsive(const Vec3& a, const Vec3& b, double k, double T2) {
+Window repulsive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
   // h = C e^{Omega tau} + D e^{-Omega tau}; with E = e^{2 Omega tau},
   // E (|h|^2 - T2) = cc E^2 + beta E + dd, beta = 2 C.D - T2.
-  const Vec3 bW = b * (1 / std::sqrt(-k));
+  const Vec3 bW = b * inv_rate;
   const Vec3 C = 0.5 * (a + bW), D = 0.5 * (a - bW);
   const double cc = C.squaredNorm(), dd = D.squaredNorm(), beta = 2 * C.dot(D) - T2;
   const double disc = beta * beta - 4 * cc * dd;
   if (beta >= 0 || disc <= 0) return {kInf, kInf};  // never negative for E > 0: always
-  if (cc <= 0) return {-dd / beta, kInf};           // only the decaying part
+  if (cc <= 0) return {fast_log(-dd / beta) + kLogError, kInf};  // only the decaying part
   // beta < 0, so neither root suffers cancellation: E_minus E_plus = dd / cc.
   const double E_plus = (-beta + std::sqrt(disc)) / (2 * cc);
-  return {dd / (cc * E_plus), E_plus};
+  return {fast_log(dd / (cc * E_plus)) + kLogError, fast_log(E_plus) - kLogError};
 }
 
 Window free(const Vec3& a, const Vec3& b, double T2) {
@@ -52,9 +59,9 @@ Window free(const Vec3& a, const Vec3& b, double T2) {
 
 }  // namespace
 
-Window window_of(const Vec3& a, const Vec3& b, double k, double T2) {
-  if (k > 0) return attractive(a, b, k, T2);
-  if (k < 0) return repulsive(a, b, k, T2);
+Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2) {
+  if (spring.k > 0) return attractive(a, b, spring.inv_rate, T2);
+  if (spring.k < 0) return repulsive(a, b, spring.inv_rate, T2);
   return free(a, b, T2);
 }
 
@@ -64,15 +71,18 @@ double steps_to_window(const Window& w, const Clock& clock) {
     if (alpha < 0) return kInf;
     if (alpha >= M_PI) return 0;
     const double x = clock.two_rate * clock.tau - phi;
-    const double psi = x - kTwoPi * std::nearbyint(x * (1 / kTwoPi));  // in [-pi, pi]
+    // x minus the nearest multiple of 2 pi, in [-pi, pi] (|x| stays far below 2^53).
+    const double turns = x * (1 / kTwoPi);
+    const double psi = x - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
     if (std::abs(psi) <= alpha) return 0;
     const double ahead = psi > alpha ? kTwoPi - alpha - psi : -alpha - psi;
     return ahead / (clock.two_rate * clock.dt);
   }
   if (clock.k < 0) {
-    if (clock.E <= w.first || clock.E >= w.second) return 0;
+    const double x = clock.two_rate * clock.tau;
+    if (x <= w.first || x >= w.second) return 0;
     if (w.second == kInf) return kInf;
-    return std::log(w.second / clock.E) / (clock.two_rate * clock.dt);
+    return (w.second - x) / (clock.two_rate * clock.dt);
   }
   if (clock.tau <= w.first || clock.tau >= w.second) return 0;
   return (w.second - clock.tau) / clock.dt;

@@ -6,24 +6,29 @@
 namespace swarm::fast {
 
 /// The times at which a free oscillator h(tau) = c(tau) a + s(tau) b (Flow::over(k, tau))
-/// is at least sqrt(T2) from the origin, in two numbers:
+/// is at least sqrt(T2) from the origin, in two numbers, widened to cover their own rounding:
 /// J > 0: |h|^2 = P + A cos(2 omega tau - phi), so the window is |2 omega tau - phi| <= alpha
 ///        modulo 2 pi (first = phi, second = alpha; alpha < 0: never, alpha >= pi: always).
 /// J < 0: E (|h|^2 - T2) is a quadratic in E = exp(2 Omega tau) with positive leading
-///        coefficient: the window is E <= first or E >= second.
+///        coefficient: the window is E <= E- or E >= E+, i.e. 2 Omega tau <= first = log E-
+///        or >= second = log E+.
 /// J = 0: |h|^2 - T2 is a quadratic in tau: the window is tau <= first or tau >= second.
 struct Window {
   double first = 0, second = 0;
 };
 
-Window window_of(const Vec3& a, const Vec3& b, double k, double T2);
+/// The oscillator's k = J M and 1 / sqrt|k| (0 when k = 0).
+struct Spring {
+  double k = 0, inv_rate = 0;
+};
+
+Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2);
 
 /// The time from which a schedule looks for the window: the end of the first step it may
 /// pick, in the epoch's time.
 struct Clock {
   double k = 0, two_rate = 0, dt = 0;  ///< two_rate = 2 sqrt|k|
   double tau = 0;
-  double E = 1;  ///< exp(two_rate tau), used when k < 0
 };
 
 /// How many steps after the first candidate the window can begin: 0 when it already has,
