@@ -48,7 +48,13 @@ constexpr double kMarginDriftTimes = 4;
 // At most N / kShellBudget particles within reach of a widened margin (J > 0).
 constexpr std::size_t kShellBudget = 100;
 constexpr int kGapBins = 128;
-constexpr int kMaxOldFrames = 6;
+// For J < 0 the runaway amplifies the kicks like exp(Omega tau), so a frame's offset soon
+// outgrows any margin. A particle relies on the frame it was last scheduled in, so a new frame
+// starts at least every kRepulsiveFrameSteps steps (in O(1): it records Y's path from then
+// on) and a schedule relies only on the kicks of the next couple of hundred steps.
+constexpr StepIndex kRepulsiveFrameSteps = 32;
+// Frames without particles are dropped; beyond this many, the oldest is expired.
+constexpr int kMaxOldFrames = 64;
 // Re-base before exp(Omega tau) eats more than a few bits of the y_i (J < 0), and before the
 // phase omega tau or the drift b tau gets large enough to cost digits (J >= 0).
 constexpr double kMaxRepulsivePhase = 2.5;
@@ -99,14 +105,17 @@ struct Body {
 constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 static_assert(sizeof(Body) == 80, "a Body should stay within 80 bytes");
 
-/// A choice of the y_i (they change at every re-base). Schedules made in it assume that the
-/// shared offset o = r_i - y_i satisfies |o| <= margin at every step end. After re-bases,
-/// o_frame - o_current = c p + s q, a free oscillation in the current epoch's time.
+/// A choice of coordinates y_i - (c p + s q) for the particles (c, s the flow in the current
+/// epoch's time). Schedules made in it assume that the frame's offset, o + c p + s q with
+/// o = r_i - y_i, stays within its margin at every step end. A frame takes p, q from Y when it
+/// starts, so that its offset then moves only with the CM and the later kicks; re-bases
+/// carry p, q over into the new epoch.
 struct Frame {
   std::uint8_t id = 0;
+  StepIndex start = 0;
   double margin = 0;
   double threshold = 0, threshold2 = 0;  ///< T = R - margin and T^2: the windows' radius
-  double rebase_level = 0;  ///< while current: re-base when |o| passes this
+  double renew_level = 0;  ///< while current: start a new frame when the offset passes this
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
 };
 
@@ -129,6 +138,7 @@ struct Lane {
   WallTally tally;
   Vec3 kick = Vec3::Zero();
   std::int64_t checks = 0;
+  std::array<std::int32_t, 256> in_frame{};  // how many of the lane's particles rely on each frame
 };
 
 /// What every check of one step reads: the flow and the shared offset at its start and end.
@@ -194,7 +204,9 @@ class FastEngine final : public Engine {
     // restarted the epoch's time since.
     const Flow last_end = d.f1;
     d.f1 = Flow::over(k_, tau_ + dt);
-    const bool rebased = epoch_too_old(dt) || offset_at(d.f1, dt).norm() > current_.rebase_level;
+    // For J >= 0 a new frame comes with a re-base, which also renews the margin's statistics.
+    const bool rebased = epoch_too_old(dt) ||
+                         (k_ >= 0 && frame_offset(current_, d.f1, dt).norm() > current_.renew_level);
     if (rebased) {
       rebase();
       d.f1 = Flow::over(k_, tau_ + dt);
@@ -202,7 +214,11 @@ class FastEngine final : public Engine {
     d.f0 = rebased || !flow_carried_ ? Flow::over(k_, tau_) : last_end;
     flow_carried_ = true;
     fill_ahead(d.f1);
-    if (schedule_all_pending_) schedule_all();
+    if (schedule_all_pending_)
+      schedule_all();
+    else if (k_ < 0 && (step_ - current_.start >= kRepulsiveFrameSteps ||
+                        frame_offset(current_, d.f1, dt).norm() > current_.renew_level))
+      next_frame();
     redo_lookahead_if_kicks_too_large();
 
     d.o0 = offset_at(d.f0, 0);
@@ -210,7 +226,7 @@ class FastEngine final : public Engine {
     d.o1 = offset_at(d.f1, dt);
     d.R2 = *config_.container_radius * *config_.container_radius;
     d.determinant = d.f0.c * d.f0.c - d.f0.dc() * d.f0.s;
-    expire_violated_frames(d.f1, d.o1);
+    expire_frames(d.f1, dt);
 
     std::size_t pending = 0;
     for (const Lane& lane : lanes_) pending += lane.near[near_slot(step_)].size();
@@ -466,6 +482,9 @@ class FastEngine final : public Engine {
     return R_cm_ + V_cm_ * dt_ahead - (f.c * aY_ + f.s * bY_);
   }
   Vec3 offset_velocity_at(const Flow& f) const { return V_cm_ - (f.dc() * aY_ + f.c * bY_); }
+  Vec3 frame_offset(const Frame& fr, const Flow& f, double dt_ahead) const {
+    return offset_at(f, dt_ahead) + f.c * fr.p + f.s * fr.q;
+  }
 
   /// R_cm and Y take the same velocity kick at tau_, so o keeps its position and velocity.
   /// Y's coefficients change exactly as the sum of the y_i's do, i.e. by the kick divided by
@@ -539,6 +558,7 @@ class FastEngine final : public Engine {
     }
     aY_ = sum_a / M_;
     bY_ = sum_b / M_;
+    epoch_start_ += tau_;
     tau_ = 0;
   }
 
@@ -548,7 +568,12 @@ class FastEngine final : public Engine {
   /// of them within reach: a wide margin then costs little and lets the frame live long.
   void start_frame() {
     const double Rw = config_.container_radius.value_or(1.0);
-    const double base = offset_at(Flow::over(k_, tau_), 0).norm();
+    Frame next;
+    next.id = next_frame_id_++;
+    next.start = step_;
+    next.p = aY_;
+    next.q = bY_;
+    const double base = frame_offset(next, Flow::over(k_, tau_), 0).norm();
     double extra = kMarginFloor * Rw;
     if (k_ != 0) extra = std::max(extra, kMarginDriftTimes * V_cm_.norm() / rate());
     if (k_ > 0) {
@@ -560,9 +585,17 @@ class FastEngine final : public Engine {
       extra = std::max(extra, 0.5 * Rw * bin / kGapBins);
     }
     extra = std::min(extra, 0.5 * Rw);
-    const double T = Rw - (base + extra);
-    current_ = {next_frame_id_++, base + extra,          T,           T * T,
-                base + 0.5 * extra, Vec3::Zero(), Vec3::Zero()};
+    next.margin = base + extra;
+    next.threshold = Rw - next.margin;
+    next.threshold2 = next.threshold * next.threshold;
+    next.renew_level = base + 0.5 * extra;
+    current_ = next;
+  }
+
+  /// A new current frame without a re-base (J < 0): O(1).
+  void next_frame() {
+    old_frames_.push_back(current_);
+    start_frame();
   }
 
   /// Folds Y into every y_i (O(N)) so that y_i is again the oscillation about the CM, and
@@ -586,34 +619,32 @@ class FastEngine final : public Engine {
       }
     });
     if (keep_schedules) {
-      // Every y_i moved by the free flow of (-Y, -Y'): so did every old frame's offset.
+      // Every y_i moved by the free flow of (-Y, -Y'): the frames' p, q move with them.
+      old_frames_.push_back(current_);
       for (Frame& fr : old_frames_) {
         const Vec3 p = f.c * fr.p + f.s * fr.q - Y;
         const Vec3 q = f.dc() * fr.p + f.c * fr.q - Yv;
         fr.p = p;
         fr.q = q;
       }
-      current_.p = -Y;
-      current_.q = -Yv;
-      old_frames_.push_back(current_);
     } else {
       old_frames_.clear();
       schedule_all_pending_ = true;
     }
     start_epoch();
     start_frame();
-    if (int(old_frames_.size()) > kMaxOldFrames) {
-      fill_ahead(Flow::over(k_, tau_ + dt_));
-      expire(old_frames_.front().id);
-      old_frames_.erase(old_frames_.begin());
-    }
   }
 
-  void expire_violated_frames(const Flow& f1, const Vec3& o1) {
+  /// Drops the old frames no particle relies on any more, and expires those whose offset
+  /// leaves their margin at the end of this step (and the oldest, beyond kMaxOldFrames).
+  void expire_frames(const Flow& f1, double dt) {
     for (std::size_t j = 0; j < old_frames_.size();) {
       const Frame& fr = old_frames_[j];
-      if ((o1 + f1.c * fr.p + f1.s * fr.q).norm() > fr.margin) {
-        expire(fr.id);
+      std::int64_t relying = 0;
+      for (const Lane& lane : lanes_) relying += lane.in_frame[fr.id];
+      const bool too_many = j == 0 && old_frames_.size() > std::size_t(kMaxOldFrames);
+      if (relying == 0 || too_many || frame_offset(fr, f1, dt).norm() > fr.margin) {
+        if (relying > 0) expire(fr.id);
         old_frames_.erase(old_frames_.begin() + long(j));
       } else {
         ++j;
@@ -628,6 +659,7 @@ class FastEngine final : public Engine {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
         if (frame_of_[i] == id) {
           ++expired[std::size_t(lane)];
+          orbits_[i].window.first = kUnknown;
           schedule(std::uint32_t(i), step_);
         }
     });
@@ -642,8 +674,10 @@ class FastEngine final : public Engine {
       for (auto& bucket : lane.far) bucket.clear();
       lane.far_entries = 0;
       for (auto& list : lane.lookahead) list.clear();
+      lane.in_frame.fill(0);
     }
     old_frames_.clear();
+    for (std::size_t i = 0; i < orbits_.size(); ++i) ++lane_of(std::uint32_t(i)).in_frame[frame_of_[i]];
     on_both_lanes([&](int lane) {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
         schedule(std::uint32_t(i), step_);
@@ -679,7 +713,7 @@ class FastEngine final : public Engine {
       c.k = k_;
       c.two_rate = two_rate_;
       c.dt = dt_;
-      c.tau = tau_ + (steps_ahead + 1) * dt_;
+      c.time = epoch_start_ + tau_ + (steps_ahead + 1) * dt_;
     }
     const double Rw = *config_.container_radius;
     const double slack = kKickBudget * rate() * Rw * kick_drift_ + 1e-12 * Rw;
@@ -690,18 +724,21 @@ class FastEngine final : public Engine {
   /// it can hit the wall, as far as the schedule can tell.
   void schedule(std::uint32_t i, StepIndex first) {
     Body& o = orbits_[i];
-    const bool same_frame = frame_of_[i] == current_.id;
-    frame_of_[i] = current_.id;
-    const double T = current_.threshold;
-    // The window depends only on y_i and the frame's threshold: computed once per hit or frame.
-    if (T > 0 && (std::isnan(o.window.first) || !same_frame))
-      o.window = fast::window_of(o.a, o.b, spring_, current_.threshold2);
-    StepIndex due = window_step(o, T, first, clock_[first - step_]);
+    // A particle keeps its window, and with it the frame it relies on, until it hits the wall
+    // or that frame expires: re-bases and new frames leave the window as it was.
+    if (std::isnan(o.window.first)) {
+      if (frame_of_[i] != current_.id) move_to_current_frame(i);
+      o.window = current_.threshold > 0
+                     ? fast::window_of(o.a - current_.p, o.b - current_.q, spring_,
+                                       current_.threshold2, epoch_start_)
+                     : fast::always_window(k_);
+    }
+    StepIndex due = window_step(o, first, clock_[first - step_]);
     if (due <= step_ + kLookahead) {
       due = look_ahead(o, due);
       // Nothing within the lookahead (typically just after a hit, on the way in): carry on
       // with the window from the first step after it rather than checking there.
-      if (due == step_ + kLookahead + 1) due = window_step(o, T, due, clock_[2]);
+      if (due == step_ + kLookahead + 1) due = window_step(o, due, clock_[2]);
     }
     if (due == kParked) {
       o.due = kParked;  // until its frame expires
@@ -714,8 +751,7 @@ class FastEngine final : public Engine {
 
   /// The first step >= first at whose end |y| can be >= T (the frame's wall threshold), or
   /// kParked; clock is the time at the end of step `first`.
-  StepIndex window_step(const Body& o, double T, StepIndex first, const fast::Clock& clock) const {
-    if (T <= 0) return first;
+  StepIndex window_step(const Body& o, StepIndex first, const fast::Clock& clock) const {
     const double steps = fast::steps_to_window(o.window, clock);
     if (steps == std::numeric_limits<double>::infinity()) return kParked;
     // A thousandth of a step covers the rounding of the closed forms.
@@ -768,8 +804,14 @@ class FastEngine final : public Engine {
   void schedule_plain(std::uint32_t i) {
     Body& o = orbits_[i];
     o.due = step_;
-    frame_of_[i] = current_.id;
     enqueue(i, step_);
+  }
+
+  void move_to_current_frame(std::uint32_t i) {
+    auto& in_frame = lane_of(i).in_frame;
+    --in_frame[frame_of_[i]];
+    ++in_frame[current_.id];
+    frame_of_[i] = current_.id;
   }
 
   EngineConfig config_;
@@ -781,6 +823,7 @@ class FastEngine final : public Engine {
 
   // Shared motion, in the current epoch (tau_ is the time since it began).
   double tau_ = 0;
+  double epoch_start_ = 0;  // when the current epoch began, in time counted from the first
   Vec3 R_cm_ = Vec3::Zero(), V_cm_ = Vec3::Zero();  // at the current time
   Vec3 aY_ = Vec3::Zero(), bY_ = Vec3::Zero();      // Y(tau) = c aY + s bY
 

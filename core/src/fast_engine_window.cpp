@@ -37,9 +37,10 @@ Window repulsive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
   const double disc = beta * beta - 4 * cc * dd;
   if (beta >= 0 || disc <= 0) return {kInf, kInf};  // never negative for E > 0: always
   if (cc <= 0) return {fast_log(-dd / beta) + kLogError, kInf};  // only the decaying part
-  // beta < 0, so neither root suffers cancellation: E_minus E_plus = dd / cc.
-  const double E_plus = (-beta + std::sqrt(disc)) / (2 * cc);
-  return {fast_log(dd / (cc * E_plus)) + kLogError, fast_log(E_plus) - kLogError};
+  // beta < 0, so neither root suffers cancellation.
+  const double q = -beta + std::sqrt(disc);
+  const double E_plus = q / (2 * cc), E_minus = 2 * dd / q;
+  return {fast_log(E_minus) + kLogError, fast_log(E_plus) - kLogError};
 }
 
 Window free(const Vec3& a, const Vec3& b, double T2) {
@@ -59,10 +60,25 @@ Window free(const Vec3& a, const Vec3& b, double T2) {
 
 }  // namespace
 
-Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2) {
-  if (spring.k > 0) return attractive(a, b, spring.inv_rate, T2);
-  if (spring.k < 0) return repulsive(a, b, spring.inv_rate, T2);
-  return free(a, b, T2);
+Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2, double origin) {
+  if (spring.k == 0) {
+    const Window w = free(a, b, T2);
+    return {w.first + origin, w.second + origin};
+  }
+  // The phases 2 sqrt|k| tau move by the origin's phase; its rounding widens the window.
+  const double shift = 2 * origin / spring.inv_rate;
+  const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(shift) + 8);
+  if (spring.k > 0) {
+    const Window w = attractive(a, b, spring.inv_rate, T2);
+    return {w.first + shift, w.second < 0 || w.second >= M_PI ? w.second : w.second + rounding};
+  }
+  const Window w = repulsive(a, b, spring.inv_rate, T2);
+  return {w.first + shift + rounding, w.second + shift - rounding};
+}
+
+Window always_window(double k) {
+  if (k > 0) return {0, 4};
+  return {kInf, kInf};
 }
 
 double steps_to_window(const Window& w, const Clock& clock) {
@@ -70,7 +86,7 @@ double steps_to_window(const Window& w, const Clock& clock) {
     const double phi = w.first, alpha = w.second;
     if (alpha < 0) return kInf;
     if (alpha >= M_PI) return 0;
-    const double x = clock.two_rate * clock.tau - phi;
+    const double x = clock.two_rate * clock.time - phi;
     // x minus the nearest multiple of 2 pi, in [-pi, pi] (|x| stays far below 2^53).
     const double turns = x * (1 / kTwoPi);
     const double psi = x - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
@@ -79,13 +95,13 @@ double steps_to_window(const Window& w, const Clock& clock) {
     return ahead / (clock.two_rate * clock.dt);
   }
   if (clock.k < 0) {
-    const double x = clock.two_rate * clock.tau;
+    const double x = clock.two_rate * clock.time;
     if (x <= w.first || x >= w.second) return 0;
     if (w.second == kInf) return kInf;
     return (w.second - x) / (clock.two_rate * clock.dt);
   }
-  if (clock.tau <= w.first || clock.tau >= w.second) return 0;
-  return (w.second - clock.tau) / clock.dt;
+  if (clock.time <= w.first || clock.time >= w.second) return 0;
+  return (w.second - clock.time) / clock.dt;
 }
 
 }  // namespace swarm::fast

@@ -5,6 +5,7 @@
 // the bounds, so a particle is never checked too late; the engine's results do not depend on
 // them, only which steps a particle is looked at.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -12,7 +13,7 @@
 namespace swarm::fast {
 
 /// |fast_atan2(y, x) - atan2(y, x)| <= kAtanError radians (measured: 1.0e-8, in
-/// tests/fast_math_test.cpp), up to a sign of pi when y is -0.
+/// tests/fast_math_test.cpp), 
 inline constexpr double kAtanError = 2e-8;
 
 /// |fast_log(x) - log(x)| <= kLogError for finite x > 0 (measured: 1.5e-12).
@@ -21,8 +22,9 @@ inline constexpr double kLogError = 1e-11;
 inline double fast_atan2(double y, double x) {
   const double ay = std::abs(y), ax = std::abs(x);
   if (ay == 0 && ax == 0) return 0;
+  // The octant by arithmetic rather than branches, which the scheduler's data would mispredict.
   const bool steep = ay > ax;
-  const double t = steep ? ax / ay : ay / ax;  // in [0, 1]
+  const double t = std::min(ax, ay) / std::max(ax, ay);  // in [0, 1]
   const double u = t * t;
   // atan(t) / t as a polynomial in t^2: a degree-8 Chebyshev fit on [0, 1].
   const double p =
@@ -34,10 +36,10 @@ inline double fast_atan2(double y, double x) {
                           u * (-0.07456854838521723 +
                                u * (0.04213762374570251 +
                                     u * (-0.015731249223588546 + u * 0.0027662835283182277)))))));
-  double r = t * p;
-  if (steep) r = M_PI_2 - r;
-  if (x < 0) r = M_PI - r;
-  return y < 0 ? -r : r;
+  const double r0 = t * p;
+  const double r1 = double(steep) * M_PI_2 + (1 - 2 * double(steep)) * r0;
+  const double r = double(x < 0) * M_PI + (1 - 2 * double(x < 0)) * r1;
+  return std::copysign(r, y);
 }
 
 inline double fast_log(double x) {
@@ -45,14 +47,14 @@ inline double fast_log(double x) {
   std::memcpy(&bits, &x, sizeof bits);
   const int biased_exponent = int(bits >> 52);  // includes the sign bit: x < 0 lands above 0x7ff
   if (biased_exponent == 0 || biased_exponent >= 0x7ff) return std::log(x);
-  int e = biased_exponent - 1023;
-  bits = (bits & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1023) << 52);
-  double m;  // x = 2^e m, m in [1, 2)
-  std::memcpy(&m, &bits, sizeof m);
-  if (m > M_SQRT2) {
-    m *= 0.5;
-    ++e;
-  }
+  // x = 2^e m with m in [sqrt(1/2), sqrt 2), without a branch (as musl's log does it): the
+  // exponent is taken relative to the bits of sqrt(1/2).
+  constexpr std::uint64_t kSqrtHalfBits = 0x3fe6a09e667f3bcd;
+  const std::uint64_t relative = bits - kSqrtHalfBits;
+  const int e = int(std::int64_t(relative) >> 52);
+  const std::uint64_t m_bits = bits - (relative & (std::uint64_t(0xfff) << 52));
+  double m;
+  std::memcpy(&m, &m_bits, sizeof m);
   // log m = 2 atanh(s), s = (m - 1) / (m + 1); atanh(s) / s as a polynomial in s^2 (a
   // degree-4 Chebyshev fit for |s| <= (sqrt 2 - 1) / (sqrt 2 + 1)).
   const double s = (m - 1) / (m + 1), u = s * s;
