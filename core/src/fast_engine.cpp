@@ -36,7 +36,7 @@ constexpr StepIndex kHorizon = (kFarBlocks - 1) * kBlock;
 // Once a particle's wall window is less than this many steps away, its exact predicted lab
 // positions at the next step ends are checked one by one (the "lookahead"), so that it is
 // checked again only in a step in which it can actually hit.
-constexpr int kLookahead = 8;
+constexpr int kLookahead = 16;
 // The lookahead assumes that the centre-of-mass kicks of any kLookahead + 1 consecutive steps
 // sum to at most kKickBudget * sqrt|k| * R in size; this is checked, and the lookahead
 // schedules are redone when it fails (tiny N).
@@ -687,7 +687,7 @@ class FastEngine final : public Engine {
   // [SECTION] Scheduling
 
   /// The flow and the predicted offset at the ends of steps step_ .. step_ + kLookahead, from
-  /// the state before this step's hits; and the times the window searches start from.
+  /// the state before this step's hits.
   void fill_ahead(const Flow& step_end) {
     if (dt_ != ahead_dt_) {
       // How far the offset at those step ends can move away from the prediction, given the
@@ -707,14 +707,6 @@ class FastEngine final : public Engine {
       f.c = c;
       f.s = s;
     }
-    for (int j = 0; j < 3; ++j) {
-      fast::Clock& c = clock_[j];
-      const int steps_ahead = j < 2 ? j : kLookahead + 1;
-      c.k = k_;
-      c.two_rate = two_rate_;
-      c.dt = dt_;
-      c.time = epoch_start_ + tau_ + (steps_ahead + 1) * dt_;
-    }
     const double Rw = *config_.container_radius;
     const double slack = kKickBudget * rate() * Rw * kick_drift_ + 1e-12 * Rw;
     lookahead_limit2_ = (Rw - slack) * (Rw - slack);
@@ -733,12 +725,16 @@ class FastEngine final : public Engine {
                                        current_.threshold2, epoch_start_)
                      : fast::always_window(k_);
     }
-    StepIndex due = window_step(o, first, clock_[first - step_]);
+    fast::Span span = fast::span_of(o.window, clock_at(first));
+    StepIndex due = window_begin(span, first);
     if (due <= step_ + kLookahead) {
-      due = look_ahead(o, due);
-      // Nothing within the lookahead (typically just after a hit, on the way in): carry on
-      // with the window from the first step after it rather than checking there.
-      if (due == step_ + kLookahead + 1) due = window_step(o, due, clock_[2]);
+      // Only the steps in the window can hit: once it has begun, the lookahead goes on to
+      // its end at most (just after a hit, on the way in, that is a step or two).
+      const StepIndex last =
+          std::min(step_ + kLookahead, first + StepIndex(std::min(span.end, 1e9)) + 1);
+      due = look_ahead(o, due, last);
+      // Nothing until then: carry on with the window from the first step after.
+      if (due > last) due = window_begin(fast::span_of(o.window, clock_at(due)), due);
     }
     if (due == kParked) {
       o.due = kParked;  // until its frame expires
@@ -749,22 +745,26 @@ class FastEngine final : public Engine {
     enqueue(i, due);
   }
 
-  /// The first step >= first at whose end |y| can be >= T (the frame's wall threshold), or
-  /// kParked; clock is the time at the end of step `first`.
-  StepIndex window_step(const Body& o, StepIndex first, const fast::Clock& clock) const {
-    const double steps = fast::steps_to_window(o.window, clock);
-    if (steps == std::numeric_limits<double>::infinity()) return kParked;
-    // A thousandth of a step covers the rounding of the closed forms.
-    return first + StepIndex(std::clamp(std::floor(steps - 1e-3), 0.0, double(kHorizon)));
+  /// The time at the end of step m, as the windows count it.
+  fast::Clock clock_at(StepIndex m) const {
+    return {k_, two_rate_, dt_, epoch_start_ + tau_ + double(m - step_ + 1) * dt_};
   }
 
-  /// The first step from `from` to step_ + kLookahead whose predicted end position can be
-  /// outside the wall, or step_ + kLookahead + 1. Recorded, in case the kicks exceed the
+  /// The first step >= first at whose end |y| can be >= T (the frame's wall threshold), or
+  /// kParked; span is the window seen from the end of step `first`.
+  static StepIndex window_begin(const fast::Span& span, StepIndex first) {
+    if (span.begin == std::numeric_limits<double>::infinity()) return kParked;
+    // A thousandth of a step covers the rounding of the closed forms.
+    return first + StepIndex(std::clamp(std::floor(span.begin - 1e-3), 0.0, double(kHorizon)));
+  }
+
+  /// The first step from `from` to `last` (at most step_ + kLookahead) whose predicted end
+  /// position can be outside the wall, or last + 1. Recorded, in case the kicks exceed the
   /// budget the prediction relies on.
-  StepIndex look_ahead(const Body& o, StepIndex from) {
+  StepIndex look_ahead(const Body& o, StepIndex from, StepIndex last) {
     const double limit = lookahead_limit2_;
-    StepIndex due = step_ + kLookahead + 1;
-    for (StepIndex m = from; m <= step_ + kLookahead; ++m) {
+    StepIndex due = last + 1;
+    for (StepIndex m = from; m <= last; ++m) {
       const Ahead& x = ahead_[m - step_];
       if ((x.c * o.a + x.s * o.b + x.offset).squaredNorm() >= limit) {
         due = m;
@@ -838,8 +838,6 @@ class FastEngine final : public Engine {
   std::vector<Frame> old_frames_;
   std::uint8_t next_frame_id_ = 0;
   bool schedule_all_pending_ = true, rebase_pending_ = false;
-  // The ends of steps step_, step_ + 1 and step_ + kLookahead + 1.
-  fast::Clock clock_[3];
   std::array<Ahead, kLookahead + 1> ahead_{};
   double lookahead_limit2_ = 0;  // (R - slack)^2: the kicks within budget move |r| less than slack
   double ahead_dt_ = 0, kick_drift_ = 0;

@@ -37,8 +37,13 @@ struct Clock {
   double time = 0;                     ///< counted from 0, like the windows
 };
 
-/// How many steps after the first candidate the window can begin: 0 when it already has,
-/// +infinity when it never does. Not rounded: the caller rounds down, with a safety margin.
-double steps_to_window(const Window& w, const Clock& clock);
+/// Where the window lies, in steps after the clock's step: it begins `begin` steps after it
+/// (0: it already has; +infinity: never) and ends `end` steps after it (+infinity: it lasts).
+/// Not rounded: the caller rounds begin down and end up, with a safety margin.
+struct Span {
+  double begin = 0, end = 0;
+};
+
+Span span_of(const Window& w, const Clock& clock);
 
 }  // namespace swarm::fast
