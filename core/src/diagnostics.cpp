@@ -17,14 +17,26 @@ double potential_energy_pairwise(const System& s) {
   return 0.5 * s.J * sum;
 }
 
-double potential_energy_cm(const System& s) {
-  const Vec3 R = cm_position(s);
+EnergyParts energy_parts(const System& s) {
+  double M = 0, ke = 0;
+  Vec3 moment = Vec3::Zero();
+  for (const auto& p : s.particles) {
+    M += p.m;
+    moment += p.m * p.r;
+    ke += 0.5 * p.m * p.v.squaredNorm();
+  }
+  const Vec3 R = moment / M;  // cm_position
   double sum = 0;
   for (const auto& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
-  return 0.5 * spring_rate(s) * sum;
+  return {ke, 0.5 * (s.J * M) * sum};
 }
 
-double total_energy(const System& s) { return kinetic_energy(s) + potential_energy_cm(s); }
+double potential_energy_cm(const System& s) { return energy_parts(s).potential; }
+
+double total_energy(const System& s) {
+  const EnergyParts e = energy_parts(s);
+  return e.kinetic + e.potential;
+}
 
 Vec3 total_momentum(const System& s) {
   Vec3 P = Vec3::Zero();

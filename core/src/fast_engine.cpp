@@ -528,36 +528,38 @@ class FastEngine final : public Engine {
   /// rounding right after a re-base) and, for J > 0, how far short of the wall each
   /// particle's largest |y| falls is tallied for the next frame's margin.
   void start_epoch() {
-    Vec3 sum_a = Vec3::Zero(), sum_b = Vec3::Zero();
     const double Rw = config_.container_radius.value_or(0.0);
-    const double reach = Rw - R_cm_.norm();
+    const double reach = std::max(Rw - R_cm_.norm(), 1e-300);
     const double bins_per_length = kGapBins / (0.5 * std::max(Rw, 1e-300));
     const double inv_k = k_ > 0 ? 1 / k_ : 0, inv_rate = std::sqrt(inv_k);
-    // The sums in particle order (their rounding is part of the results); the histogram,
-    // a count, on both threads.
-    for (const Body& o : orbits_) {
-      sum_a += o.m * o.a;
-      sum_b += o.m * o.b;
-    }
+    const bool histogram = k_ > 0 && Rw > 0;
+    // Per-lane sums, combined in lane order: the rounding does not depend on the threads.
+    std::array<Vec3, kLanes> sum_a, sum_b;
+    std::array<std::array<std::size_t, kGapBins>, kLanes> counts{};
+    on_both_lanes([&](int lane) {
+      Vec3 sa = Vec3::Zero(), sb = Vec3::Zero();
+      auto& count = counts[std::size_t(lane)];
+      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
+        const Body& o = orbits_[i];
+        sa += o.m * o.a;
+        sb += o.m * o.b;
+        if (!histogram) continue;
+        // max over time of |y|^2 = |a cos + b sin / omega|^2 = P + A (fast_engine_window.cpp);
+        // (reach^2 - max |y|^2) / (2 reach) is at most the gap, which errs on the safe side.
+        const double aa = o.a.squaredNorm(), BB = o.b.squaredNorm() * inv_k;
+        const double Q = 0.5 * (aa - BB), S = o.a.dot(o.b) * inv_rate;
+        const double max_y2 = 0.5 * (aa + BB) + std::sqrt(Q * Q + S * S);
+        const double gap = (reach * reach - max_y2) / (2 * reach);
+        count[std::size_t(std::clamp(gap * bins_per_length, 0.0, kGapBins - 1.0))]++;
+      }
+      sum_a[std::size_t(lane)] = sa;
+      sum_b[std::size_t(lane)] = sb;
+    });
     gap_histogram_.fill(0);
-    if (k_ > 0 && Rw > 0) {
-      std::array<std::array<std::size_t, kGapBins>, kLanes> counts{};
-      on_both_lanes([&](int lane) {
-        auto& count = counts[std::size_t(lane)];
-        for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
-          const Body& o = orbits_[i];
-          // max over time of |a cos + b sin / omega|^2 = P + A (fast_engine_window.cpp).
-          const double aa = o.a.squaredNorm(), BB = o.b.squaredNorm() * inv_k;
-          const double Q = 0.5 * (aa - BB), S = o.a.dot(o.b) * inv_rate;
-          const double gap = reach - std::sqrt(0.5 * (aa + BB) + std::sqrt(Q * Q + S * S));
-          count[std::size_t(std::clamp(gap * bins_per_length, 0.0, kGapBins - 1.0))]++;
-        }
-      });
-      for (const auto& count : counts)
-        for (int b = 0; b < kGapBins; ++b) gap_histogram_[std::size_t(b)] += count[std::size_t(b)];
-    }
-    aY_ = sum_a / M_;
-    bY_ = sum_b / M_;
+    for (const auto& count : counts)
+      for (int b = 0; b < kGapBins; ++b) gap_histogram_[std::size_t(b)] += count[std::size_t(b)];
+    aY_ = (sum_a[0] + sum_a[1]) / M_;
+    bY_ = (sum_b[0] + sum_b[1]) / M_;
     epoch_start_ += tau_;
     tau_ = 0;
   }
@@ -694,6 +696,8 @@ class FastEngine final : public Engine {
       // kick budget: each kick kappa moves it by kappa (u - s(u)), u the time since the kick.
       ahead_dt_ = dt_;
       step_flow_ = Flow::over(k_, dt_);
+      phase_rate_ = k_ != 0 ? two_rate_ : 1.0;
+      steps_per_phase_ = 1 / (phase_rate_ * dt_);
       const double u = (kLookahead + 1) * dt_;
       kick_drift_ = std::abs(u - Flow::over(k_, u).s);
     }
@@ -747,7 +751,7 @@ class FastEngine final : public Engine {
 
   /// The time at the end of step m, as the windows count it.
   fast::Clock clock_at(StepIndex m) const {
-    return {k_, two_rate_, dt_, epoch_start_ + tau_ + double(m - step_ + 1) * dt_};
+    return {k_, phase_rate_, steps_per_phase_, epoch_start_ + tau_ + double(m - step_ + 1) * dt_};
   }
 
   /// The first step >= first at whose end |y| can be >= T (the frame's wall threshold), or
@@ -841,6 +845,7 @@ class FastEngine final : public Engine {
   std::array<Ahead, kLookahead + 1> ahead_{};
   double lookahead_limit2_ = 0;  // (R - slack)^2: the kicks within budget move |r| less than slack
   double ahead_dt_ = 0, kick_drift_ = 0;
+  double phase_rate_ = 1, steps_per_phase_ = 0;  // the windows' phase per time, steps per phase
   Flow step_flow_;
   std::array<double, kLookahead + 1> recent_kicks_{};
   // How many particles' largest |y| (J > 0) falls short of the reach R - |R_cm| by

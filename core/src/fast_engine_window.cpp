@@ -81,26 +81,4 @@ Window always_window(double k) {
   return {kInf, kInf};
 }
 
-Span span_of(const Window& w, const Clock& clock) {
-  if (clock.k > 0) {
-    const double phi = w.first, alpha = w.second;
-    if (alpha < 0) return {kInf, kInf};
-    if (alpha >= M_PI) return {0, kInf};
-    const double per_step = clock.two_rate * clock.dt;
-    const double x = clock.two_rate * clock.time - phi;
-    // x minus the nearest multiple of 2 pi, in [-pi, pi] (|x| stays far below 2^53).
-    const double turns = x * (1 / kTwoPi);
-    const double psi = x - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
-    if (std::abs(psi) <= alpha) return {0, (alpha - psi) / per_step};
-    const double ahead = psi > alpha ? kTwoPi - alpha - psi : -alpha - psi;
-    return {ahead / per_step, (ahead + 2 * alpha) / per_step};
-  }
-  // J < 0 in the phase 2 Omega t, J = 0 in t: the window is x <= first or x >= second.
-  const double x = clock.k < 0 ? clock.two_rate * clock.time : clock.time;
-  const double per_step = clock.k < 0 ? clock.two_rate * clock.dt : clock.dt;
-  if (x <= w.first) return {0, (w.first - x) / per_step};
-  if (x >= w.second) return {0, kInf};
-  return {(w.second - x) / per_step, kInf};  // +infinity when second is
-}
-
 }  // namespace swarm::fast

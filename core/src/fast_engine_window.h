@@ -1,6 +1,10 @@
 #pragma once
 // Closed-form wall windows of a free oscillator, used by the fast engine's scheduler.
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
 #include "swarm/system.h"
 
 namespace swarm::fast {
@@ -30,11 +34,12 @@ Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2, 
 /// The window of a motion that is at least sqrt(T2) from the origin at all times (T2 <= 0).
 Window always_window(double k);
 
-/// The time from which a schedule looks for the window: the end of the first step it may
-/// pick, in the epoch's time.
+/// The time from which a schedule looks for the window: the end of a step, counted from 0.
+/// The windows' phase is phase_rate * time: 2 sqrt|k| t when J != 0, t itself when J = 0.
 struct Clock {
-  double k = 0, two_rate = 0, dt = 0;  ///< two_rate = 2 sqrt|k|
-  double time = 0;                     ///< counted from 0, like the windows
+  double k = 0, phase_rate = 1;
+  double steps_per_phase = 0;  ///< 1 / (phase_rate dt)
+  double time = 0;
 };
 
 /// Where the window lies, in steps after the clock's step: it begins `begin` steps after it
@@ -44,6 +49,26 @@ struct Span {
   double begin = 0, end = 0;
 };
 
-Span span_of(const Window& w, const Clock& clock);
+inline Span span_of(const Window& w, const Clock& clock) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  constexpr double kTwoPi = 2 * M_PI;
+  if (clock.k > 0) {
+    const double phi = w.first, alpha = w.second;
+    if (alpha < 0) return {kInf, kInf};
+    if (alpha >= M_PI) return {0, kInf};
+    const double x = clock.phase_rate * clock.time - phi;
+    // x minus the nearest multiple of 2 pi, in [-pi, pi] (|x| stays far below 2^53).
+    const double turns = x * (1 / kTwoPi);
+    const double psi = x - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
+    if (std::abs(psi) <= alpha) return {0, (alpha - psi) * clock.steps_per_phase};
+    const double ahead = psi > alpha ? kTwoPi - alpha - psi : -alpha - psi;
+    return {ahead * clock.steps_per_phase, (ahead + 2 * alpha) * clock.steps_per_phase};
+  }
+  // J <= 0: the window is x <= first or x >= second.
+  const double x = clock.phase_rate * clock.time;
+  if (x <= w.first) return {0, (w.first - x) * clock.steps_per_phase};
+  if (x >= w.second) return {0, kInf};
+  return {(w.second - x) * clock.steps_per_phase, kInf};  // +infinity when second is
+}
 
 }  // namespace swarm::fast

@@ -22,8 +22,9 @@ ProtocolRun::ProtocolRun(System initial, const RunPlan& plan)
 ProtocolRun::ProtocolRun(std::unique_ptr<Engine> engine, const RunPlan& plan)
     : engine_(std::move(engine)), plan_(plan) {
   const System& s = engine_->system();
-  E0_ = total_energy(s);
-  energy_scale_ = kinetic_energy(s) + std::abs(potential_energy_cm(s));
+  const EnergyParts energy = energy_parts(s);
+  E0_ = energy.kinetic + energy.potential;
+  energy_scale_ = energy.kinetic + std::abs(energy.potential);
   samples_.push_back(sample_now());
 }
 
@@ -35,8 +36,9 @@ Sample ProtocolRun::sample_now() {
   out.P = w.P;
   out.T = w.T;
   out.hits = w.hits;
-  out.KE = kinetic_energy(s);
-  out.PE = potential_energy_cm(s);
+  const EnergyParts energy = energy_parts(s);
+  out.KE = energy.kinetic;
+  out.PE = energy.potential;
   out.E = out.KE + out.PE;
   out.R = engine_->container_radius().value_or(0.0);
   sample_meter_.reset();

@@ -12,6 +12,13 @@ double potential_energy_pairwise(const System& s);
 double potential_energy_cm(const System& s);
 /// Kinetic plus potential (CM form) energy in the lab frame.
 double total_energy(const System& s);
+
+/// The kinetic and the potential (CM form) energy in two passes over the particles, with the
+/// same sums as kinetic_energy and potential_energy_cm: for samples of large systems.
+struct EnergyParts {
+  double kinetic = 0, potential = 0;
+};
+EnergyParts energy_parts(const System& s);
 Vec3 total_momentum(const System& s);
 /// L = sum m (r - R_cm) x (v - V_cm).
 Vec3 angular_momentum_cm(const System& s);
