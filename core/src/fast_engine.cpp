@@ -52,7 +52,7 @@ constexpr int kGapBins = 128;
 // outgrows any margin. A particle relies on the frame it was last scheduled in, so a new frame
 // starts at least every kRepulsiveFrameSteps steps (in O(1): it records Y's path from then
 // on) and a schedule relies only on the kicks of the next couple of hundred steps.
-constexpr StepIndex kRepulsiveFrameSteps = 32;
+constexpr StepIndex kRepulsiveFrameSteps = 16;
 // Frames without particles are dropped; beyond this many, the oldest is expired.
 constexpr int kMaxOldFrames = 64;
 // Re-base before exp(Omega tau) eats more than a few bits of the y_i (J < 0), and before the
@@ -171,6 +171,7 @@ class FastEngine final : public Engine {
     k_ = J_ * M_;
     two_rate_ = 2 * std::sqrt(std::abs(k_));
     spring_ = {k_, k_ != 0 ? 1 / std::sqrt(std::abs(k_)) : 0.0};
+    phase_rate_ = k_ != 0 ? two_rate_ : 1.0;
     R_cm_ = cm_position(initial);
     V_cm_ = cm_velocity(initial);
     orbits_.resize(initial.particles.size());
@@ -702,7 +703,6 @@ class FastEngine final : public Engine {
       // kick budget: each kick kappa moves it by kappa (u - s(u)), u the time since the kick.
       ahead_dt_ = dt_;
       step_flow_ = Flow::over(k_, dt_);
-      phase_rate_ = k_ != 0 ? two_rate_ : 1.0;
       steps_per_phase_ = 1 / (phase_rate_ * dt_);
       const double u = (kLookahead + 1) * dt_;
       kick_drift_ = std::abs(u - Flow::over(k_, u).s);
@@ -732,7 +732,7 @@ class FastEngine final : public Engine {
       if (frame_of_[i] != current_.id) move_to_current_frame(i);
       o.window = current_.threshold > 0
                      ? fast::window_of(o.a - current_.p, o.b - current_.q, spring_,
-                                       current_.threshold2, epoch_start_)
+                                       current_.threshold2, phase_rate_ * epoch_start_)
                      : fast::always_window(k_);
     }
     fast::Span span = fast::span_of(o.window, clock_at(first));

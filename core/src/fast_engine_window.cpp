@@ -60,20 +60,17 @@ Window free(const Vec3& a, const Vec3& b, double T2) {
 
 }  // namespace
 
-Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2, double origin) {
-  if (spring.k == 0) {
-    const Window w = free(a, b, T2);
-    return {w.first + origin, w.second + origin};
-  }
-  // The phases 2 sqrt|k| tau move by the origin's phase; its rounding widens the window.
-  const double shift = 2 * origin / spring.inv_rate;
-  const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(shift) + 8);
+Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
+                 double phase_origin) {
+  // Each phase moves by the origin's; its rounding widens the window.
+  const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(phase_origin) + 8);
   if (spring.k > 0) {
     const Window w = attractive(a, b, spring.inv_rate, T2);
-    return {w.first + shift, w.second < 0 || w.second >= M_PI ? w.second : w.second + rounding};
+    return {w.first + phase_origin,
+            w.second < 0 || w.second >= M_PI ? w.second : w.second + rounding};
   }
-  const Window w = repulsive(a, b, spring.inv_rate, T2);
-  return {w.first + shift + rounding, w.second + shift - rounding};
+  const Window w = spring.k < 0 ? repulsive(a, b, spring.inv_rate, T2) : free(a, b, T2);
+  return {w.first + phase_origin + rounding, w.second + phase_origin - rounding};
 }
 
 Window always_window(double k) {

@@ -11,9 +11,10 @@ namespace swarm::fast {
 
 /// The times at which a free oscillator h(tau) = c(tau) a + s(tau) b (Flow::over(k, tau))
 /// is at least sqrt(T2) from the origin, in two numbers, widened to cover their own rounding.
-/// tau counts from the start of the oscillator's epoch, which began at time `origin`; the
-/// numbers are given in time counted from 0 (tau -> origin + tau below), so that they stay
-/// valid when the engine starts a new epoch for the same motion.
+/// tau counts from the start of the oscillator's epoch, which began at time t0; the numbers
+/// are given in time counted from 0, so that they stay valid when the engine starts a new
+/// epoch for the same motion. phase_origin is t0 in the numbers' units: 2 sqrt|k| t0 when
+/// J != 0, t0 when J = 0.
 /// J > 0: |h|^2 = P + A cos(2 omega tau - phi), so the window is |2 omega tau - phi| <= alpha
 ///        modulo 2 pi (first = phi, second = alpha; alpha < 0: never, alpha >= pi: always).
 /// J < 0: E (|h|^2 - T2) is a quadratic in E = exp(2 Omega tau) with positive leading
@@ -29,7 +30,8 @@ struct Spring {
   double k = 0, inv_rate = 0;
 };
 
-Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2, double origin);
+Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
+                 double phase_origin);
 
 /// The window of a motion that is at least sqrt(T2) from the origin at all times (T2 <= 0).
 Window always_window(double k);
