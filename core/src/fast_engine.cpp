@@ -68,7 +68,8 @@ constexpr std::size_t kPrefetch = 8;
 // the numbers do not depend on how many threads ran (one in the browser).
 constexpr int kLanes = 2;
 // Steps with fewer checks than this run on one thread. With the busy-polling hand-over below
-// even a step of a few dozen checks gains from the second core (the headline: ~60 per step).
+// even a step of a few dozen checks gains from the second core (the headline: about 40 per
+// step), so only steps without any run on one.
 constexpr std::size_t kParallelChecks = 1;
 // A waiting thread yields this many times before it sleeps on a condition variable.
 [[maybe_unused]] constexpr int kSpins = 20000;  // threads only exist natively
@@ -314,7 +315,7 @@ class FastEngine final : public Engine {
         const Vec3 r0 = d.f0.c * o.a + d.f0.s * o.b + d.o0;
         const Vec3 v0 = d.f0.dc() * o.a + d.f0.c * o.b + d.o0v;
         if (v0.dot(r0) > 0) {
-          const Vec3 dv = reflect(o.m, r0, v0, lane.tally);
+          const Vec3 dv = wall_reflection(o.m, r0, v0, lane.tally);
           // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv. The
           // flow's determinant c^2 + k s^2 is 1 only up to rounding, which for J < 0 (cosh^2 -
           // sinh^2) is a bias of its own: dividing by its computed value keeps the evaluated
@@ -508,17 +509,6 @@ class FastEngine final : public Engine {
     ++step_;
   }
 
-  /// reflect_at_wall, returning the velocity change.
-  static Vec3 reflect(double m, const Vec3& r, const Vec3& v, WallTally& tally) {
-    const Vec3 n = r.normalized();
-    const double v_r = v.dot(n);
-    const Vec3 dv = -2 * v_r * n;
-    tally.hits += 1;
-    tally.radial_impulse += std::abs(2 * m * v_r);
-    tally.hit_kinetic_energy += 0.5 * m * v.squaredNorm();
-    tally.wall_momentum -= m * dv;
-    return dv;
-  }
 
   double rate() const { return 0.5 * two_rate_; }
 
@@ -538,7 +528,7 @@ class FastEngine final : public Engine {
     const double Rw = config_.container_radius.value_or(0.0);
     const double reach = std::max(Rw - R_cm_.norm(), 1e-300);
     const double bins_per_length = kGapBins / (0.5 * std::max(Rw, 1e-300));
-    const double inv_k = k_ > 0 ? 1 / k_ : 0, inv_rate = std::sqrt(inv_k);
+    const double inv_rate = spring_.inv_rate;
     const bool histogram = k_ > 0 && Rw > 0;
     // Per-lane sums, combined in lane order: the rounding does not depend on the threads.
     std::array<Vec3, kLanes> sum_a, sum_b;
@@ -551,11 +541,9 @@ class FastEngine final : public Engine {
         sa += o.m * o.a;
         sb += o.m * o.b;
         if (!histogram) continue;
-        // max over time of |y|^2 = |a cos + b sin / omega|^2 = P + A (fast_engine_window.cpp);
         // (reach^2 - max |y|^2) / (2 reach) is at most the gap, which errs on the safe side.
-        const double aa = o.a.squaredNorm(), BB = o.b.squaredNorm() * inv_k;
-        const double Q = 0.5 * (aa - BB), S = o.a.dot(o.b) * inv_rate;
-        const double max_y2 = 0.5 * (aa + BB) + std::sqrt(Q * Q + S * S);
+        const fast::Swing swing = fast::swing_of(o.a, o.b, inv_rate);
+        const double max_y2 = swing.P + swing.A;
         const double gap = (reach * reach - max_y2) / (2 * reach);
         count[std::size_t(std::clamp(gap * bins_per_length, 0.0, kGapBins - 1.0))]++;
       }

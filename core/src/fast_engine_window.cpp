@@ -14,12 +14,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTwoPi = 2 * M_PI;
 
 Window attractive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
-  // With B = b / omega and theta = omega tau:
-  // |h|^2 = P + Q cos(2 theta) + S sin(2 theta) = P + A cos(2 theta - phi).
-  const Vec3 B = b * inv_rate;
-  const double aa = a.squaredNorm(), BB = B.squaredNorm();
-  const double P = 0.5 * (aa + BB), Q = 0.5 * (aa - BB), S = a.dot(B);
-  const double A = std::sqrt(Q * Q + S * S);
+  const auto [P, Q, S, A] = swing_of(a, b, inv_rate);
   if (T2 <= P - A) return {0, 4};  // always at least sqrt(T2) from the origin
   if (T2 > P + A) return {0, -1};  // never
   // alpha = acos(cos_alpha); phi and alpha may each be off by kAtanError.

@@ -30,6 +30,20 @@ struct Spring {
   double k = 0, inv_rate = 0;
 };
 
+/// For J > 0, with B = b / omega and theta = omega tau:
+/// |h|^2 = P + Q cos(2 theta) + S sin(2 theta) = P + A cos(2 theta - phi), so |h| swings
+/// between sqrt(P - A) and sqrt(P + A).
+struct Swing {
+  double P, Q, S, A;
+};
+
+inline Swing swing_of(const Vec3& a, const Vec3& b, double inv_rate) {
+  const Vec3 B = b * inv_rate;
+  const double aa = a.squaredNorm(), BB = B.squaredNorm();
+  const double Q = 0.5 * (aa - BB), S = a.dot(B);
+  return {0.5 * (aa + BB), Q, S, std::sqrt(Q * Q + S * S)};
+}
+
 Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
                  double phase_origin);
 
