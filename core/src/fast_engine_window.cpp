@@ -11,7 +11,6 @@ namespace swarm::fast {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kTwoPi = 2 * M_PI;
 
 Window attractive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
   const auto [P, Q, S, A] = swing_of(a, b, inv_rate);
