@@ -1,14 +1,17 @@
 // swarm_bench: particle-steps per second of the fast and the reference (straightforward
 // Appendix A) engines on the paper's expansion presets, and of the O(N^2) pairwise
-// integrators, for N from 1,000 to 1,000,000; plus the fast engine's peak memory per particle.
+// integrators, for N from 1,000 to 1,000,000; plus the fast engine's peak memory per particle,
+// and the cost of the one computation the fast engine makes at every wall hit (a wall window).
 // Run: build-dir/bench/swarm_bench [--benchmark_filter=...] (see bench/RESULTS.md).
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "bench_workloads.h"
+#include "fast_engine_window.h"
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
@@ -106,6 +109,26 @@ BENCHMARK(BM_Pairwise<Method::rk4>)
     ->Arg(4000)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+/// One wall window (fast_engine_window.h) per item: the fast engine computes one after every
+/// wall hit, so its cost bounds the cost of a hit from below. The particles of the N = 40,000
+/// expansion preset about their CM, with the frame threshold of a 0.02 margin.
+template <bool Repulsive>
+void BM_Window(benchmark::State& state) {
+  const System s = initial_system(bench::expansion_preset(Repulsive, 40000));
+  const Vec3 R = cm_position(s), V = cm_velocity(s);
+  const double k = spring_rate(s);
+  const fast::Spring spring{k, 1 / std::sqrt(std::abs(k))};
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Particle& p = s.particles[i];
+    benchmark::DoNotOptimize(fast::window_of(p.r - R, p.v - V, spring, 0.98 * 0.98, 0.0));
+    i = i + 1 == s.particles.size() ? 0 : i + 1;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Window<false>)->Name("window/attractive");
+BENCHMARK(BM_Window<true>)->Name("window/repulsive");
 
 }  // namespace
 
