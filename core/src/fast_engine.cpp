@@ -673,11 +673,15 @@ class FastEngine final : public Engine {
       for (auto& list : lane.lookahead) list.clear();
       lane.in_frame.fill(0);
     }
+    // With the old frames gone, no window may rely on one: every particle gets a window in
+    // the current frame.
     old_frames_.clear();
     for (std::size_t i = 0; i < orbits_.size(); ++i) ++lane_of(std::uint32_t(i)).in_frame[frame_of_[i]];
     on_both_lanes([&](int lane) {
-      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
+      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
+        orbits_[i].window.first = kUnknown;
         schedule(std::uint32_t(i), step_);
+      }
     });
   }
 

@@ -16,12 +16,14 @@
 /// the next step ends are looked at, so it is checked again only when it can actually hit.
 /// Positions are materialised only when system() is called.
 ///
-/// The margin G must bound |o|. A "frame" is one choice of the y_i; when o drifts (with the
-/// CM, or, when J < 0, as Y grows like exp(Omega t) from the wall kicks) the engine re-bases:
-/// it folds Y into every y_i (O(N), rare) and starts a new frame. The schedules made in an
-/// older frame stay valid while that frame's own offset stays within its margin, which is
-/// checked every step; when it does not, the particles still scheduled in it are
-/// rescheduled.
+/// The margin G must bound |o|. A "frame" fixes the coordinates a schedule is made in: y_i
+/// minus Y's path as it was when the frame began, so that the frame's offset moves only with
+/// the CM and the later kicks. A particle keeps its window, and the frame it was made in,
+/// until its next hit; the frame stays valid while its offset stays within its margin, which
+/// is checked every step, and when it does not the particles relying on it are rescheduled.
+/// When J < 0 the kicks' effect grows like exp(Omega t), so a new frame starts every few
+/// steps (O(1)); the engine also re-bases now and then, folding Y into every y_i (O(N)),
+/// to keep the digits of the y_i, which the frames carry over.
 ///
 /// The engine reproduces the reference engine's wall hits step by step (same predicate on the
 /// same prediction, evaluated from an algebraically identical state) up to rounding.
