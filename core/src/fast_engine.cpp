@@ -521,10 +521,18 @@ class FastEngine final : public Engine {
     return tau_ + dt > kMaxFreeSteps * dt;
   }
 
-  /// Starts a new epoch at the current time: Y is recomputed from the y_i (it is zero up to
-  /// rounding right after a re-base) and, for J > 0, how far short of the wall each
-  /// particle's largest |y| falls is tallied for the next frame's margin.
-  void start_epoch() {
+  /// A re-base's change of every y_i: to the oscillation about the CM from now on.
+  struct Shift {
+    Flow f;       ///< at the re-base
+    Vec3 Y, Yv;   ///< Y and its velocity then
+    bool forget;  ///< also drop every window (the schedules are being rebuilt)
+  };
+
+  /// Starts a new epoch at the current time, in one pass over the particles: applies a
+  /// re-base's shift if there is one, recomputes Y from the y_i (it is zero up to rounding
+  /// right after a re-base) and, for J > 0, tallies how far short of the wall each particle's
+  /// largest |y| falls, for the next frame's margin.
+  void start_epoch(const Shift* shift = nullptr) {
     const double Rw = config_.container_radius.value_or(0.0);
     const double reach = std::max(Rw - R_cm_.norm(), 1e-300);
     const double bins_per_length = kGapBins / (0.5 * std::max(Rw, 1e-300));
@@ -537,7 +545,17 @@ class FastEngine final : public Engine {
       Vec3 sa = Vec3::Zero(), sb = Vec3::Zero();
       auto& count = counts[std::size_t(lane)];
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
-        const Body& o = orbits_[i];
+        Body& o = orbits_[i];
+        if (shift) {
+          const Flow& f = shift->f;
+          const Vec3 y = f.c * o.a + f.s * o.b - shift->Y;
+          const Vec3 yv = f.dc() * o.a + f.c * o.b - shift->Yv;
+          o.a = y;
+          o.b = yv;
+          // Dropped schedules are rebuilt from scratch: frame ids are 8 bits and wrap, so
+          // after 256 re-bases without a wall an old window could pass for a current one.
+          if (shift->forget) o.window.first = kUnknown;
+        }
         sa += o.m * o.a;
         sb += o.m * o.b;
         if (!histogram) continue;
@@ -603,18 +621,7 @@ class FastEngine final : public Engine {
     const Flow f = Flow::over(k_, tau_);
     const Vec3 Y = f.c * aY_ + f.s * bY_, Yv = f.dc() * aY_ + f.c * bY_;
     const bool keep_schedules = config_.container_radius && !schedule_all_pending_;
-    on_both_lanes([&](int lane) {
-      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
-        Body& o = orbits_[i];
-        const Vec3 y = f.c * o.a + f.s * o.b - Y;
-        const Vec3 yv = f.dc() * o.a + f.c * o.b - Yv;
-        o.a = y;
-        o.b = yv;
-        // Dropped schedules are rebuilt from scratch: frame ids are 8 bits and wrap, so after
-        // 256 re-bases without a wall an old window could pass for one of the current frame.
-        if (!keep_schedules) o.window.first = kUnknown;
-      }
-    });
+    const Shift shift{f, Y, Yv, !keep_schedules};
     if (keep_schedules) {
       // Every y_i moved by the free flow of (-Y, -Y'): the frames' p, q move with them.
       old_frames_.push_back(current_);
@@ -628,7 +635,7 @@ class FastEngine final : public Engine {
       old_frames_.clear();
       schedule_all_pending_ = true;
     }
-    start_epoch();
+    start_epoch(&shift);
     start_frame();
   }
 
