@@ -58,6 +58,27 @@ double pairwise(Method m, long n, long steps) {
   });
 }
 
+/// Particle-steps per second of one engine on the expansion preset with N particles in its
+/// first stage (container radius 1), as swarm_bench measures them: the engine is built and its
+/// first step (which schedules every particle) taken outside the timing; then steps for at
+/// least a quarter of a second.
+double throughput(bool fast, bool repulsive, long n) {
+  const Preset p = bench::expansion_preset(repulsive, n);
+  const RunPlan plan = run_plan(p);
+  auto e = fast ? make_fast_engine(initial_system(p), plan.engine)
+                : make_reference_engine(initial_system(p), plan.engine);
+  e->step(plan.dt);
+  long steps = 0;
+  const double t = seconds([&] {
+    const auto start = std::chrono::steady_clock::now();
+    while (steps < 3 || std::chrono::steady_clock::now() - start < std::chrono::milliseconds(250)) {
+      e->step(plan.dt);
+      ++steps;
+    }
+  });
+  return double(steps) * double(n) / t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -75,6 +96,14 @@ int main(int argc, char** argv) {
               "fast: N=1000000, 1000 steps", t, hits, build);
   t = engine_steps(false, 40000, 1000, &hits, &build);
   std::printf("%-44s %8.3f s  %ld hits\n", "reference: N=40000, 1000 steps", t, hits);
+  for (const bool fast : {true, false})
+    for (const bool repulsive : {false, true}) {
+      std::printf("%-9s %-10s particle-steps/s:", fast ? "fast" : "reference",
+                  repulsive ? "repulsive" : "attractive");
+      for (const long n : {1000L, 10000L, 100000L, 1000000L})
+        std::printf("  N=%ld %.2g", n, throughput(fast, repulsive, n));
+      std::printf("\n");
+    }
   for (Method m : {Method::euler, Method::euler_cromer, Method::verlet, Method::rk4}) {
     t = pairwise(m, 2000, 20);
     std::printf("pairwise %-13s N=2000, 20 steps           %8.3f s  %.1f steps/s\n",

