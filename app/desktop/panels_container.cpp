@@ -27,6 +27,12 @@ double enclosing_radius(const swarm::Preset& p) {
   return r > 0 ? r * 1.25 : 1.0;
 }
 
+/// Switches the stepwise expansion off; the run keeps the length the expansion gave it.
+void drop_expansion(swarm::Preset& p) {
+  p.duration = p.expansion->tau * double(p.expansion->stages);
+  p.expansion.reset();
+}
+
 }  // namespace
 
 void draw_container_panel(AppState& state) {
@@ -39,10 +45,7 @@ void draw_container_panel(AppState& state) {
       d.container_radius = enclosing_radius(d);
     } else {
       d.container_radius.reset();
-      if (d.expansion) {
-        d.duration = d.expansion->tau * double(d.expansion->stages);
-        d.expansion.reset();
-      }
+      if (d.expansion) drop_expansion(d);
     }
   }
   help_marker(
@@ -74,8 +77,7 @@ void draw_container_panel(AppState& state) {
         e.tau = std::max(d.dt * 100, d.duration / 10);
         d.expansion = e;
       } else {
-        d.duration = d.expansion->tau * double(d.expansion->stages);
-        d.expansion.reset();
+        drop_expansion(d);
       }
     }
     help_marker(

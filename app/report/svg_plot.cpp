@@ -65,19 +65,12 @@ struct Extent {
   bool empty() const { return !(lo <= hi); }
 };
 
-Extent x_extent(const Panel& p) {
+/// The x or the y extent of a panel's points that can be drawn on its axes.
+Extent extent_of(const Panel& p, std::vector<double> Series::*coordinate) {
   Extent e;
   for (const Series& s : p.series)
     for (std::size_t i = 0; i < s.x.size(); ++i)
-      if (usable(s.x[i], p.x.log) && usable(s.y[i], p.y.log)) e.add(s.x[i]);
-  return e;
-}
-
-Extent y_extent(const Panel& p) {
-  Extent e;
-  for (const Series& s : p.series)
-    for (std::size_t i = 0; i < s.y.size(); ++i)
-      if (usable(s.x[i], p.x.log) && usable(s.y[i], p.y.log)) e.add(s.y[i]);
+      if (usable(s.x[i], p.x.log) && usable(s.y[i], p.y.log)) e.add((s.*coordinate)[i]);
   return e;
 }
 
@@ -280,7 +273,7 @@ std::string svg_of(const Figure& figure) {
   Extent shared;
   if (figure.shared_x)
     for (const Panel& p : figure.panels) {
-      const Extent e = x_extent(p);
+      const Extent e = extent_of(p, &Series::x);
       if (!e.empty()) shared.add(e.lo), shared.add(e.hi);
     }
 
@@ -293,8 +286,8 @@ std::string svg_of(const Figure& figure) {
             y,
             plot_width,
             kPanelUnit * p.height,
-            range_of(figure.shared_x ? shared : x_extent(p), p.x),
-            range_of(y_extent(p), p.y),
+            range_of(figure.shared_x ? shared : extent_of(p, &Series::x), p.x),
+            range_of(extent_of(p, &Series::y), p.y),
             p.x.log,
             p.y.log};
     if (p.equal_aspect && !p.x.log && !p.y.log) equalise_aspect(f);

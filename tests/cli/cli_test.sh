@@ -1,16 +1,7 @@
 #!/usr/bin/env bash
 # Drives the swarmlab binary as a user would: exit codes, messages, and no partial files.
 # Usage: cli_test.sh SWARMLAB PRESET_DIR
-set -u
-bin=$1
-presets=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
+source "$(dirname "$0")/harness.sh"
 
 # expect_error NAME PRESET_TEXT MESSAGE: validate and run must both refuse with MESSAGE on one
 # line of stderr, exit non-zero, and leave no output file.
@@ -92,5 +83,4 @@ printf '{"J": 1, "method": "rk4", "particles": {"count": 500, "position_radius":
 "$bin" run "$work/slow.json" 2>"$work/stderr" >/dev/null
 grep -q 'running \[#' "$work/stderr" && ok || bad "no progress bar on a long run"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish

@@ -3,16 +3,7 @@
 # well-formed SVG with the CSV behind each, the overlay of two saved runs, and one clear error
 # (exit 1, no file) for a directory that cannot be written.
 # Usage: plots_test.sh SWARMLAB PRESET_DIR
-set -u
-bin=$1
-presets=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
+source "$(dirname "$0")/harness.sh"
 
 # has_figures DIR NAME...: each NAME.svg parses as SVG and NAME.csv has the header and rows.
 has_figures() {
@@ -79,5 +70,4 @@ if command -v rsvg-convert >/dev/null; then
     [ "$(head -c 4 "$work/png/orbits.png" | tail -c 3)" = PNG ] && ok || bad "--png"
 fi
 
-echo "$passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish
