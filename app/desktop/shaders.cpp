@@ -7,6 +7,16 @@
 namespace swarmlab {
 namespace {
 
+/// The info log of a shader or a program, read with its pair of GL getters.
+template <class GetLength, class GetLog>
+std::vector<char> info_log(GLuint object, GetLength get_length, GetLog get_log) {
+  GLint length = 0;
+  get_length(object, GL_INFO_LOG_LENGTH, &length);
+  std::vector<char> log(std::size_t(std::max(length, 0)) + 1);
+  get_log(object, length, nullptr, log.data());
+  return log;
+}
+
 GLuint compile(const char* name, GLenum kind, const char* source) {
   const GLuint shader = glCreateShader(kind);
   const char* parts[] = {kGlslPrefix, source};
@@ -15,10 +25,9 @@ GLuint compile(const char* name, GLenum kind, const char* source) {
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(std::size_t(std::max(length, 0)) + 1);
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    const std::vector<char> log = info_log(
+        shader, [](GLuint o, GLenum q, GLint* v) { glGetShaderiv(o, q, v); },
+        [](GLuint o, GLsizei n, GLsizei* l, char* t) { glGetShaderInfoLog(o, n, l, t); });
     std::fprintf(stderr, "swarmlab: %s %s shader: %s\n", name,
                  kind == GL_VERTEX_SHADER ? "vertex" : "fragment", log.data());
     glDeleteShader(shader);
@@ -42,10 +51,9 @@ GLuint link_program(const char* name, const char* vertex_source, const char* fra
   GLint ok = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(std::size_t(std::max(length, 0)) + 1);
-    glGetProgramInfoLog(program, length, nullptr, log.data());
+    const std::vector<char> log = info_log(
+        program, [](GLuint o, GLenum q, GLint* v) { glGetProgramiv(o, q, v); },
+        [](GLuint o, GLsizei n, GLsizei* l, char* t) { glGetProgramInfoLog(o, n, l, t); });
     std::fprintf(stderr, "swarmlab: %s program: %s\n", name, log.data());
     glDeleteProgram(program);
     return 0;
