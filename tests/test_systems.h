@@ -65,4 +65,14 @@ void check_energy_kept_in_fixed_container(MakeEngine make_engine) {
   }
 }
 
+/// Steps `engine`, started from s, 5,000 times (dt = 1e-3) and checks that the momentum the
+/// wall took up is what the system lost.
+inline void check_wall_takes_lost_momentum(Engine& engine, const System& s) {
+  Vec3 to_wall = Vec3::Zero();
+  for (int i = 0; i < 5000; ++i) to_wall += engine.step(1e-3).wall_momentum;
+  const Vec3 lost = total_momentum(s) - total_momentum(engine.system());
+  CHECK(to_wall.norm() > 1.0);
+  CHECK((to_wall - lost).norm() < 1e-10 * to_wall.norm());
+}
+
 }  // namespace swarm::testing

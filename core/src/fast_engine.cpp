@@ -141,7 +141,9 @@ struct Lane {
   Vec3 kick = Vec3::Zero();
   std::int64_t checks = 0;
   std::array<std::int32_t, 256> in_frame{};
-  double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped  // how many of the lane's particles rely on each frame
+#ifdef __EMSCRIPTEN__
+  double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped
+#endif  // how many of the lane's particles rely on each frame
 };
 
 /// What every check of one step reads: the flow and the shared offset at its start and end.
@@ -659,7 +661,8 @@ class FastEngine final : public Engine {
       std::int64_t relying = 0;
       for (const Lane& lane : lanes_) relying += lane.in_frame[fr.id];
       const bool too_many = j == 0 && old_frames_.size() > std::size_t(kMaxOldFrames);
-      if (relying == 0 || too_many || frame_offset(fr, f1, dt).norm() > fr.margin) {
+      if (relying == 0 || too_many ||
+          frame_offset(fr, f1, dt).squaredNorm() > fr.margin * fr.margin) {
         if (relying > 0) expire(fr.id);
         old_frames_.erase(old_frames_.begin() + long(j));
       } else {
@@ -695,7 +698,9 @@ class FastEngine final : public Engine {
     // With the old frames gone, no window may rely on one: every particle gets a window in
     // the current frame.
     old_frames_.clear();
-    for (std::size_t i = 0; i < orbits_.size(); ++i) ++lane_of(std::uint32_t(i)).in_frame[frame_of_[i]];
+    std::fill(frame_of_.begin(), frame_of_.end(), current_.id);
+    for (int lane = 0; lane < kLanes; ++lane)
+      lanes_[std::size_t(lane)].in_frame[current_.id] = std::int32_t(lane_end(lane) - lane_begin(lane));
     on_both_lanes([&](int lane) {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
         orbits_[i].window.first = kUnknown;
