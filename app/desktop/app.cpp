@@ -138,9 +138,9 @@ void App::layout_windows() {
       ImGui::MenuItem("Controls", "1", &s.layout.controls);
       ImGui::MenuItem("Plots", "2", &s.layout.plots);
       if (ImGui::MenuItem("Larger UI", "Ctrl +"))
-        s.layout.pending_ui_scale = std::min(s.layout.ui_scale + 0.25f, 2.5f);
+        s.layout.step_ui_scale(+1);
       if (ImGui::MenuItem("Smaller UI", "Ctrl -"))
-        s.layout.pending_ui_scale = std::max(s.layout.ui_scale - 0.25f, 0.75f);
+        s.layout.step_ui_scale(-1);
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;

@@ -2,6 +2,7 @@
 // What the window shows and edits: the preset being run, the edited draft of it, the live run,
 // the camera and the display options. Panels read and change this; app.cpp draws it.
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -38,11 +39,19 @@ struct PlotOptions {
 };
 
 struct Layout {
+  static constexpr float kMinUiScale = 0.75f, kMaxUiScale = 2.5f, kUiScaleStep = 0.25f;
+
   bool controls = true, plots = true, help = false;
   float ui_scale = 1.0f;
   float pending_ui_scale = 1.0f;  ///< applied between frames by the main loop
   bool resize_panels = false;     ///< fit the panels to the window again (after a new scale)
   ViewRect view;                  ///< the 3D view: the window minus the panels
+
+  /// One step larger (+1) or smaller (-1), within the limits (menu and Ctrl +/-).
+  void step_ui_scale(int direction) {
+    pending_ui_scale = std::clamp(ui_scale + float(direction) * kUiScaleStep, kMinUiScale,
+                                  kMaxUiScale);
+  }
 };
 
 /// Frame timing, smoothed, in milliseconds.

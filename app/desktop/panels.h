@@ -27,5 +27,7 @@ void help_marker(const char* text);
 /// Whether the item just drawn was changed and released (slider let go, Enter, focus left):
 /// typed and dragged values are applied then, not at every keystroke.
 bool committed();
+/// A field for a double, any value typed; says whether an edit was committed (see committed).
+bool input_double(const char* label, double* value, const char* format = "%.6g");
 
 }  // namespace swarmlab

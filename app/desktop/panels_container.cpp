@@ -12,11 +12,6 @@
 namespace swarmlab {
 namespace {
 
-bool input_double(const char* label, double* value, const char* format = "%.6g") {
-  ImGui::InputDouble(label, value, 0, 0, format);
-  return committed();
-}
-
 /// A radius that holds the draft's particles, for switching the container on.
 double enclosing_radius(const swarm::Preset& p) {
   if (const auto* g = std::get_if<swarm::SwarmSpec>(&p.particles))

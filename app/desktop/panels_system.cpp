@@ -19,11 +19,6 @@ constexpr double kMinJ = 1e-6, kMaxJ = 100;  // slider range of |J|; any value c
 
 using ParticleList = std::vector<swarm::Particle>;
 
-bool input_double(const char* label, double* value, const char* format = "%.6g") {
-  ImGui::InputDouble(label, value, 0, 0, format);
-  return committed();
-}
-
 void draw_coupling(AppState& state) {
   swarm::Preset& d = state.draft;
   ImGui::TextUnformatted("Coupling J");

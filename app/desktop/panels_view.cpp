@@ -64,7 +64,8 @@ void draw_view_panel(AppState& state) {
 
   ImGui::Separator();
   ImGui::SetNextItemWidth(0.5f * ImGui::GetContentRegionAvail().x);
-  ImGui::SliderFloat("UI scale", &state.layout.pending_ui_scale, 0.75f, 2.5f, "%.2f");
+  ImGui::SliderFloat("UI scale", &state.layout.pending_ui_scale, Layout::kMinUiScale,
+                     Layout::kMaxUiScale, "%.2f");
   help_marker("Larger text and controls for a projector (Ctrl + and Ctrl -).");
   if (ImGui::Button("Reframe camera")) state.reframe = true;
 }

@@ -64,9 +64,9 @@ const Shortcut kShortcuts[] = {
     {SDL_SCANCODE_2, false, "2", "show / hide the plots",
      [](AppState& s) { s.layout.plots ^= true; }},
     {SDL_SCANCODE_EQUALS, true, "Ctrl +", "larger UI (projector)",
-     [](AppState& s) { s.layout.pending_ui_scale = std::min(s.layout.ui_scale + 0.25f, 2.5f); }},
+     [](AppState& s) { s.layout.step_ui_scale(+1); }},
     {SDL_SCANCODE_MINUS, true, "Ctrl -", "smaller UI",
-     [](AppState& s) { s.layout.pending_ui_scale = std::max(s.layout.ui_scale - 0.25f, 0.75f); }},
+     [](AppState& s) { s.layout.step_ui_scale(-1); }},
     {SDL_SCANCODE_H, false, "H, F1", "this help", [](AppState& s) { s.layout.help ^= true; }},
     {SDL_SCANCODE_F1, false, nullptr, nullptr, [](AppState& s) { s.layout.help ^= true; }},
 };
