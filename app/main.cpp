@@ -3,8 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 
-#include "cli.h"
-#include "cli_bench.h"
+#include "cli/cli.h"
+#include "cli/cli_bench.h"
 #ifdef SWARMLAB_HAS_DESKTOP
 #include "desktop/desktop.h"
 #endif

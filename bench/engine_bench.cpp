@@ -10,7 +10,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "bench_workloads.h"
+#include "scenarios/process_memory.h"
+#include "scenarios/workloads.h"
 #include "fast_engine_window.h"
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
@@ -26,10 +27,10 @@ using namespace swarm;
 template <bool Fast, bool Repulsive>
 void BM_Engine(benchmark::State& state) {
   const long n = long(state.range(0));
-  const Preset preset = bench::expansion_preset(Repulsive, n);
+  const Preset preset = swarmlab::scenarios::expansion_preset(Repulsive, n);
   const RunPlan plan = run_plan(preset);
-  bench::reset_peak_memory();
-  const auto before = bench::current_memory();
+  swarmlab::scenarios::reset_peak_memory();
+  const auto before = swarmlab::scenarios::current_memory();
   std::unique_ptr<Engine> engine = Fast
                                        ? make_fast_engine(initial_system(preset), plan.engine)
                                        : make_reference_engine(initial_system(preset), plan.engine);
@@ -38,7 +39,7 @@ void BM_Engine(benchmark::State& state) {
   for (auto _ : state) hits += engine->step(plan.dt).hits;
   state.SetItemsProcessed(state.iterations() * n);
   state.counters["hits/step"] = double(hits) / double(state.iterations());
-  const auto peak = bench::peak_memory();
+  const auto peak = swarmlab::scenarios::peak_memory();
   if (before && peak) state.counters["B/particle"] = double(*peak - *before) / double(n);
   state.SetLabel("particle-steps/s = items/s");
 }
@@ -47,7 +48,7 @@ void BM_Engine(benchmark::State& state) {
 template <Method M>
 void BM_Pairwise(benchmark::State& state) {
   const long n = long(state.range(0));
-  System s = initial_system(bench::expansion_preset(false, n));
+  System s = initial_system(swarmlab::scenarios::expansion_preset(false, n));
   for (auto _ : state) step(M, s, 1e-3);
   state.SetItemsProcessed(state.iterations() * n);
   state.counters["steps/s"] =
@@ -115,9 +116,9 @@ BENCHMARK(BM_Pairwise<Method::rk4>)
 /// expansion preset about their CM, with the frame threshold of a 0.02 margin.
 template <bool Repulsive>
 void BM_Window(benchmark::State& state) {
-  const System s = initial_system(bench::expansion_preset(Repulsive, 40000));
+  const System s = initial_system(swarmlab::scenarios::expansion_preset(Repulsive, 40000));
   const Vec3 R = cm_position(s), V = cm_velocity(s);
-  const double k = spring_rate(s);
+  const double k = stiffness(s);
   const fast::Spring spring{k, 1 / std::sqrt(std::abs(k))};
   std::size_t i = 0;
   for (auto _ : state) {

@@ -8,7 +8,7 @@
 #include <functional>
 #include <memory>
 
-#include "bench_workloads.h"
+#include "scenarios/workloads.h"
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
@@ -26,7 +26,7 @@ double seconds(const std::function<void()>& work) {
 
 /// The expansion preset with N particles for its first `stages` stages (all 50: the headline).
 double expansion(bool repulsive, long n, long stages, long* hits) {
-  Preset p = bench::expansion_preset(repulsive, n);
+  Preset p = swarmlab::scenarios::expansion_preset(repulsive, n);
   p.expansion->stages = stages;
   const RunPlan plan = run_plan(p);
   return seconds([&] {
@@ -38,7 +38,7 @@ double expansion(bool repulsive, long n, long stages, long* hits) {
 
 /// Builds an engine for N particles and takes `steps` steps; *build is the first part's time.
 double engine_steps(bool fast, long n, long steps, long* hits, double* build) {
-  Preset p = bench::expansion_preset(false, n);
+  Preset p = swarmlab::scenarios::expansion_preset(false, n);
   System s = initial_system(p);
   const EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
   return seconds([&] {
@@ -52,7 +52,7 @@ double engine_steps(bool fast, long n, long steps, long* hits, double* build) {
 }
 
 double pairwise(Method m, long n, long steps) {
-  System s = initial_system(bench::expansion_preset(false, n));
+  System s = initial_system(swarmlab::scenarios::expansion_preset(false, n));
   return seconds([&] {
     for (long i = 0; i < steps; ++i) step(m, s, 1e-3);
   });
@@ -63,7 +63,7 @@ double pairwise(Method m, long n, long steps) {
 /// first step (which schedules every particle) taken outside the timing; then steps for at
 /// least a quarter of a second.
 double throughput(bool fast, bool repulsive, long n) {
-  const Preset p = bench::expansion_preset(repulsive, n);
+  const Preset p = swarmlab::scenarios::expansion_preset(repulsive, n);
   const RunPlan plan = run_plan(p);
   auto e = fast ? make_fast_engine(initial_system(p), plan.engine)
                 : make_reference_engine(initial_system(p), plan.engine);

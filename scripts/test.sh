@@ -13,14 +13,15 @@ echo "== native tests (ctest)"
 (cd build && ctest --output-on-failure)
 
 echo "== core and its tests compiled with emcc, run under node"
-if [ ! -f build-wasm-core/CMakeCache.txt ]; then
-  emcmake cmake -S . -B build-wasm-core -DCMAKE_BUILD_TYPE=Release >/dev/null
+scripts/web-deps.sh
+if [ ! -f build-wasm/CMakeCache.txt ]; then
+  emcmake cmake -S . -B build-wasm -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
-cmake --build build-wasm-core -j"$(nproc)" --target swarm_tests swarmlab
-(cd build-wasm-core && ctest --output-on-failure)
+cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab
+(cd build-wasm && ctest --output-on-failure)
 
 echo "== the same presets natively and in wasm reach the same final state"
-python3 tests/wasm/same_final_state.py build/app/swarmlab build-wasm-core/app/swarmlab.js \
+python3 tests/wasm/same_final_state.py build/app/swarmlab build-wasm/app/swarmlab.js \
   tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
   assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
 

@@ -32,17 +32,17 @@ say() { printf '[web] %s\n' "$*" >&2; }
 t0=$(date +%s)
 scripts/web-deps.sh
 
-bdir=build/web-build
+bdir=build-wasm
 mkdir -p build
 # One build of build/web at a time (another caller, e.g. the browser test, waits).
 if command -v flock >/dev/null; then exec 9>build/.web-build.lock; flock 9; fi
 generator=()
 if [ ! -f "$bdir/CMakeCache.txt" ] && command -v ninja >/dev/null; then generator=(-G Ninja); fi
 say "configuring ($bdir)"
-emcmake cmake -S web -B "$bdir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >"$root/build/web-configure.log" 2>&1 \
+emcmake cmake -S . -B "$bdir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DSWARMLAB_WEB=ON >"$root/build/web-configure.log" 2>&1 \
   || { cat "$root/build/web-configure.log" >&2; say "configure failed"; exit 1; }
 say "building with -j$jobs"
-nice cmake --build "$bdir" -j"$jobs"
+nice cmake --build "$bdir" -j"$jobs" --target swarmlab_web
 for f in index.html swarmlab.js swarmlab.wasm; do
   [ -f "build/web/$f" ] || { say "missing build/web/$f"; exit 1; }
 done

@@ -1,4 +1,4 @@
-#include "bench_workloads.h"
+#include "scenarios/workloads.h"
 
 #include <doctest/doctest.h>
 
@@ -20,7 +20,7 @@ TEST_CASE("the benchmarks' built-in workloads are the shipped expansion presets"
     text << in.rdbuf();
     const PresetParse shipped = parse_preset(text.str());
     REQUIRE_MESSAGE(shipped.preset, shipped.error);
-    Preset built = bench::expansion_preset(repulsive, 4000);
+    Preset built = swarmlab::scenarios::expansion_preset(repulsive, 4000);
     built.name = shipped.preset->name;
     built.description = shipped.preset->description;
     CHECK(preset_to_json(built) == preset_to_json(*shipped.preset));

@@ -28,7 +28,7 @@ TEST_CASE("pairwise accelerations equal the pull towards the CM, -J M (r - R_cm)
   pairwise_accelerations(s, a);
   const Vec3 R = cm_position(s);
   for (std::size_t i = 0; i < s.particles.size(); ++i)
-    CHECK((a[i] + spring_rate(s) * (s.particles[i].r - R)).norm() < 1e-11);
+    CHECK((a[i] + stiffness(s) * (s.particles[i].r - R)).norm() < 1e-11);
 }
 
 TEST_CASE("numerical methods converge to the analytic orbit with their expected orders") {

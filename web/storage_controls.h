@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "app_state.h"
+#include "ui/app_state.h"
 
 namespace swarmlab {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "app.h"
+#include "ui/app.h"
 
 namespace swarmlab {
 

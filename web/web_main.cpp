@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "main_loop.h"
+#include "ui/main_loop.h"
 #include "storage_controls.h"
 #include "web_app.h"
 #include "web_preset_store.h"

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "preset_store.h"
+#include "ui/preset_store.h"
 
 namespace swarmlab {
 

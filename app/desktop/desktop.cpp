@@ -9,8 +9,8 @@
 #include <ctime>
 #include <filesystem>
 
-#include "main_loop.h"
-#include "preset_store.h"
+#include "ui/main_loop.h"
+#include "ui/preset_store.h"
 #include "screenshot.h"
 
 namespace swarmlab {

@@ -5,8 +5,8 @@
 #include <cstring>
 #include <vector>
 
-#include "atomic_file.h"
-#include "gl_api.h"
+#include "files/atomic_file.h"
+#include "ui/gl_api.h"
 
 namespace swarmlab {
 

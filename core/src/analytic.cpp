@@ -8,7 +8,7 @@ namespace swarm {
 
 AnalyticSolution::AnalyticSolution(const System& initial)
     : initial_(initial),
-      k_(spring_rate(initial)),
+      k_(stiffness(initial)),
       cm_position0_(swarm::cm_position(initial)),
       cm_velocity_(swarm::cm_velocity(initial)) {
   x0_.reserve(initial.particles.size());
@@ -43,7 +43,7 @@ System AnalyticSolution::at(double t) const {
   return s;
 }
 
-double AnalyticSolution::omega() const { return rate_of(k_); }
+double AnalyticSolution::omega() const { return omega_of(k_); }
 double AnalyticSolution::period() const { return period_of(k_); }
 
 OrbitParameters AnalyticSolution::orbit(std::size_t i) const {

@@ -64,7 +64,7 @@ class ReferenceEngine final : public Engine {
     for (;;) {
       const Vec3 R = cm_position(system_);
       const Vec3 V = cm_velocity(system_);
-      const double k = spring_rate(system_);
+      const double k = stiffness(system_);
       auto position_after = [&](const Particle& p, double tau) {
         const Flow f = Flow::over(k, tau);
         return Vec3(R + V * tau + f.c * (p.r - R) + f.s * (p.v - V));

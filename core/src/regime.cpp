@@ -11,7 +11,7 @@ Regime regime_of(double k) {
   return Regime::free;
 }
 
-double rate_of(double k) { return std::sqrt(std::abs(k)); }
+double omega_of(double k) { return std::sqrt(std::abs(k)); }
 
 double period_of(double k) {
   if (k > 0) return 2 * M_PI / std::sqrt(k);
@@ -19,7 +19,7 @@ double period_of(double k) {
 }
 
 Flow Flow::over(double k, double t) {
-  const double w = rate_of(k);
+  const double w = omega_of(k);
   switch (regime_of(k)) {
     case Regime::attractive:
       return {std::cos(w * t), std::sin(w * t) / w, k};

@@ -8,7 +8,7 @@ void step_analytic(System& s, double dt) {
   // repulsive case any difference between the two would grow as exp(Omega t).
   const Vec3 R = cm_position(s);
   const Vec3 V = cm_velocity(s);
-  const Flow f = Flow::over(spring_rate(s), dt);
+  const Flow f = Flow::over(stiffness(s), dt);
   const Vec3 R_next = R + V * dt;
   for (auto& p : s.particles) {
     const Vec3 x = p.r - R;

@@ -20,6 +20,6 @@ Vec3 cm_velocity(const System& s) {
   return sum / total_mass(s);
 }
 
-double spring_rate(const System& s) { return s.J * total_mass(s); }
+double stiffness(const System& s) { return s.J * total_mass(s); }
 
 }  // namespace swarm

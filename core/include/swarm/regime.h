@@ -8,8 +8,9 @@ enum class Regime { attractive, free, repulsive };
 /// Classifies k = J M: oscillation (k > 0), free flight (k = 0), exponential runaway (k < 0).
 Regime regime_of(double k);
 
-/// omega = sqrt(J M) for J > 0, Omega = sqrt(-J M) for J < 0, 0 for J = 0.
-double rate_of(double k);
+/// sqrt(|k|) (1/time): the angular frequency omega = sqrt(J M) for J > 0, the runaway rate
+/// Omega = sqrt(-J M) for J < 0, 0 for J = 0.
+double omega_of(double k);
 
 /// Period 2 pi / omega of the attractive case; infinity otherwise.
 double period_of(double k);

@@ -28,7 +28,8 @@ double total_mass(const System& s);
 Vec3 cm_position(const System& s);
 Vec3 cm_velocity(const System& s);
 
-/// k = J M, the squared frequency every particle shares (negative when repulsive).
-double spring_rate(const System& s);
+/// k = J M (1/time^2): the spring constant per unit mass that ties every particle to the CM,
+/// omega^2 when attractive and -Omega^2 when repulsive.
+double stiffness(const System& s);
 
 }  // namespace swarm

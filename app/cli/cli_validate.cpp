@@ -1,7 +1,7 @@
 #include <cstdio>
 
 #include "cli.h"
-#include "preset_file.h"
+#include "files/preset_file.h"
 
 namespace swarmlab {
 

@@ -128,10 +128,10 @@ void draw_springs(const Painter& paint, const swarm::System& s, SpringOverlay mo
 /// one period when J > 0, a stretch of the runaway or the straight line otherwise.
 std::vector<Vec3f> orbit_ahead(const swarm::System& s, std::size_t i, float scene_radius) {
   const swarm::Vec3 R = swarm::cm_position(s), V = swarm::cm_velocity(s);
-  const double k = swarm::spring_rate(s);
+  const double k = swarm::stiffness(s);
   const swarm::Particle& p = s.particles[i];
   const swarm::Vec3 x = p.r - R, u = p.v - V;
-  const double rate = swarm::rate_of(k);
+  const double rate = swarm::omega_of(k);
   double span;
   if (k > 0)
     span = 2 * M_PI / rate;

@@ -53,9 +53,9 @@ void draw_readouts(AppState& state) {
   // The O(N) diagnostics below only run while the section is open.
   const swarm::System& s = state.run->system();
   const double M = swarm::total_mass(s);
-  const double k = swarm::spring_rate(s);
+  const double k = swarm::stiffness(s);
   const swarm::Regime regime = swarm::regime_of(k);
-  const double rate = swarm::rate_of(k);
+  const double rate = swarm::omega_of(k);
   const double KE = swarm::kinetic_energy(s);
   const double E = KE + swarm::potential_energy_cm(s);
   const double E0 = state.run->primary().samples().front().E;

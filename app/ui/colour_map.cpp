@@ -39,7 +39,7 @@ double ParticleQuantity::operator()(const swarm::Particle& p) const {
     case ColourBy::mass:
       return p.m;
     case ColourBy::energy:
-      return 0.5 * p.m * p.v.squaredNorm() + 0.5 * spring_rate * p.m * (p.r - cm).squaredNorm();
+      return 0.5 * p.m * p.v.squaredNorm() + 0.5 * stiffness * p.m * (p.r - cm).squaredNorm();
   }
   return 0;
 }

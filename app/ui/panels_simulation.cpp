@@ -129,8 +129,8 @@ void draw_transport_bar(AppState& state) {
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
 
   const double t = state.run->time();
-  const double rate = swarm::rate_of(swarm::spring_rate(state.run->system()));
-  if (swarm::regime_of(swarm::spring_rate(state.run->system())) == swarm::Regime::attractive)
+  const double rate = swarm::omega_of(swarm::stiffness(state.run->system()));
+  if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
     ImGui::Text("t = %.3f   \u03c9t/2\u03c0 = %.3f", t, rate * t / (2 * M_PI));
   else if (rate > 0)
     ImGui::Text("t = %.3f   \u03a9t = %.3f", t, rate * t);

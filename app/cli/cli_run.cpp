@@ -3,9 +3,9 @@
 #include <new>
 #include <stdexcept>
 
-#include "atomic_file.h"
+#include "files/atomic_file.h"
 #include "cli.h"
-#include "preset_file.h"
+#include "files/preset_file.h"
 #include "progress_bar.h"
 #include "report/plot_files.h"
 #include "report/report.h"

@@ -38,8 +38,8 @@ LiveRun::LiveRun(const swarm::Preset& preset) : preset_(preset) {
   }
   record_errors();
 
-  const double k = swarm::spring_rate(initial);
-  const double rate = swarm::rate_of(k);
+  const double k = swarm::stiffness(initial);
+  const double rate = swarm::omega_of(k);
   const double period = rate > 0 ? 2 * M_PI / rate : 2 * M_PI;
   trail_stride_ = std::max(1L, std::lround(period / 150.0 / preset.dt));
 }

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "atomic_file.h"
-#include "preset_file.h"
+#include "files/atomic_file.h"
+#include "files/preset_file.h"
 #include "preset_store.h"
 
 namespace swarmlab {

@@ -25,7 +25,7 @@ Rgba8 turbo(float x, std::uint8_t alpha = 255);
 struct ParticleQuantity {
   ColourBy by = ColourBy::speed;
   swarm::Vec3 cm = swarm::Vec3::Zero();
-  double spring_rate = 0;  ///< J M
+  double stiffness = 0;  ///< J M
 
   double operator()(const swarm::Particle& p) const;
 };

@@ -30,7 +30,7 @@ void AppState::open(const swarm::Preset& p, std::string from) {
 
   // Start at a pace a class can follow: a period in five seconds, an expansion stage in ten.
   const swarm::System& s = run->system();
-  const double rate = swarm::rate_of(swarm::spring_rate(s));
+  const double rate = swarm::omega_of(swarm::stiffness(s));
   if (p.expansion)
     speed = p.expansion->tau / 10;
   else if (rate > 0)

@@ -276,7 +276,7 @@ void App::build_particles() {
   AppState& s = state_;
   const swarm::System& system = s.run->system();
   ParticleQuantity quantity{s.view.colour_by, swarm::cm_position(system),
-                            swarm::spring_rate(system)};
+                            swarm::stiffness(system)};
   const float base = s.particle_radius * s.view.particle_size;
   const double inverse_heaviest = 1.0 / s.heaviest_mass;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;

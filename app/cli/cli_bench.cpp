@@ -9,8 +9,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "bench_workloads.h"
-#include "preset_file.h"
+#include "scenarios/process_memory.h"
+#include "scenarios/workloads.h"
+#include "files/preset_file.h"
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
@@ -33,7 +34,7 @@ std::unique_ptr<swarm::Engine> make(const std::string& engine, swarm::System s,
 }
 
 void print_memory(long particles) {
-  if (const auto peak = swarm::bench::peak_memory())
+  if (const auto peak = swarmlab::scenarios::peak_memory())
     std::printf("%-18s %.1f MiB = %.1f bytes per particle (whole process)\n", "peak memory",
                 double(*peak) / (1 << 20), double(*peak) / double(particles));
 }
@@ -72,14 +73,14 @@ bool compare_with_reference(const swarm::Preset& preset, const std::string& engi
 int expansion(const BenchOptions& o) {
   const bool repulsive = o.workload == "fireball";
   const long n = o.particles > 0 ? o.particles : 40000;
-  swarm::Preset preset = swarm::bench::expansion_preset(repulsive, n);
+  swarm::Preset preset = swarmlab::scenarios::expansion_preset(repulsive, n);
   if (!o.preset_path.empty()) {
     const swarm::PresetParse parsed = read_preset_file(o.preset_path);
     if (!parsed.preset) {
       std::fprintf(stderr, "swarmlab bench: %s\n", parsed.error.c_str());
       return 2;
     }
-    preset = swarm::bench::scaled(*parsed.preset, n);
+    preset = swarmlab::scenarios::scaled(*parsed.preset, n);
   }
   const swarm::RunPlan plan = swarm::run_plan(preset);
   std::printf("%-18s %s\n%-18s %ld particles, %ld steps of dt = %g, %s engine\n", "workload",
@@ -115,7 +116,7 @@ int expansion(const BenchOptions& o) {
 
 int scale(const BenchOptions& o) {
   const long n = o.particles > 0 ? o.particles : 1000000;
-  swarm::Preset preset = swarm::bench::expansion_preset(o.repulsive, n);
+  swarm::Preset preset = swarmlab::scenarios::expansion_preset(o.repulsive, n);
   preset.expansion.reset();  // the first stage's fixed container
   const Clock::time_point start = Clock::now();
   swarm::System initial = swarm::initial_system(preset);
