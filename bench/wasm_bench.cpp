@@ -12,7 +12,7 @@
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 
 namespace {
 
@@ -30,7 +30,7 @@ double expansion(bool repulsive, long n, long stages, long* hits) {
   p.expansion->stages = stages;
   const RunPlan plan = run_plan(p);
   return seconds([&] {
-    ProtocolRun run(make_engine(initial_system(p), plan.engine), plan);
+    Run run(make_engine(initial_system(p), plan.engine), plan);
     run.finish();
     *hits = run.summary().wall_hits;
   });
@@ -44,7 +44,8 @@ double engine_steps(bool fast, long n, long steps, long* hits, double* build) {
   return seconds([&] {
     std::unique_ptr<Engine> e;
     *build = seconds([&] {
-      e = fast ? make_fast_engine(std::move(s), config) : make_reference_engine(std::move(s), config);
+      e = fast ? make_fast_engine(std::move(s), config)
+               : make_reference_engine(std::move(s), config);
     });
     *hits = 0;
     for (long i = 0; i < steps; ++i) *hits += e->step(p.dt).hits;

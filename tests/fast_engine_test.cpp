@@ -76,8 +76,8 @@ TEST_CASE("the fast engine reproduces the reference on the shipped expansion pre
     preset.expansion->tau = 300 * preset.dt;
     preset.expansion->stages = 3;
     const RunPlan plan = run_plan(preset);
-    ProtocolRun reference(make_reference_engine(initial_system(preset), plan.engine), plan);
-    ProtocolRun fast(make_fast_engine(initial_system(preset), plan.engine), plan);
+    Run reference(make_reference_engine(initial_system(preset), plan.engine), plan);
+    Run fast(make_fast_engine(initial_system(preset), plan.engine), plan);
     while (!reference.finished()) {
       reference.advance(1);
       fast.advance(1);

@@ -8,7 +8,7 @@
 
 #include "swarm/analytic.h"
 #include "swarm/diagnostics.h"
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 #include "test_systems.h"
 
 using namespace swarm;
@@ -51,7 +51,7 @@ RunPlan expansion_plan(double factor, long stages, double tau) {
 
 TEST_CASE("attractive expansion: T and P fall as V grows, so P and T rise together (Fig. 2)") {
   // Below the critical size, so every stage has wall hits.
-  ProtocolRun run(paper_swarm(1000, +1, 11), expansion_plan(1.03, 8, 30));
+  Run run(paper_swarm(1000, +1, 11), expansion_plan(1.03, 8, 30));
   run.finish();
   const StageFits f = run.fits();
   REQUIRE(f.T_V.valid);
@@ -64,7 +64,7 @@ TEST_CASE("attractive expansion: T and P fall as V grows, so P and T rise togeth
 }
 
 TEST_CASE("repulsive expansion: T rises, P falls, P and T anti-correlated (Fig. 3)") {
-  ProtocolRun run(paper_swarm(1000, -1, 12), expansion_plan(1.03, 8, 30));
+  Run run(paper_swarm(1000, -1, 12), expansion_plan(1.03, 8, 30));
   run.finish();
   const StageFits f = run.fits();
   REQUIRE(f.P_V.valid);
@@ -79,7 +79,7 @@ TEST_CASE("energy is conserved through every expansion step, attractive and repu
   for (double sign : {+1.0, -1.0}) {
     const System start = paper_swarm(500, sign, 13);
     const double E0 = total_energy(start);
-    ProtocolRun run(start, expansion_plan(1.1, 6, 20));
+    Run run(start, expansion_plan(1.1, 6, 20));
     run.finish();
     REQUIRE(run.stages().size() == 6);
     for (const Stage& st : run.stages()) CHECK(std::abs(st.E - E0) < 1e-10 * std::abs(E0));
@@ -94,7 +94,7 @@ TEST_CASE("attractive: P and T vanish once the wall is beyond every orbit, and n
   // A wall beyond that reach receives nothing: P = T = 0. A wall well inside the reach of the
   // widest orbit, max_i a_i - max |R_cm(t)|, is hit: P, T > 0.
   const RunPlan plan = expansion_plan(1.08, 10, 30);
-  ProtocolRun run(mirrored_swarm(1000, 14), plan);
+  Run run(mirrored_swarm(1000, 14), plan);
   const long per_stage = steps_per_stage(*plan.expansion, plan.dt);
   int beyond = 0, inside = 0;
   for (long k = 0; k < plan.expansion->stages; ++k) {

@@ -9,13 +9,13 @@
 #include <cstdio>
 #include <memory>
 
+#include "files/preset_file.h"
 #include "scenarios/process_memory.h"
 #include "scenarios/workloads.h"
-#include "files/preset_file.h"
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 #include "swarm/side_by_side.h"
 
 namespace swarmlab {
@@ -55,8 +55,8 @@ bool compare_with_reference(const swarm::Preset& preset, const std::string& engi
   plan.steps = std::min(plan.steps, steps);
   plan.sample_every = 1;
   const swarm::System initial = swarm::initial_system(preset);
-  swarm::ProtocolRun ref(swarm::make_reference_engine(initial, plan.engine), plan);
-  swarm::ProtocolRun run(make(engine, initial, plan.engine), plan);
+  swarm::Run ref(swarm::make_reference_engine(initial, plan.engine), plan);
+  swarm::Run run(make(engine, initial, plan.engine), plan);
   long differing = 0;
   while (!ref.finished()) {
     ref.advance(1);
@@ -88,7 +88,7 @@ int expansion(const BenchOptions& o) {
   std::fflush(stdout);
 
   const Clock::time_point start = Clock::now();
-  swarm::ProtocolRun run(make(o.engine, swarm::initial_system(preset), plan.engine), plan);
+  swarm::Run run(make(o.engine, swarm::initial_system(preset), plan.engine), plan);
   run.finish();
   const double wall = seconds_since(start);
   const swarm::RunSummary s = run.summary();

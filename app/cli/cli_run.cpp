@@ -3,8 +3,8 @@
 #include <new>
 #include <stdexcept>
 
-#include "files/atomic_file.h"
 #include "cli.h"
+#include "files/atomic_file.h"
 #include "files/preset_file.h"
 #include "progress_bar.h"
 #include "report/plot_files.h"
@@ -28,7 +28,7 @@ std::string check_writable(const std::string& path) {
 }
 
 void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
-  const swarm::ProtocolRun& run = runs.primary();
+  const swarm::Run& run = runs.primary();
   std::printf(
       "%-14s %.6g\n%-14s %.6g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %lld\n"
       "%-14s %ld\n%-14s %.6g\n",
@@ -102,7 +102,7 @@ int run_command(const RunOptions& options) {
   try {
     const swarm::Preset& preset = *parsed.preset;
     swarm::SideBySide runs(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare);
-    swarm::ProtocolRun& run = runs.primary();
+    swarm::Run& run = runs.primary();
     ProgressBar bar("running", !options.quiet);
     runs.finish([&](double fraction) { bar.update(fraction); });
     bar.finish();

@@ -30,7 +30,7 @@ json summary_json(const swarm::RunSummary& s) {
 }  // namespace
 
 std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
-  swarm::ProtocolRun& run = runs.primary();
+  swarm::Run& run = runs.primary();
   json j;
   j["preset"] = json::parse(swarm::preset_to_json(preset));
   j["summary"] = summary_json(run.summary());
@@ -74,7 +74,7 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
   return j.dump(1) + "\n";
 }
 
-std::string samples_csv(const swarm::ProtocolRun& run) {
+std::string samples_csv(const swarm::Run& run) {
   std::ostringstream out;
   out.precision(17);
   out << "t,P,T,KE,PE,E,hits,R\n";

@@ -11,6 +11,6 @@ namespace swarmlab {
 /// summary, samples, stages, fits (when there are stages), comparisons and the final state.
 std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs);
 /// One row per sample: t,P,T,KE,PE,E,hits,R.
-std::string samples_csv(const swarm::ProtocolRun& run);
+std::string samples_csv(const swarm::Run& run);
 
 }  // namespace swarmlab

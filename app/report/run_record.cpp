@@ -20,7 +20,7 @@ swarm::RunSummary summary_from(const json& j) {
 }  // namespace
 
 RunRecord record_of(const swarm::Preset& preset, swarm::SideBySide& runs) {
-  swarm::ProtocolRun& run = runs.primary();
+  swarm::Run& run = runs.primary();
   RunRecord r{preset, run.summary(), run.samples(), run.stages(), {}};
   for (const auto& track : runs.tracks())
     r.comparisons.push_back({std::string(swarm::name_of(track.method)),

@@ -137,10 +137,8 @@ void App::layout_windows() {
     if (ImGui::BeginMenu("View")) {
       ImGui::MenuItem("Controls", "1", &s.layout.controls);
       ImGui::MenuItem("Plots", "2", &s.layout.plots);
-      if (ImGui::MenuItem("Larger UI", "Ctrl +"))
-        s.layout.step_ui_scale(+1);
-      if (ImGui::MenuItem("Smaller UI", "Ctrl -"))
-        s.layout.step_ui_scale(-1);
+      if (ImGui::MenuItem("Larger UI", "Ctrl +")) s.layout.step_ui_scale(+1);
+      if (ImGui::MenuItem("Smaller UI", "Ctrl -")) s.layout.step_ui_scale(-1);
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
@@ -275,8 +273,7 @@ void App::update_camera() {
 void App::build_particles() {
   AppState& s = state_;
   const swarm::System& system = s.run->system();
-  ParticleQuantity quantity{s.view.colour_by, swarm::cm_position(system),
-                            swarm::stiffness(system)};
+  ParticleQuantity quantity{s.view.colour_by, swarm::cm_position(system), swarm::stiffness(system)};
   const float base = s.particle_radius * s.view.particle_size;
   const double inverse_heaviest = 1.0 / s.heaviest_mass;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -293,7 +290,7 @@ void App::build_particles() {
   s.colour_scale.follow(lo, hi);
 
   ghosts_.clear();
-  if (swarm::ProtocolRun* exact = s.run->analytic_reference(); exact && s.view.ghosts) {
+  if (swarm::Run* exact = s.run->analytic_reference(); exact && s.view.ghosts) {
     const swarm::System& e = exact->engine().system();
     ghosts_.reserve(e.particles.size());
     for (const swarm::Particle& p : e.particles)

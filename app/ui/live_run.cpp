@@ -19,15 +19,15 @@ LiveRun::LiveRun(const swarm::Preset& preset) : preset_(preset) {
   id_ = ++runs_made;
   const swarm::System initial = swarm::initial_system(preset);
   const swarm::RunPlan plan = swarm::run_plan(preset);
-  primary_ = std::make_unique<swarm::ProtocolRun>(initial, plan);
+  primary_ = std::make_unique<swarm::Run>(initial, plan);
   for (swarm::Method m : preset.compare) {
     swarm::RunPlan other = plan;
     other.engine.method = m;
-    compared_.push_back(std::make_unique<swarm::ProtocolRun>(initial, other));
+    compared_.push_back(std::make_unique<swarm::Run>(initial, other));
   }
 
   // The exact solution to measure against: the primary itself, or a compared analytic run.
-  swarm::ProtocolRun* exact = preset.method == swarm::Method::analytic ? primary_.get() : nullptr;
+  swarm::Run* exact = preset.method == swarm::Method::analytic ? primary_.get() : nullptr;
   for (std::size_t i = 0; i < compared_.size() && !exact; ++i)
     if (preset.compare[i] == swarm::Method::analytic) exact = compared_[i].get();
   if (exact && exact != primary_.get()) analytic_reference_ = exact;
@@ -60,11 +60,11 @@ long LiveRun::advance(long steps) {
 
 void LiveRun::record_errors() {
   if (errors_.empty()) return;
-  swarm::ProtocolRun& exact = analytic_reference_ ? *analytic_reference_ : *primary_;
+  swarm::Run& exact = analytic_reference_ ? *analytic_reference_ : *primary_;
   const swarm::System& reference = exact.engine().system();
   std::size_t track = 0;
   // Energy errors need no track: the Compare tab reads them from each run's samples.
-  auto add = [&](swarm::ProtocolRun& run) {
+  auto add = [&](swarm::Run& run) {
     ErrorTrack& e = errors_[track++];
     const swarm::System& s = run.engine().system();
     e.t.push_back(s.t);
@@ -76,7 +76,7 @@ void LiveRun::record_errors() {
 }
 
 void LiveRun::expand_container(double factor) {
-  auto grow = [factor](swarm::ProtocolRun& run) {
+  auto grow = [factor](swarm::Run& run) {
     if (const auto R = run.engine().container_radius())
       run.engine().set_container_radius(*R * factor);
   };

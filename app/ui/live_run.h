@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "swarm/preset.h"
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 
 namespace swarmlab {
 
@@ -37,17 +37,17 @@ class LiveRun {
   const swarm::Preset& preset() const { return preset_; }
   /// Different for every LiveRun ever made: caches of derived data key on it.
   long id() const { return id_; }
-  swarm::ProtocolRun& primary() { return *primary_; }
+  swarm::Run& primary() { return *primary_; }
   const swarm::System& system() { return primary_->engine().system(); }
   double time() { return primary_->engine().time(); }
 
   /// The runs of the preset's `compare` list, in its order.
   std::size_t compared_count() const { return compared_.size(); }
-  swarm::ProtocolRun& compared(std::size_t i) { return *compared_[i]; }
+  swarm::Run& compared(std::size_t i) { return *compared_[i]; }
   swarm::Method compared_method(std::size_t i) const { return preset_.compare[i]; }
   /// The run of the exact solution when the primary is numerical and "analytic" is compared:
   /// its positions are drawn as ghosts. Null otherwise.
-  swarm::ProtocolRun* analytic_reference() { return analytic_reference_; }
+  swarm::Run* analytic_reference() { return analytic_reference_; }
   /// Errors of every numerical method against the analytic run (empty without one).
   const std::vector<ErrorTrack>& errors() const { return errors_; }
 
@@ -65,9 +65,9 @@ class LiveRun {
 
   long id_;
   swarm::Preset preset_;
-  std::unique_ptr<swarm::ProtocolRun> primary_;
-  std::vector<std::unique_ptr<swarm::ProtocolRun>> compared_;
-  swarm::ProtocolRun* analytic_reference_ = nullptr;
+  std::unique_ptr<swarm::Run> primary_;
+  std::vector<std::unique_ptr<swarm::Run>> compared_;
+  swarm::Run* analytic_reference_ = nullptr;
   std::vector<ErrorTrack> errors_;
   std::vector<Trail> trails_;
   long trail_stride_ = 1;  // steps between trail points: about 150 points per period

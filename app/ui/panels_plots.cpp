@@ -219,7 +219,7 @@ void draw_compare_tab(AppState& state, float plot_height) {
   energy_t.resize(runs);
   energy.resize(runs);
   for (std::size_t k = 0; k < runs; ++k) {
-    swarm::ProtocolRun& run = k == 0 ? state.run->primary() : state.run->compared(k - 1);
+    swarm::Run& run = k == 0 ? state.run->primary() : state.run->compared(k - 1);
     const swarm::Method m = k == 0 ? state.preset.method : state.run->compared_method(k - 1);
     const double E0 = run.samples().front().E;
     energy_t[k].clear();

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "swarm/flow.h"
 #include "swarm/regime.h"
 
 namespace swarmlab {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "swarm/flow.h"
 #include "swarm/regime.h"
 
 namespace swarm {

@@ -15,6 +15,7 @@
 #endif
 
 #include "fast_engine_window.h"
+#include "swarm/flow.h"
 #include "swarm/regime.h"
 
 namespace swarm {
@@ -143,7 +144,7 @@ struct Lane {
   std::array<std::int32_t, 256> in_frame{};
 #ifdef __EMSCRIPTEN__
   double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped
-#endif  // how many of the lane's particles rely on each frame
+#endif                 // how many of the lane's particles rely on each frame
 };
 
 /// What every check of one step reads: the flow and the shared offset at its start and end.
@@ -214,10 +215,10 @@ class FastEngine final : public Engine {
     // For J < 0 the frames are renewed without one, but Y, which the kicks make grow like
     // exp(Omega tau), must stay small: measured on the fireball, letting |Y| reach 0.02 R
     // instead of 0.005 R makes the energy drift 40 times larger.
-    const bool rebased =
-        epoch_too_old(dt) ||
-        (k_ >= 0 ? frame_offset(current_, d.f1, dt).norm() > current_.renew_level
-                 : (d.f1.c * aY_ + d.f1.s * bY_).norm() > kMaxRepulsiveY * *config_.container_radius);
+    const bool rebased = epoch_too_old(dt) ||
+                         (k_ >= 0 ? frame_offset(current_, d.f1, dt).norm() > current_.renew_level
+                                  : (d.f1.c * aY_ + d.f1.s * bY_).norm() >
+                                        kMaxRepulsiveY * *config_.container_radius);
     if (rebased) {
       rebase();
       d.f1 = Flow::over(k_, tau_ + dt);
@@ -523,7 +524,6 @@ class FastEngine final : public Engine {
     ++step_;
   }
 
-
   double rate() const { return 0.5 * two_rate_; }
 
   // [SECTION] Epochs and frames
@@ -700,7 +700,8 @@ class FastEngine final : public Engine {
     old_frames_.clear();
     std::fill(frame_of_.begin(), frame_of_.end(), current_.id);
     for (int lane = 0; lane < kLanes; ++lane)
-      lanes_[std::size_t(lane)].in_frame[current_.id] = std::int32_t(lane_end(lane) - lane_begin(lane));
+      lanes_[std::size_t(lane)].in_frame[current_.id] =
+          std::int32_t(lane_end(lane) - lane_begin(lane));
     on_both_lanes([&](int lane) {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
         orbits_[i].window.first = kUnknown;

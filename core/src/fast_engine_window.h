@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "swarm/flow.h"
 #include "swarm/system.h"
 
 namespace swarm::fast {

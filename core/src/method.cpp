@@ -22,17 +22,9 @@ std::string_view name_of(Method m) {
   return "?";
 }
 
-std::string_view name_of(CollisionMode c) { return c == CollisionMode::paper ? "paper" : "exact"; }
-
 std::optional<Method> method_named(std::string_view name) {
   for (const auto& [method, n] : kMethodNames)
     if (n == name) return method;
-  return std::nullopt;
-}
-
-std::optional<CollisionMode> collision_mode_named(std::string_view name) {
-  if (name == "paper") return CollisionMode::paper;
-  if (name == "exact") return CollisionMode::exact;
   return std::nullopt;
 }
 

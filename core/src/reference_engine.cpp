@@ -2,7 +2,7 @@
 #include <stdexcept>
 
 #include "swarm/engine.h"
-#include "swarm/fast_engine.h"
+#include "swarm/flow.h"
 #include "swarm/integrators.h"
 #include "swarm/regime.h"
 
@@ -103,12 +103,6 @@ class ReferenceEngine final : public Engine {
 
 std::unique_ptr<Engine> make_reference_engine(System initial, const EngineConfig& config) {
   return std::make_unique<ReferenceEngine>(std::move(initial), config);
-}
-
-std::unique_ptr<Engine> make_engine(System initial, const EngineConfig& config) {
-  if (fast_engine_applies(config) && initial.particles.size() <= kMaxFastEngineParticles)
-    return make_fast_engine(std::move(initial), config);
-  return make_reference_engine(std::move(initial), config);
 }
 
 }  // namespace swarm

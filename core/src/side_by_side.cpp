@@ -16,11 +16,11 @@ double max_position_difference(const System& a, const System& b) {
 
 SideBySide::SideBySide(const System& initial, const RunPlan& plan,
                        const std::vector<Method>& compared)
-    : primary_(std::make_unique<ProtocolRun>(initial, plan)) {
+    : primary_(std::make_unique<Run>(initial, plan)) {
   for (Method m : compared) {
     RunPlan other = plan;
     other.engine.method = m;
-    tracks_.push_back({m, std::make_unique<ProtocolRun>(initial, other), {}});
+    tracks_.push_back({m, std::make_unique<Run>(initial, other), {}});
   }
   record();
 }

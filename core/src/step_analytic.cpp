@@ -1,3 +1,4 @@
+#include "swarm/flow.h"
 #include "swarm/integrators.h"
 #include "swarm/regime.h"
 

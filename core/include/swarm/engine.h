@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 
+#include "swarm/collision_mode.h"
 #include "swarm/method.h"
 #include "swarm/system.h"
 #include "swarm/wall.h"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "swarm/initial_conditions.h"
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 
 namespace swarm {
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 
 namespace swarm {
 
@@ -21,7 +21,7 @@ class SideBySide {
  public:
   struct Track {
     Method method;
-    std::unique_ptr<ProtocolRun> run;
+    std::unique_ptr<Run> run;
     std::vector<ComparisonSample> samples;
   };
 
@@ -31,13 +31,13 @@ class SideBySide {
   long advance(long n);
   void finish(const std::function<void(double)>& progress = {});
 
-  ProtocolRun& primary() { return *primary_; }
+  Run& primary() { return *primary_; }
   const std::vector<Track>& tracks() const { return tracks_; }
 
  private:
   void record();
 
-  std::unique_ptr<ProtocolRun> primary_;
+  std::unique_ptr<Run> primary_;
   std::vector<Track> tracks_;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
-/// Runs a scenario the way the paper does: a fixed container sampled at every interval, or
-/// the stepwise adiabatic expansion with thermalisation and averaging windows.
+/// A run of a preset: the engine stepped under its RunPlan the way the paper does (a fixed
+/// container sampled at every interval, or the stepwise adiabatic expansion with
+/// thermalisation and averaging windows), recording samples, stages and fits. The CLI, the UI
+/// and the benchmarks all drive their systems through a Run.
 
 #include <cstdint>
 #include <functional>
@@ -10,29 +12,10 @@
 
 #include "swarm/engine.h"
 #include "swarm/fit.h"
+#include "swarm/run_plan.h"
 #include "swarm/thermometry.h"
 
 namespace swarm {
-
-/// The container radius grows by `factor` every `tau`; within each stage the first
-/// thermalize_fraction of tau is left alone and P, T are averaged over the rest.
-struct ExpansionProtocol {
-  double factor = 1.1;
-  long stages = 10;
-  double tau = 1.0;
-  double thermalize_fraction = 0.8;
-};
-
-struct RunPlan {
-  EngineConfig engine;
-  double dt = 1e-3;
-  long steps = 1000;  ///< for expansions: stages * steps_per_stage
-  long sample_every = 1;
-  std::optional<ExpansionProtocol> expansion;
-};
-
-/// Steps per expansion stage: round(tau / dt).
-long steps_per_stage(const ExpansionProtocol& e, double dt);
 
 struct Sample {
   double t = 0;
@@ -62,10 +45,10 @@ struct RunSummary {
 };
 
 /// A run that can be advanced piecewise (the UI) or to the end (the CLI).
-class ProtocolRun {
+class Run {
  public:
-  ProtocolRun(System initial, const RunPlan& plan);
-  ProtocolRun(std::unique_ptr<Engine> engine, const RunPlan& plan);
+  Run(System initial, const RunPlan& plan);
+  Run(std::unique_ptr<Engine> engine, const RunPlan& plan);
 
   /// Advances up to n steps; returns how many were taken.
   long advance(long n);

@@ -1,4 +1,4 @@
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 
 #include <doctest/doctest.h>
 
@@ -19,7 +19,7 @@ TEST_CASE("the expansion protocol: radius steps, averaging windows, energy kept"
   plan.expansion = ExpansionProtocol{1.2, 5, 0.5, 0.8};
   plan.steps = 5 * steps_per_stage(*plan.expansion, plan.dt);
   plan.sample_every = 50;
-  ProtocolRun run(s, plan);
+  Run run(s, plan);
   run.finish();
   REQUIRE(run.stages().size() == 5);
   for (std::size_t k = 0; k < 5; ++k) {
@@ -47,7 +47,7 @@ TEST_CASE("stage averages are the pressure over the last 20% of each stage") {
   plan.dt = 1e-3;
   plan.expansion = ExpansionProtocol{1.0, 1, 1.0, 0.8};
   plan.steps = 1000;
-  ProtocolRun run(s, plan);
+  Run run(s, plan);
   run.finish();
   // The same window measured by hand with a second engine.
   auto engine = make_engine(s, plan.engine);

@@ -1,4 +1,4 @@
-#include "swarm/protocol.h"
+#include "swarm/run.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,19 +7,15 @@
 
 namespace swarm {
 
-long steps_per_stage(const ExpansionProtocol& e, double dt) {
-  return std::max(1L, std::lround(e.tau / dt));
-}
-
 double relative_energy_change(double E0, double E_end, double energy_scale) {
   const double scale = E0 != 0 ? std::abs(E0) : energy_scale;
   return scale > 0 ? (E_end - E0) / scale : 0.0;
 }
 
-ProtocolRun::ProtocolRun(System initial, const RunPlan& plan)
-    : ProtocolRun(make_engine(std::move(initial), plan.engine), plan) {}
+Run::Run(System initial, const RunPlan& plan)
+    : Run(make_engine(std::move(initial), plan.engine), plan) {}
 
-ProtocolRun::ProtocolRun(std::unique_ptr<Engine> engine, const RunPlan& plan)
+Run::Run(std::unique_ptr<Engine> engine, const RunPlan& plan)
     : engine_(std::move(engine)), plan_(plan) {
   const System& s = engine_->system();
   const EnergyParts energy = energy_parts(s);
@@ -28,7 +24,7 @@ ProtocolRun::ProtocolRun(std::unique_ptr<Engine> engine, const RunPlan& plan)
   samples_.push_back(sample_now());
 }
 
-Sample ProtocolRun::sample_now() {
+Sample Run::sample_now() {
   const System& s = engine_->system();
   Sample out;
   out.t = s.t;
@@ -45,7 +41,7 @@ Sample ProtocolRun::sample_now() {
   return out;
 }
 
-void ProtocolRun::step_once() {
+void Run::step_once() {
   const double R = engine_->container_radius().value_or(0.0);
   const WallTally tally = engine_->step(plan_.dt);
   ++steps_done_;
@@ -69,7 +65,7 @@ void ProtocolRun::step_once() {
     samples_.push_back(sample_now());
 }
 
-long ProtocolRun::advance(long n) {
+long Run::advance(long n) {
   long taken = 0;
   while (taken < n && !finished()) {
     step_once();
@@ -78,7 +74,7 @@ long ProtocolRun::advance(long n) {
   return taken;
 }
 
-void ProtocolRun::finish(const std::function<void(double)>& progress) {
+void Run::finish(const std::function<void(double)>& progress) {
   const long chunk = std::max(1L, plan_.steps / 1000);
   while (!finished()) {
     advance(chunk);
@@ -86,7 +82,7 @@ void ProtocolRun::finish(const std::function<void(double)>& progress) {
   }
 }
 
-StageFits ProtocolRun::fits() const {
+StageFits Run::fits() const {
   std::vector<double> V, P, T;
   for (const Stage& s : stages_) {
     V.push_back(s.V);
@@ -96,7 +92,7 @@ StageFits ProtocolRun::fits() const {
   return {fit_power_law(V, P), fit_power_law(V, T), fit_power_law(T, P)};
 }
 
-RunSummary ProtocolRun::summary() {
+RunSummary Run::summary() {
   const System& s = engine_->system();
   RunSummary out;
   out.M = total_mass(s);
