@@ -110,9 +110,12 @@ const state = (page) => page.evaluate(() => {
            noticeKind: notice.className, hash: location.hash };
 });
 
+// Over at least ms and at least three frames: a busy machine may draw only a few a second.
 async function clockAdvances(page, ms = 500) {
   const t1 = await page.evaluate(() => window.swarmlab.time());
+  const f1 = await page.evaluate(() => window.swarmlab.frames());
   await sleep(ms);
+  await page.waitForFunction((target) => window.swarmlab.frames() >= target, f1 + 3, { timeout: 10000 });
   const t2 = await page.evaluate(() => window.swarmlab.time());
   return { ok: t2 > t1, detail: `t ${t1.toFixed(3)} -> ${t2.toFixed(3)}` };
 }
@@ -274,8 +277,13 @@ async function main() {
   check('plots are drawn', shot.vivid.plots >= 300, `${shot.vivid.plots} coloured pixels in the plot panel`);
 
   // 5. Keyboard input reaches the app: Space pauses and resumes.
-  // ImGui 1.86 reads the key state once a frame, so a key is held for a few frames, as a hand does.
-  const tap = async (key) => { await page.keyboard.down(key); await sleep(120); await page.keyboard.up(key); await sleep(120); };
+  // ImGui 1.86 reads the key state once a frame, so a key is held for a few frames, as a hand
+  // does; counted in frames drawn rather than in milliseconds, which a busy machine stretches.
+  const framesPass = async (n) => {
+    const start = await page.evaluate(() => window.swarmlab.frames());
+    await page.waitForFunction((target) => window.swarmlab.frames() >= target, start + n, { timeout: 10000 });
+  };
+  const tap = async (key) => { await page.keyboard.down(key); await framesPass(3); await page.keyboard.up(key); await framesPass(3); };
   await page.mouse.click(620, 300); // focus the canvas (a click in the 3D view selects or deselects)
   await tap('Space');
   const paused = await clockAdvances(page, 400);
