@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "axis_ticks.h"
+#include "plotting/axis_ticks.h"
 
 namespace swarmlab::report {
 namespace {
@@ -74,18 +74,18 @@ Extent extent_of(const Panel& p, std::vector<double> Series::*coordinate) {
   return e;
 }
 
-AxisRange range_of(Extent e, const Axis& axis) {
+plotting::AxisRange range_of(Extent e, const Axis& axis) {
   if (e.empty()) e = axis.log ? Extent{1, 10} : Extent{0, 1};
-  return padded_range(e.lo, e.hi, axis.log, axis.include_zero);
+  return plotting::padded_range(e.lo, e.hi, axis.log, axis.include_zero);
 }
 
 /// Maps data to pixels inside one panel's plot area.
 struct Frame {
   double left, top, width, height;
-  AxisRange xr, yr;
+  plotting::AxisRange xr, yr;
   bool xlog, ylog;
 
-  static double fraction(double v, const AxisRange& r, bool log) {
+  static double fraction(double v, const plotting::AxisRange& r, bool log) {
     return log ? (std::log10(v) - std::log10(r.lo)) / (std::log10(r.hi) - std::log10(r.lo))
                : (v - r.lo) / (r.hi - r.lo);
   }
@@ -207,7 +207,8 @@ void place_legend(std::ostringstream& svg, const Panel& panel, const Frame& f) {
 
 void draw_panel(std::ostringstream& svg, const Panel& panel, const Frame& f, bool x_labels,
                 int index) {
-  const AxisTicks xt = ticks_for(f.xr, f.xlog), yt = ticks_for(f.yr, f.ylog);
+  const plotting::AxisTicks xt = plotting::ticks_for(f.xr, f.xlog),
+                            yt = plotting::ticks_for(f.yr, f.ylog);
   const std::string clip = "plot" + std::to_string(index);
   svg << "<clipPath id=\"" << clip << "\"><rect x=\"" << px(f.left) << "\" y=\"" << px(f.top)
       << "\" width=\"" << px(f.width) << "\" height=\"" << px(f.height) << "\"/></clipPath>\n";
