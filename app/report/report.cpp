@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <variant>
 
-#include "decimate.h"
+#include "plotting/decimate.h"
 #include "swarm/analytic.h"
 #include "swarm/fit.h"
 
@@ -28,7 +28,7 @@ std::string printed(const char* format, double a, double b = 0, double c = 0) {
 
 Series series(std::string name, const std::vector<double>& x, const std::vector<double>& y,
               int colour, Mark mark = Mark::line) {
-  const XY d = decimated(x, y, kMaxPointsPerSeries);
+  const plotting::XY d = plotting::decimated(x, y, kMaxPointsPerSeries);
   Series s;
   s.name = std::move(name);
   s.x = d.x;

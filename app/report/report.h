@@ -18,7 +18,7 @@ struct NamedFigure {
   Figure figure;
 };
 
-/// The most points a drawn series keeps (decimate.h), so that SVG files stay small.
+/// The most points a drawn series keeps (plotting/decimate.h), so that SVG files stay small.
 inline constexpr std::size_t kMaxPointsPerSeries = 2000;
 
 std::vector<NamedFigure> run_figures(const RunRecord& run);

@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "axis_ticks.h"
+#include "plotting/axis_ticks.h"
 
 namespace swarmlab::report {
 namespace {
@@ -74,18 +74,18 @@ Extent extent_of(const Panel& p, std::vector<double> Series::*coordinate) {
   return e;
 }
 
-AxisRange range_of(Extent e, const Axis& axis) {
+plotting::AxisRange range_of(Extent e, const Axis& axis) {
   if (e.empty()) e = axis.log ? Extent{1, 10} : Extent{0, 1};
-  return padded_range(e.lo, e.hi, axis.log, axis.include_zero);
+  return plotting::padded_range(e.lo, e.hi, axis.log, axis.include_zero);
 }
 
 /// Maps data to pixels inside one panel's plot area.
-struct Frame {
+struct PlotArea {
   double left, top, width, height;
-  AxisRange xr, yr;
+  plotting::AxisRange xr, yr;
   bool xlog, ylog;
 
-  static double fraction(double v, const AxisRange& r, bool log) {
+  static double fraction(double v, const plotting::AxisRange& r, bool log) {
     return log ? (std::log10(v) - std::log10(r.lo)) / (std::log10(r.hi) - std::log10(r.lo))
                : (v - r.lo) / (r.hi - r.lo);
   }
@@ -94,12 +94,12 @@ struct Frame {
 };
 
 /// Widens the narrower range so that one data unit spans as many pixels on x as on y.
-void equalise_aspect(Frame& f) {
-  const double x_span = f.xr.hi - f.xr.lo, y_span = f.yr.hi - f.yr.lo;
-  const double scale = std::min(f.width / x_span, f.height / y_span);  // pixels per unit
-  const double x_mid = 0.5 * (f.xr.lo + f.xr.hi), y_mid = 0.5 * (f.yr.lo + f.yr.hi);
-  f.xr = {x_mid - 0.5 * f.width / scale, x_mid + 0.5 * f.width / scale};
-  f.yr = {y_mid - 0.5 * f.height / scale, y_mid + 0.5 * f.height / scale};
+void equalise_aspect(PlotArea& area) {
+  const double x_span = area.xr.hi - area.xr.lo, y_span = area.yr.hi - area.yr.lo;
+  const double scale = std::min(area.width / x_span, area.height / y_span);  // pixels per unit
+  const double x_mid = 0.5 * (area.xr.lo + area.xr.hi), y_mid = 0.5 * (area.yr.lo + area.yr.hi);
+  area.xr = {x_mid - 0.5 * area.width / scale, x_mid + 0.5 * area.width / scale};
+  area.yr = {y_mid - 0.5 * area.height / scale, y_mid + 0.5 * area.height / scale};
 }
 
 std::string axis_title(const Axis& axis, const std::string& scale_suffix) {
@@ -108,7 +108,7 @@ std::string axis_title(const Axis& axis, const std::string& scale_suffix) {
   return in_brackets.empty() ? axis.label : axis.label + " (" + in_brackets + ")";
 }
 
-void draw_series(std::ostringstream& svg, const Series& s, const Frame& f) {
+void draw_series(std::ostringstream& svg, const Series& s, const PlotArea& area) {
   const char* colour = colour_of(s.colour);
   const bool lines = s.mark != Mark::points;
   // Markers on a long line series would only blur it.
@@ -118,11 +118,11 @@ void draw_series(std::ostringstream& svg, const Series& s, const Frame& f) {
     // Invalid points (a zero on a log axis) break the line rather than bridge the gap.
     std::vector<std::string> runs(1);
     for (std::size_t i = 0; i < s.x.size(); ++i) {
-      if (!usable(s.x[i], f.xlog) || !usable(s.y[i], f.ylog)) {
+      if (!usable(s.x[i], area.xlog) || !usable(s.y[i], area.ylog)) {
         if (!runs.back().empty()) runs.emplace_back();
         continue;
       }
-      runs.back() += px(f.x(s.x[i])) + "," + px(f.y(s.y[i])) + " ";
+      runs.back() += px(area.x(s.x[i])) + "," + px(area.y(s.y[i])) + " ";
     }
     for (const std::string& run : runs) {
       if (run.empty()) continue;
@@ -135,15 +135,15 @@ void draw_series(std::ostringstream& svg, const Series& s, const Frame& f) {
   if (points) {
     svg << "<g fill=\"" << colour << "\">";
     for (std::size_t i = 0; i < s.x.size(); ++i)
-      if (usable(s.x[i], f.xlog) && usable(s.y[i], f.ylog))
-        svg << "<circle cx=\"" << px(f.x(s.x[i])) << "\" cy=\"" << px(f.y(s.y[i]))
+      if (usable(s.x[i], area.xlog) && usable(s.y[i], area.ylog))
+        svg << "<circle cx=\"" << px(area.x(s.x[i])) << "\" cy=\"" << px(area.y(s.y[i]))
             << "\" r=\"2.7\"/>";
     svg << "</g>\n";
   }
 }
 
 /// The corner of the panel whose legend box would cover the fewest drawn points.
-void place_legend(std::ostringstream& svg, const Panel& panel, const Frame& f) {
+void place_legend(std::ostringstream& svg, const Panel& panel, const PlotArea& area) {
   std::vector<const Series*> entries;
   double text_width = 0;
   for (const Series& s : panel.series)
@@ -158,25 +158,28 @@ void place_legend(std::ostringstream& svg, const Panel& panel, const Frame& f) {
   struct Corner {
     double x, y;
   };
-  const Corner corners[] = {{f.left + f.width - w - inset, f.top + inset},
-                            {f.left + inset, f.top + inset},
-                            {f.left + f.width - w - inset, f.top + f.height - h - inset},
-                            {f.left + inset, f.top + f.height - h - inset}};
+  const Corner corners[] = {
+      {area.left + area.width - w - inset, area.top + inset},
+      {area.left + inset, area.top + inset},
+      {area.left + area.width - w - inset, area.top + area.height - h - inset},
+      {area.left + inset, area.top + area.height - h - inset}};
   std::size_t best = 0;
   long fewest = std::numeric_limits<long>::max();
   for (std::size_t c = 0; c < 4; ++c) {
     long covered = 0;
     for (const Series& s : panel.series)
       for (std::size_t i = 0; i < s.x.size(); ++i) {
-        if (!usable(s.x[i], f.xlog) || !usable(s.y[i], f.ylog)) continue;
+        if (!usable(s.x[i], area.xlog) || !usable(s.y[i], area.ylog)) continue;
         // Lines cover the space between their points too: look along each segment.
         const bool segment = s.mark != Mark::points && i + 1 < s.x.size() &&
-                             usable(s.x[i + 1], f.xlog) && usable(s.y[i + 1], f.ylog);
+                             usable(s.x[i + 1], area.xlog) && usable(s.y[i + 1], area.ylog);
         const int samples = segment ? 12 : 1;
         for (int k = 0; k < samples; ++k) {
           const double a = double(k) / samples;
-          const double X = segment ? (1 - a) * f.x(s.x[i]) + a * f.x(s.x[i + 1]) : f.x(s.x[i]);
-          const double Y = segment ? (1 - a) * f.y(s.y[i]) + a * f.y(s.y[i + 1]) : f.y(s.y[i]);
+          const double X =
+              segment ? (1 - a) * area.x(s.x[i]) + a * area.x(s.x[i + 1]) : area.x(s.x[i]);
+          const double Y =
+              segment ? (1 - a) * area.y(s.y[i]) + a * area.y(s.y[i + 1]) : area.y(s.y[i]);
           if (X >= corners[c].x && X <= corners[c].x + w && Y >= corners[c].y &&
               Y <= corners[c].y + h)
             ++covered;
@@ -205,63 +208,67 @@ void place_legend(std::ostringstream& svg, const Panel& panel, const Frame& f) {
   }
 }
 
-void draw_panel(std::ostringstream& svg, const Panel& panel, const Frame& f, bool x_labels,
+void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& area, bool x_labels,
                 int index) {
-  const AxisTicks xt = ticks_for(f.xr, f.xlog), yt = ticks_for(f.yr, f.ylog);
+  const plotting::AxisTicks xt = plotting::ticks_for(area.xr, area.xlog),
+                            yt = plotting::ticks_for(area.yr, area.ylog);
   const std::string clip = "plot" + std::to_string(index);
-  svg << "<clipPath id=\"" << clip << "\"><rect x=\"" << px(f.left) << "\" y=\"" << px(f.top)
-      << "\" width=\"" << px(f.width) << "\" height=\"" << px(f.height) << "\"/></clipPath>\n";
+  svg << "<clipPath id=\"" << clip << "\"><rect x=\"" << px(area.left) << "\" y=\"" << px(area.top)
+      << "\" width=\"" << px(area.width) << "\" height=\"" << px(area.height)
+      << "\"/></clipPath>\n";
 
   // Grid first, so that data and frame lie on top of it.
   svg << "<g stroke=\"#e8e8e8\" stroke-width=\"1\">";
   for (double v : xt.values)
-    svg << "<line x1=\"" << px(f.x(v)) << "\" y1=\"" << px(f.top) << "\" x2=\"" << px(f.x(v))
-        << "\" y2=\"" << px(f.top + f.height) << "\"/>";
+    svg << "<line x1=\"" << px(area.x(v)) << "\" y1=\"" << px(area.top) << "\" x2=\""
+        << px(area.x(v)) << "\" y2=\"" << px(area.top + area.height) << "\"/>";
   for (double v : yt.values)
-    svg << "<line x1=\"" << px(f.left) << "\" y1=\"" << px(f.y(v)) << "\" x2=\""
-        << px(f.left + f.width) << "\" y2=\"" << px(f.y(v)) << "\"/>";
+    svg << "<line x1=\"" << px(area.left) << "\" y1=\"" << px(area.y(v)) << "\" x2=\""
+        << px(area.left + area.width) << "\" y2=\"" << px(area.y(v)) << "\"/>";
   svg << "</g>\n";
-  if (panel.zero_line && !f.ylog && f.yr.lo < 0 && f.yr.hi > 0)
-    svg << "<line x1=\"" << px(f.left) << "\" y1=\"" << px(f.y(0)) << "\" x2=\""
-        << px(f.left + f.width) << "\" y2=\"" << px(f.y(0))
+  if (panel.zero_line && !area.ylog && area.yr.lo < 0 && area.yr.hi > 0)
+    svg << "<line x1=\"" << px(area.left) << "\" y1=\"" << px(area.y(0)) << "\" x2=\""
+        << px(area.left + area.width) << "\" y2=\"" << px(area.y(0))
         << "\" stroke=\"#555555\" stroke-width=\"1\" stroke-dasharray=\"3 3\"/>\n";
 
   svg << "<g clip-path=\"url(#" << clip << ")\">\n";
-  for (const Series& s : panel.series) draw_series(svg, s, f);
+  for (const Series& s : panel.series) draw_series(svg, s, area);
   svg << "</g>\n";
-  svg << "<rect x=\"" << px(f.left) << "\" y=\"" << px(f.top) << "\" width=\"" << px(f.width)
-      << "\" height=\"" << px(f.height) << "\" fill=\"none\" stroke=\"#333333\"/>\n";
+  svg << "<rect x=\"" << px(area.left) << "\" y=\"" << px(area.top) << "\" width=\""
+      << px(area.width) << "\" height=\"" << px(area.height)
+      << "\" fill=\"none\" stroke=\"#333333\"/>\n";
 
-  const double bottom = f.top + f.height;
+  const double bottom = area.top + area.height;
   svg << "<g stroke=\"#333333\">";
   for (double v : yt.values)
-    svg << "<line x1=\"" << px(f.left - kTickLength) << "\" y1=\"" << px(f.y(v)) << "\" x2=\""
-        << px(f.left) << "\" y2=\"" << px(f.y(v)) << "\"/>";
+    svg << "<line x1=\"" << px(area.left - kTickLength) << "\" y1=\"" << px(area.y(v)) << "\" x2=\""
+        << px(area.left) << "\" y2=\"" << px(area.y(v)) << "\"/>";
   for (double v : xt.values)
-    svg << "<line x1=\"" << px(f.x(v)) << "\" y1=\"" << px(bottom) << "\" x2=\"" << px(f.x(v))
+    svg << "<line x1=\"" << px(area.x(v)) << "\" y1=\"" << px(bottom) << "\" x2=\"" << px(area.x(v))
         << "\" y2=\"" << px(bottom + kTickLength) << "\"/>";
   svg << "</g>\n<g font-size=\"12\" fill=\"#222222\">";
   for (std::size_t i = 0; i < yt.values.size(); ++i)
-    svg << "<text x=\"" << px(f.left - kTickLength - 3) << "\" y=\"" << px(f.y(yt.values[i]) + 4)
-        << "\" text-anchor=\"end\">" << escaped(yt.labels[i]) << "</text>";
+    svg << "<text x=\"" << px(area.left - kTickLength - 3) << "\" y=\""
+        << px(area.y(yt.values[i]) + 4) << "\" text-anchor=\"end\">" << escaped(yt.labels[i])
+        << "</text>";
   if (x_labels)
     for (std::size_t i = 0; i < xt.values.size(); ++i)
-      svg << "<text x=\"" << px(f.x(xt.values[i])) << "\" y=\"" << px(bottom + kTickLength + 14)
+      svg << "<text x=\"" << px(area.x(xt.values[i])) << "\" y=\"" << px(bottom + kTickLength + 14)
           << "\" text-anchor=\"middle\">" << escaped(xt.labels[i]) << "</text>";
   svg << "</g>\n";
 
-  const double y_mid = f.top + 0.5 * f.height;
+  const double y_mid = area.top + 0.5 * area.height;
   svg << "<text x=\"20\" y=\"" << px(y_mid) << "\" transform=\"rotate(-90 20 " << px(y_mid)
       << ")\" text-anchor=\"middle\" font-size=\"14\">"
       << escaped(axis_title(panel.y, yt.scale_suffix)) << "</text>\n";
   if (x_labels)
-    svg << "<text x=\"" << px(f.left + 0.5 * f.width) << "\" y=\"" << px(bottom + 44)
+    svg << "<text x=\"" << px(area.left + 0.5 * area.width) << "\" y=\"" << px(bottom + 44)
         << "\" text-anchor=\"middle\" font-size=\"14\">"
         << escaped(axis_title(panel.x, xt.scale_suffix)) << "</text>\n";
   if (!panel.note.empty())
-    svg << "<text x=\"" << px(f.left) << "\" y=\"" << px(f.top - 6)
+    svg << "<text x=\"" << px(area.left) << "\" y=\"" << px(area.top - 6)
         << "\" font-size=\"12\" fill=\"#444444\">" << escaped(panel.note) << "</text>\n";
-  place_legend(svg, panel, f);
+  place_legend(svg, panel, area);
 }
 
 }  // namespace
@@ -277,23 +284,23 @@ std::string svg_of(const Figure& figure) {
       if (!e.empty()) shared.add(e.lo), shared.add(e.hi);
     }
 
-  std::vector<Frame> frames;
+  std::vector<PlotArea> areas;
   double y = kTop + (figure.subtitle.empty() ? 0 : kSubtitleSpace);
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const Panel& p = figure.panels[i];
     if (!p.note.empty()) y += kNoteSpace;
-    Frame f{kLeft,
-            y,
-            plot_width,
-            kPanelUnit * p.height,
-            range_of(figure.shared_x ? shared : extent_of(p, &Series::x), p.x),
-            range_of(extent_of(p, &Series::y), p.y),
-            p.x.log,
-            p.y.log};
-    if (p.equal_aspect && !p.x.log && !p.y.log) equalise_aspect(f);
-    frames.push_back(f);
+    PlotArea area{kLeft,
+                  y,
+                  plot_width,
+                  kPanelUnit * p.height,
+                  range_of(figure.shared_x ? shared : extent_of(p, &Series::x), p.x),
+                  range_of(extent_of(p, &Series::y), p.y),
+                  p.x.log,
+                  p.y.log};
+    if (p.equal_aspect && !p.x.log && !p.y.log) equalise_aspect(area);
+    areas.push_back(area);
     const bool last = i + 1 == figure.panels.size();
-    y += f.height + (figure.shared_x && !last ? kSharedGap : kBottom);
+    y += area.height + (figure.shared_x && !last ? kSharedGap : kBottom);
   }
   const double height = y + 6;
 
@@ -309,7 +316,7 @@ std::string svg_of(const Figure& figure) {
         << "fill=\"#555555\">" << escaped(figure.subtitle) << "</text>\n";
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const bool x_labels = !figure.shared_x || i + 1 == figure.panels.size();
-    draw_panel(svg, figure.panels[i], frames[i], x_labels, int(i));
+    draw_panel(svg, figure.panels[i], areas[i], x_labels, int(i));
   }
   svg << "</svg>\n";
   return svg.str();

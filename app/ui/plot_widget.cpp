@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+
+#include "plotting/axis_ticks.h"
 
 namespace swarmlab {
 namespace {
@@ -27,42 +28,11 @@ struct Scale {
     const double u = lo + double(px - p0) / double(p1 - p0) * (hi - lo);
     return log ? std::pow(10.0, u) : u;
   }
-};
-
-std::string format_tick(double v) {
-  char text[32];
-  if (v != 0 && (std::abs(v) >= 1e5 || std::abs(v) < 1e-3))
-    std::snprintf(text, sizeof text, "%.0e", v);
-  else
-    std::snprintf(text, sizeof text, "%.4g", v);
-  return text;
-}
-
-/// Tick values: 1-2-5 steps on a linear axis; on a log axis powers of ten over many decades,
-/// 1, 2 and 5 times them over a few, and linear steps within less than half a decade.
-std::vector<double> ticks(const Scale& s, int wanted) {
-  std::vector<double> out;
-  if (s.log && s.hi - s.lo >= 0.5) {
-    const bool decades_only = s.hi - s.lo >= 3.0;
-    const int step = decades_only ? std::max(1, int(std::ceil((s.hi - s.lo) / wanted))) : 1;
-    for (int e = int(std::floor(s.lo)); e <= int(std::ceil(s.hi)); e += step)
-      for (double m : {1.0, 2.0, 5.0}) {
-        if (decades_only && m != 1.0) continue;
-        const double v = m * std::pow(10.0, e);
-        if (std::log10(v) >= s.lo - 1e-9 && std::log10(v) <= s.hi + 1e-9) out.push_back(v);
-      }
-    return out;
+  plotting::AxisRange range() const {
+    return log ? plotting::AxisRange{std::pow(10.0, lo), std::pow(10.0, hi)}
+               : plotting::AxisRange{lo, hi};
   }
-  const double lo = s.log ? std::pow(10.0, s.lo) : s.lo;
-  const double hi = s.log ? std::pow(10.0, s.hi) : s.hi;
-  const double raw = (hi - lo) / wanted;
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  const double r = raw / magnitude;
-  const double step = magnitude * (r < 1.5 ? 1 : r < 3.5 ? 2 : r < 7.5 ? 5 : 10);
-  for (double v = std::ceil(lo / step) * step; v <= hi + step * 1e-9; v += step)
-    out.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
-  return out;
-}
+};
 
 /// The data range of one axis over every series: only points that can be drawn (both
 /// coordinates finite, and positive on a log axis) and, for y, that lie in the x window (a
@@ -130,32 +100,42 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   data_range(spec, false, xs, lo, hi);
   set_range(ys, lo, hi, spec.y, spec.y_from_zero);
 
-  // Grid, ticks and their labels.
-  for (double v : ticks(xs, std::max(2, int((right - left) / (5.5f * font))))) {
-    const float px = xs.pixel(v);
+  // Grid, ticks and their labels: the figures' tick rule, with as many ticks as the labels
+  // leave room for.
+  const plotting::AxisTicks xt =
+      plotting::ticks_for(xs.range(), xs.log, std::max(2, int((right - left) / (5.5f * font))));
+  const plotting::AxisTicks yt =
+      plotting::ticks_for(ys.range(), ys.log, std::max(2, int((bottom - top) / (2.2f * font))));
+  for (std::size_t i = 0; i < xt.values.size(); ++i) {
+    const float px = xs.pixel(xt.values[i]);
     if (px < left - 0.5f || px > right + 0.5f) continue;
     draw->AddLine(ImVec2(px, top), ImVec2(px, bottom), kGrid);
     draw->AddLine(ImVec2(px, bottom), ImVec2(px, bottom + 0.3f * font), kAxis);
-    const std::string label = format_tick(v);
-    const float w = ImGui::CalcTextSize(label.c_str()).x;
-    draw->AddText(ImVec2(px - 0.5f * w, bottom + 0.3f * font), kDimText, label.c_str());
+    const char* label = xt.labels[i].c_str();
+    const float w = ImGui::CalcTextSize(label).x;
+    draw->AddText(ImVec2(px - 0.5f * w, bottom + 0.3f * font), kDimText, label);
   }
-  for (double v : ticks(ys, std::max(2, int((bottom - top) / (2.2f * font))))) {
-    const float py = ys.pixel(v);
+  for (std::size_t i = 0; i < yt.values.size(); ++i) {
+    const float py = ys.pixel(yt.values[i]);
     if (py < top - 0.5f || py > bottom + 0.5f) continue;
     draw->AddLine(ImVec2(left, py), ImVec2(right, py), kGrid);
     draw->AddLine(ImVec2(left - 0.3f * font, py), ImVec2(left, py), kAxis);
-    const std::string label = format_tick(v);
-    const ImVec2 size = ImGui::CalcTextSize(label.c_str());
-    draw->AddText(ImVec2(left - 0.4f * font - size.x, py - 0.5f * size.y), kDimText, label.c_str());
+    const char* label = yt.labels[i].c_str();
+    const ImVec2 size = ImGui::CalcTextSize(label);
+    draw->AddText(ImVec2(left - 0.4f * font - size.x, py - 0.5f * size.y), kDimText, label);
   }
   draw->AddLine(ImVec2(left, bottom), ImVec2(right, bottom), kAxis);
   draw->AddLine(ImVec2(left, top), ImVec2(left, bottom), kAxis);
-  const std::string x_label = spec.x.label + (spec.x.log ? "  [log]" : "");
+  // A power of ten taken out of the tick labels is part of the axis label, as in the figures.
+  auto axis_label = [](const PlotAxis& axis, const std::string& scale_suffix) {
+    return axis.label + (scale_suffix.empty() ? "" : "  " + scale_suffix) +
+           (axis.log ? "  [log]" : "");
+  };
+  const std::string x_label = axis_label(spec.x, xt.scale_suffix);
   const float x_label_width = ImGui::CalcTextSize(x_label.c_str()).x;
   draw->AddText(ImVec2(0.5f * (left + right) - 0.5f * x_label_width, bottom + 1.25f * font), kText,
                 x_label.c_str());
-  const std::string y_label = spec.y.label + (spec.y.log ? "  [log]" : "");
+  const std::string y_label = axis_label(spec.y, yt.scale_suffix);
   const float title_width = ImGui::CalcTextSize(spec.title.c_str()).x;
   draw->AddText(
       ImVec2(std::max(left, origin.x + title_width + 1.5f * font), origin.y + 0.2f * font),

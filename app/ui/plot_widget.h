@@ -1,7 +1,7 @@
 #pragma once
 // A small plotting widget drawn with ImDrawList (no plotting library exists for ImGui 1.86 in
 // Debian): lines or points, linear or log axes with ticks, labels and units, a legend, power-law
-// fit lines and a hover read-out.
+// fit lines and a hover read-out. Ticks follow the figures' rule (plotting/axis_ticks.h).
 
 #include <imgui.h>
 

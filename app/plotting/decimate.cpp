@@ -1,6 +1,8 @@
 #include "decimate.h"
 
-namespace swarmlab::report {
+#include <algorithm>
+
+namespace swarmlab::plotting {
 
 XY decimated(const std::vector<double>& x, const std::vector<double>& y, std::size_t max_points) {
   const std::size_t n = x.size();
@@ -23,4 +25,4 @@ XY decimated(const std::vector<double>& x, const std::vector<double>& y, std::si
   return out;
 }
 
-}  // namespace swarmlab::report
+}  // namespace swarmlab::plotting

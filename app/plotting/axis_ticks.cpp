@@ -1,0 +1,167 @@
+#include "axis_ticks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+
+namespace swarmlab::plotting {
+namespace {
+
+/// A log axis shows at least this many labelled ticks, so that a reader can tell its scale.
+constexpr std::size_t kFewestLogTicks = 4;
+
+/// 1, 2 or 5 times a power of ten, close to raw.
+double nice_step(double raw) {
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  const double f = raw / magnitude;
+  return (f < 1.5 ? 1 : f < 3 ? 2 : f < 7 ? 5 : 10) * magnitude;
+}
+
+/// Multiples of a nice step near (hi - lo) / target inside [lo, hi], for finite lo <= hi.
+std::vector<double> linear_ticks(double lo, double hi, int target) {
+  if (!(hi > lo)) return {lo};
+  if (!std::isfinite(hi - lo)) return {};
+  const double step = nice_step((hi - lo) / target);
+  // Past 2^50 steps from zero, doubles cannot count steps any more: show the two ends.
+  if (std::max(std::abs(lo), std::abs(hi)) / step > 1e15) return {lo, hi};
+  std::vector<double> ticks;
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1)
+    ticks.push_back(k * step == 0 ? 0.0 : k * step);  // no "-0"
+  return ticks;
+}
+
+/// The most ticks the linear rule gives for a target, and so the most any axis should get.
+std::size_t most_ticks(int target) { return std::size_t(1.5 * target) + 1; }
+
+/// Every stride-th value, so that about 1.5 target + 1 remain (what the linear rule gives at
+/// most), but never fewer than four.
+std::vector<double> thinned(const std::vector<double>& values, int target) {
+  const std::size_t most = most_ticks(target);
+  const std::size_t stride = std::max<std::size_t>(
+      1, std::min((values.size() + most - 1) / most, values.size() / kFewestLogTicks));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < values.size(); i += stride) out.push_back(values[i]);
+  return out;
+}
+
+std::string printed(const char* format, double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, v);
+  return buffer;
+}
+
+/// Decimals enough to tell ticks `step` apart.
+int decimals_for(double step) { return std::max(0, int(std::ceil(-std::log10(step) - 1e-9))); }
+
+AxisTicks linear_labels(std::vector<double> values) {
+  AxisTicks t;
+  t.values = std::move(values);
+  // A lone tick (an empty range) has no step to round to: all its digits that matter.
+  if (t.values.size() < 2) {
+    for (double v : t.values) t.labels.push_back(printed("%g", v));
+    return t;
+  }
+  double largest = 0;
+  for (double v : t.values) largest = std::max(largest, std::abs(v));
+  const double step = t.values[1] - t.values[0];
+  // Very large or very small numbers: a common power of ten goes to the axis label.
+  const int exponent = largest > 0 ? int(std::floor(std::log10(largest))) : 0;
+  const double scale = (exponent >= 5 || exponent <= -4) ? std::pow(10.0, exponent) : 1.0;
+  if (scale != 1.0) t.scale_suffix = "×10" + superscript(exponent);
+  const std::string format = "%." + std::to_string(decimals_for(step / scale)) + "f";
+  for (double v : t.values) t.labels.push_back(printed(format.c_str(), v / scale));
+  return t;
+}
+
+std::string log_label(double v) {
+  const int exponent = int(std::floor(std::log10(v) + 1e-9));
+  if (exponent >= -3 && exponent <= 4) return printed("%g", v);
+  const double mantissa = v / std::pow(10.0, exponent);
+  const std::string power = "10" + superscript(exponent);
+  return std::abs(mantissa - 1) < 1e-9 ? power : printed("%g", mantissa) + "×" + power;
+}
+
+/// Ticks at or below zero cannot sit on a log axis.
+AxisTicks positive_only(AxisTicks t) {
+  for (std::size_t i = t.values.size(); i-- > 0;)
+    if (t.values[i] <= 0) {
+      t.values.erase(t.values.begin() + long(i));
+      t.labels.erase(t.labels.begin() + long(i));
+    }
+  return t;
+}
+
+/// A log axis over less than a decade: round linear values read better than a few digits of
+/// one decade. The linear rule gives at least 0.6 target ticks, so if fewer than four come,
+/// twice and then four times as many are asked for, until the target is at least seven.
+AxisTicks less_than_a_decade(double lo, double hi, int target) {
+  std::vector<double> values;
+  for (int wanted = target;; wanted *= 2) {
+    values = linear_ticks(lo, hi, wanted);
+    if (values.size() >= kFewestLogTicks || wanted >= 7) break;
+  }
+  return linear_labels(values);
+}
+
+}  // namespace
+
+std::string superscript(int n) {
+  static const char* digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+  std::string out = n < 0 ? "⁻" : "";
+  for (char c : std::to_string(std::abs(n))) out += digits[c - '0'];
+  return out;
+}
+
+AxisRange padded_range(double lo, double hi, bool log, bool include_zero) {
+  if (log) {
+    double a = std::log10(lo), b = std::log10(hi);
+    if (b - a < 1e-12) a -= 0.1, b += 0.1;
+    const double pad = 0.04 * (b - a);
+    return {std::pow(10.0, a - pad), std::pow(10.0, b + pad)};
+  }
+  if (include_zero) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
+  if (hi - lo <= 1e-300 + 1e-12 * std::abs(hi)) {
+    const double half = lo != 0 ? 0.1 * std::abs(lo) : 1.0;
+    lo -= half, hi += half;
+  }
+  const double pad = 0.04 * (hi - lo);
+  return {lo - pad, hi + pad};
+}
+
+AxisTicks ticks_for(const AxisRange& range, bool log, int target) {
+  if (!std::isfinite(range.lo) || !std::isfinite(range.hi)) return {};
+  const double lo = std::min(range.lo, range.hi), hi = std::max(range.lo, range.hi);
+  target = std::max(target, 1);
+  if (!log) return linear_labels(linear_ticks(lo, hi, target));
+  if (lo <= 0) return positive_only(linear_labels(linear_ticks(lo, hi, target)));
+  if (hi < 10 * lo) return less_than_a_decade(lo, hi, target);
+
+  // Decades if there are enough of them, else 1-2-5, else every digit (a decade holds nine):
+  // whichever first gives at least four ticks. Digits too many for the room give way to 1, 2,
+  // 3 and 5 if those are four, before every stride-th is taken.
+  const int first = int(std::floor(std::log10(lo)));
+  const int last = int(std::ceil(std::log10(hi)));
+  auto ticks_with = [&](std::initializer_list<double> mantissas) {
+    std::vector<double> values;
+    for (int e = first; e <= last; ++e)
+      for (double m : mantissas) {
+        const double v = m * std::pow(10.0, e);
+        if (std::isfinite(v) && v >= lo * (1 - 1e-12) && v <= hi * (1 + 1e-12)) values.push_back(v);
+      }
+    return values;
+  };
+  std::vector<double> values = ticks_with({1});
+  if (values.size() < kFewestLogTicks) values = ticks_with({1, 2, 5});
+  if (values.size() < kFewestLogTicks) {
+    values = ticks_with({1, 2, 3, 4, 5, 6, 7, 8, 9});
+    const std::vector<double> fewer = ticks_with({1, 2, 3, 5});
+    if (values.size() > most_ticks(target) && fewer.size() >= kFewestLogTicks) values = fewer;
+  }
+  AxisTicks t;
+  t.values = thinned(values, target);
+  for (double v : t.values) t.labels.push_back(log_label(v));
+  return t;
+}
+
+}  // namespace swarmlab::plotting

@@ -1,0 +1,275 @@
+#include "plotting/axis_ticks.h"
+
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace swarmlab::plotting;
+
+namespace {
+
+/// The power of ten below v and v's mantissa in [1, 10).
+double mantissa_of(double v) { return v / std::pow(10.0, std::floor(std::log10(v) + 1e-12)); }
+
+/// The number 1, 2 or 5 times a power of ten nearest to step.
+double nearest_one_two_five(double step) {
+  const double power = std::pow(10.0, std::floor(std::log10(step) + 1e-12));
+  double best = power;
+  for (double nice : {2.0, 5.0, 10.0})
+    if (std::abs(step - nice * power) < std::abs(step - best)) best = nice * power;
+  return best;
+}
+
+/// Within `tolerance` (a fraction) of 1, 2 or 5 times a power of ten.
+bool is_one_two_five(double step, double tolerance = 1e-9) {
+  return std::abs(step - nearest_one_two_five(step)) < tolerance * step;
+}
+
+bool is_whole(double v, double tolerance = 1e-6) { return std::abs(v - std::round(v)) < tolerance; }
+
+/// How far, in steps, doubles may put a tick of a range that lies far from zero: a few units
+/// in the last place of the range's largest end.
+double rounding_in_steps(const AxisRange& r, double step) {
+  return 1e-9 + 1e-15 * std::max(std::abs(r.lo), std::abs(r.hi)) / step;
+}
+
+/// Ranges of every sign, width and magnitude, from 1e-15 to 1e15 wide.
+std::vector<AxisRange> linear_ranges() {
+  std::vector<AxisRange> out;
+  for (double centre : {0.0, 0.37, -2.9, 1234.5, -7.1e7, 4.4e-9})
+    for (int e = -15; e <= 15; ++e)
+      for (double m : {1.0, 1.37, 2.2, 2.95, 3.1, 4.9, 6.99, 7.3, 9.9}) {
+        const double span = m * std::pow(10.0, e);
+        if (std::abs(centre) > 1e10 * span) continue;  // past what a padded range ever holds
+        for (double shift : {0.0, 0.31, 0.5, 0.77})
+          out.push_back({centre - shift * span, centre + (1 - shift) * span});
+      }
+  return out;
+}
+
+/// Positive ranges from a factor 1.01 to 1e40 wide, at magnitudes from 1e-200 to 1e200.
+std::vector<AxisRange> log_ranges() {
+  std::vector<AxisRange> out;
+  for (double lo : {1e-200, 3.3e-7, 0.051, 1.0, 4.7, 99.0, 2.2e12, 1e200})
+    for (double factor : {1.01, 1.3,   2.0,   2.99, 3.0,   4.53, 7.0, 9.99, 10.0, 12.0, 31.0,
+                          99.0, 450.0, 999.0, 1e3,  2.1e3, 1e4,  3e6, 1e9,  1e17, 1e40})
+      if (lo * factor < 1e300) out.push_back({lo, lo * factor});
+  return out;
+}
+
+/// Labels are the values, up to a common power of ten that the suffix names.
+void check_labels_match(const AxisTicks& t) {
+  REQUIRE(t.labels.size() == t.values.size());
+  if (t.values.size() < 2) return;
+  // Find the scale from the suffix "×10ⁿ", or 1.
+  int exponent = 0;
+  if (!t.scale_suffix.empty()) {
+    bool found = false;
+    for (int n = -330; n <= 330 && !found; ++n)
+      if (t.scale_suffix == "×10" + superscript(n)) exponent = n, found = true;
+    REQUIRE(found);
+  }
+  const double scale = std::pow(10.0, exponent);
+  const double step = (t.values.back() - t.values.front()) / double(t.values.size() - 1);
+  const double tolerance = rounding_in_steps({t.values.front(), t.values.back()}, step);
+  for (std::size_t i = 0; i < t.values.size(); ++i) {
+    CAPTURE(t.labels[i]);
+    CHECK(std::abs(std::stod(t.labels[i]) * scale - t.values[i]) < tolerance * step);
+    if (i > 0) CHECK(t.labels[i] != t.labels[i - 1]);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("linear ticks are multiples of one 1-2-5 step that cover the range") {
+  for (int target : {2, 4, 6, 11}) {
+    for (const AxisRange& r : linear_ranges()) {
+      CAPTURE(target);
+      CAPTURE(r.lo);
+      CAPTURE(r.hi);
+      const AxisTicks t = ticks_for(r, false, target);
+      REQUIRE(t.values.size() >= 1);
+      // About target ticks: at least 0.6 target (a step of 5 where 3 was asked), at most
+      // 1.5 target + 1 (a step of 1 where 1.5 was asked).
+      CHECK(t.values.size() >= std::size_t(0.6 * target));
+      CHECK(t.values.size() <= std::size_t(1.5 * target) + 1);
+      if (t.values.size() < 2) continue;
+      const double step = (t.values.back() - t.values.front()) / double(t.values.size() - 1);
+      const double tolerance = rounding_in_steps(r, step);
+      CHECK(is_one_two_five(step, tolerance));
+      // Multiples of the exact step: a step measured between ticks far from zero is blurred.
+      const double exact = nearest_one_two_five(step);
+      for (std::size_t i = 0; i < t.values.size(); ++i) {
+        CHECK(is_whole(t.values[i] / exact, tolerance));
+        CHECK(t.values[i] >= r.lo - tolerance * step);
+        CHECK(t.values[i] <= r.hi + tolerance * step);
+        if (i > 0) CHECK(std::abs(t.values[i] - t.values[i - 1] - step) < tolerance * step);
+      }
+      // Covered: no gap of a whole step between an end of the range and the nearest tick.
+      CHECK(t.values.front() - r.lo < step * (1 + tolerance));
+      CHECK(r.hi - t.values.back() < step * (1 + tolerance));
+      check_labels_match(t);
+    }
+  }
+}
+
+TEST_CASE("the report's figures get four to ten ticks on every linear axis they pad") {
+  for (double lo : {-3.0, 0.0, 0.2, 17.0, 1e-13, 6.02e23})
+    for (double hi : {0.5, 1.0, 2.9, 40.0, 1e5, 7e23}) {
+      if (hi <= lo) continue;
+      const AxisTicks t = ticks_for(padded_range(lo, hi, false, false), false);
+      CAPTURE(lo);
+      CAPTURE(hi);
+      CHECK(t.values.size() >= 3);
+      CHECK(t.values.size() <= 10);
+    }
+}
+
+TEST_CASE("tick labels: fixed decimals, and a power of ten taken out of tiny or huge values") {
+  const AxisTicks unit = ticks_for({0, 1}, false);
+  CHECK(unit.labels == std::vector<std::string>{"0.0", "0.2", "0.4", "0.6", "0.8", "1.0"});
+  CHECK(unit.scale_suffix.empty());
+  const AxisTicks tiny = ticks_for({0, 3e-13}, false);
+  CHECK(tiny.scale_suffix == "×10⁻¹³");
+  CHECK(tiny.labels.front() == "0.0");
+  CHECK(tiny.labels[1] == "0.5");
+  const AxisTicks big = ticks_for({-2e6, 4e6}, false);
+  CHECK(big.scale_suffix == "×10⁶");
+  CHECK(big.labels.front() == "-2");
+  CHECK(superscript(-13) == "⁻¹³");
+  CHECK(superscript(0) == "⁰");
+  CHECK(superscript(2048) == "²⁰⁴⁸");
+}
+
+TEST_CASE("log ticks: decades, else 1-2-5 or every digit within decades, at least four") {
+  for (int target : {2, 4, 6, 11})
+    for (const AxisRange& r : log_ranges()) {
+      CAPTURE(target);
+      CAPTURE(r.lo);
+      CAPTURE(r.hi);
+      const AxisTicks t = ticks_for(r, true, target);
+      REQUIRE(t.labels.size() == t.values.size());
+      CHECK(t.values.size() >= 4);
+      for (std::size_t i = 0; i < t.values.size(); ++i) {
+        CHECK(t.values[i] >= r.lo * (1 - 1e-9));
+        CHECK(t.values[i] <= r.hi * (1 + 1e-9));
+        if (i > 0) CHECK(t.values[i] > t.values[i - 1]);
+      }
+      if (r.hi < 10 * r.lo) {
+        // Less than a decade: linear multiples of one 1-2-5 step.
+        const double step = t.values[1] - t.values[0];
+        CHECK(is_one_two_five(step));
+        for (double v : t.values) CHECK(is_whole(v / nearest_one_two_five(step)));
+        check_labels_match(t);
+        continue;
+      }
+      // Thinned by a whole stride to about 1.5 target + 1, but to no fewer than four, which
+      // can leave up to seven.
+      CHECK(t.values.size() <= std::max<std::size_t>(7, std::size_t(1.5 * target) + 1));
+      // The powers of ten in the range decide: four or more give decades only.
+      int decades = 0;
+      for (int e = -330; e <= 330; ++e) {
+        const double p = std::pow(10.0, e);
+        if (p >= r.lo * (1 - 1e-12) && p <= r.hi * (1 + 1e-12)) ++decades;
+      }
+      for (double v : t.values) {
+        const double m = mantissa_of(v);
+        CAPTURE(v);
+        CHECK(is_whole(m));
+        if (decades >= 4) CHECK(std::abs(m - 1) < 1e-9);
+      }
+      // Decades leave no gap of more than a factor 10^stride; digits and 1-2-5 no more than
+      // a factor ten, so the range is covered.
+      const double widest = decades >= 4 ? std::pow(10.0, std::ceil(decades / 4.0)) : 10.0;
+      CHECK(t.values.front() <= r.lo * widest);
+      CHECK(t.values.back() >= r.hi / widest);
+    }
+}
+
+TEST_CASE("a log axis over a factor of about three or more shows four labelled ticks") {
+  // The cases where a single step of 5 over a short axis would give three ticks.
+  for (const AxisRange r : {AxisRange{5.1, 23.1}, AxisRange{0.51, 2.31}, AxisRange{3, 9.1}}) {
+    const AxisTicks t = ticks_for(r, true);
+    CAPTURE(r.lo);
+    CHECK(t.values.size() >= 4);
+    CHECK(t.labels.size() == t.values.size());
+  }
+  // A few decades get 1, 2 and 5 in each, labelled as a printed page writes them.
+  const AxisTicks few = ticks_for({0.9, 900}, true);
+  CHECK(few.labels ==
+        std::vector<std::string>{"1", "2", "5", "10", "20", "50", "100", "200", "500"});
+  const AxisTicks small = ticks_for({2e-7, 3e-5}, true);
+  CHECK(small.labels ==
+        std::vector<std::string>{"2×10⁻⁷", "5×10⁻⁷", "10⁻⁶", "2×10⁻⁶", "5×10⁻⁶", "10⁻⁵", "2×10⁻⁵"});
+  // About one decade: every digit where there is room, else 1, 2, 3 and 5.
+  const AxisRange decade{std::pow(10.0, -0.5), std::pow(10.0, 0.5)};
+  CHECK(ticks_for(decade, true).labels ==
+        std::vector<std::string>{"0.4", "0.5", "0.6", "0.7", "0.8", "0.9", "1", "2", "3"});
+  CHECK(ticks_for(decade, true, 2).labels == std::vector<std::string>{"0.5", "1", "2", "3"});
+  // Thirty decades: every fourth.
+  const AxisTicks many = ticks_for({1, 1e30}, true);
+  CHECK(many.values.size() == 8);
+  CHECK(many.labels.front() == "1");
+  CHECK(many.labels[1] == "10000");
+  CHECK(many.labels[2] == "10⁸");
+}
+
+TEST_CASE("degenerate ranges give a sane answer at once") {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto started = std::chrono::steady_clock::now();
+  for (bool log : {false, true}) {
+    CAPTURE(log);
+    // An empty range: one tick at its value, labelled with its digits.
+    const AxisTicks one = ticks_for({2.5, 2.5}, log);
+    CHECK(one.values == std::vector<double>{2.5});
+    CHECK(one.labels == std::vector<std::string>{"2.5"});
+    // Backwards: the same ticks as forwards.
+    CHECK(ticks_for({8, 1}, log).values == ticks_for({1, 8}, log).values);
+    // No finite range, no ticks.
+    for (const AxisRange r : {AxisRange{nan, 1}, AxisRange{0, nan}, AxisRange{nan, nan},
+                              AxisRange{0, inf}, AxisRange{-inf, inf}})
+      CHECK(ticks_for(r, log).values.empty());
+    // Wider than a double can subtract, or narrower than it can step.
+    CHECK(ticks_for({-1.7e308, 1.7e308}, log).values.size() <= 11);
+    const AxisTicks narrow = ticks_for({1e17, 1e17 + 64}, log);
+    CHECK(narrow.values.size() >= 1);
+    CHECK(narrow.values.size() <= 11);
+  }
+  CHECK(ticks_for({0, 0}, false).values == std::vector<double>{0.0});
+  // Zero or below on a log axis: only positive ticks, or none.
+  for (double v : ticks_for({0, 100}, true).values) CHECK(v > 0);
+  for (double v : ticks_for({-5, 3}, true).values) CHECK(v > 0);
+  CHECK(ticks_for({-5, -1}, true).values.empty());
+  CHECK(ticks_for({0, 0}, true).values.empty());
+  // A target of zero or below is read as one.
+  CHECK(ticks_for({0, 1}, false, 0).values == ticks_for({0, 1}, false, 1).values);
+  CHECK(std::chrono::steady_clock::now() - started < std::chrono::seconds(1));
+}
+
+TEST_CASE("padded ranges hold the data with a margin and are never empty") {
+  for (bool include_zero : {false, true})
+    for (double lo : {-4.0, 0.0, 1e-9, 3.0})
+      for (double width : {0.0, 1e-20, 0.5, 1e6}) {
+        const double hi = lo + width;
+        const AxisRange r = padded_range(lo, hi, false, include_zero);
+        CHECK(r.lo < lo);
+        CHECK(r.hi > hi);
+        if (include_zero) CHECK(r.lo < 0);
+        if (include_zero) CHECK(r.hi > 0);
+      }
+  for (double lo : {1e-12, 0.5, 7.0, 1e40})
+    for (double factor : {1.0, 1.0 + 1e-14, 2.0, 1e6}) {
+      const AxisRange r = padded_range(lo, lo * factor, true, false);
+      CHECK(r.lo < lo);
+      CHECK(r.hi > lo * factor);
+      CHECK(r.lo > 0);
+      // The margin on a log axis is a factor, the same at both ends.
+      CHECK(lo / r.lo == doctest::Approx(r.hi / (lo * factor)).epsilon(1e-9));
+    }
+}
