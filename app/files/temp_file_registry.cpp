@@ -18,9 +18,8 @@ char slot_path[kSlots][PATH_MAX];
 volatile std::sig_atomic_t slot_used[kSlots];
 
 struct sigaction previous_int, previous_term;
-bool handler_installed = false;
 
-extern "C" void remove_temp_files(int number) {
+void remove_temp_files(int number) {
   for (int i = 0; i < kSlots; ++i)
     if (slot_used[i]) ::unlink(slot_path[i]);
   // Hand the signal back to whoever had it (by default: terminate with 128 + signal). The
@@ -29,28 +28,32 @@ extern "C" void remove_temp_files(int number) {
   raise(number);
 }
 
-void install_handler() {
+/// Puts remove_temp_files on SIGINT and SIGTERM where it is not there yet (another library, or
+/// a test, may have set its own since), keeping what was there to hand the signal on to.
+void install_handlers() {
   struct sigaction action {};
   action.sa_handler = remove_temp_files;
   sigemptyset(&action.sa_mask);
   sigaddset(&action.sa_mask, SIGINT);
   sigaddset(&action.sa_mask, SIGTERM);
-  // A signal the process ignores (SIGINT for a shell's background job) stays ignored: the
-  // write then goes on to the end, and its temporaries are renamed, not left behind.
   const std::pair<int, struct sigaction*> handled[] = {{SIGINT, &previous_int},
                                                        {SIGTERM, &previous_term}};
   for (const auto& [number, previous] : handled) {
-    sigaction(number, nullptr, previous);
-    if (previous->sa_handler != SIG_IGN) sigaction(number, &action, nullptr);
+    struct sigaction current {};
+    sigaction(number, nullptr, &current);
+    // A signal the process ignores (SIGINT for a shell's background job) stays ignored: the
+    // write then goes on to the end, and its temporaries are renamed, not left behind.
+    if (current.sa_handler == remove_temp_files || current.sa_handler == SIG_IGN) continue;
+    *previous = current;
+    sigaction(number, &action, nullptr);
   }
-  handler_installed = true;
 }
 
 }  // namespace
 
 bool register_temp_file(const std::string& path) {
   if (path.size() >= PATH_MAX) return false;
-  if (!handler_installed) install_handler();
+  install_handlers();
   for (int i = 0; i < kSlots; ++i)
     if (!slot_used[i]) {
       std::memcpy(slot_path[i], path.c_str(), path.size() + 1);

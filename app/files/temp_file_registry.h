@@ -7,7 +7,8 @@
 
 namespace swarmlab {
 
-/// Registers path for removal on SIGINT or SIGTERM; installs the handler the first time.
+/// Registers path for removal on SIGINT or SIGTERM; installs the handler where it is missing
+/// (a signal the process ignores stays ignored).
 /// Returns false when the registry is full or the path too long (the caller then refuses to
 /// write rather than risk a leftover).
 bool register_temp_file(const std::string& path);
