@@ -212,8 +212,11 @@
 
   if (typeof window !== 'undefined') {
     // A link pasted into the address bar of an open page changes only the fragment.
+    // The fragment is read and decoded once: a long one costs the browser time on every read.
     window.addEventListener('hashchange', function () {
-      if (Module.swarmlabMainStarted && SwarmlabLink.read(location.hash)) api.openLink(location.hash);
+      if (!Module.swarmlabMainStarted) return;
+      var pending = SwarmlabLink.read(location.hash);
+      if (pending) pending.then(openLinkResult);
     });
     // A preset file dropped on the page opens like Open preset.
     window.addEventListener('dragover', function (e) { e.preventDefault(); });
