@@ -59,6 +59,8 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_preset(int indent) {
 }
 
 /// Opens a preset from JSON text; "" on success, else the message also shown in the panel.
+/// The caller passes json in a malloc'd buffer, not on the wasm stack, and has already refused
+/// text over the size limit (web/swarmlab_api.js).
 EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_json(const char* json, const char* source,
                                                     const char* location) {
   swarmlab::App* app = swarmlab::web_app();

@@ -5,11 +5,26 @@
 // base64url is RFC 4648 section 5 without padding; padding and the '+' '/' of plain base64 are
 // accepted too, as is whitespace a mail program may have inserted. The fragment never reaches
 // the web server, so a link works from any static host.
+// A preset is at most maxPresetBytes of UTF-8 (4 MB). A #preset= link is measured before it is
+// decoded; a #z= link is inflated in small slices and stopped as soon as it passes the limit,
+// so a deflate bomb costs a few milliseconds, not the tab.
 var SwarmlabLink = (function () {
   'use strict';
 
   var utf8 = new TextEncoder();
   var strictUtf8 = new TextDecoder('utf-8', { fatal: true });
+  var maxPresetBytes = 4000000;
+  // Deflate expands at most about 1032:1, so a 1 KiB slice yields about 1 MB at most: the
+  // inflater never runs long between two checks of the size.
+  var inflateSlice = 1024;
+
+  /// "5.2 MB" for a count of bytes.
+  function sizeText(bytes) { return (bytes / 1e6).toFixed(1).replace(/\.0$/, '') + ' MB'; }
+
+  /// The message for a preset of `bytes` bytes over the limit; `what` names where it came from.
+  function tooLarge(what, bytes) {
+    return what + ' is ' + sizeText(bytes) + '; a preset may be at most ' + sizeText(maxPresetBytes);
+  }
 
   function toBase64url(bytes) {
     var binary = '';
@@ -35,6 +50,44 @@ var SwarmlabLink = (function () {
     } catch (e) {
       return false;
     }
+  }
+
+  /// Inflates deflate-raw bytes, feeding the stream one slice at a time and counting what comes
+  /// out. Promise<Uint8Array>; rejects with { tooLarge: true } once more than limit bytes came
+  /// out, or with the stream's error.
+  function inflateLimited(bytes, limit) {
+    var stream = new DecompressionStream('deflate-raw');
+    var writer = stream.writable.getWriter(), reader = stream.readable.getReader();
+    var chunks = [], total = 0, stopped = false;
+    function pump() {
+      return reader.read().then(function (r) {
+        if (r.done) return;
+        total += r.value.length;
+        if (total > limit) {
+          stopped = true;
+          reader.cancel().catch(function () {});
+          writer.abort().catch(function () {});
+          throw { tooLarge: true };
+        }
+        chunks.push(r.value);
+        return pump();
+      });
+    }
+    function feed(offset) {
+      if (stopped) return Promise.resolve();
+      if (offset >= bytes.length) return writer.close();
+      return writer.write(bytes.subarray(offset, offset + inflateSlice)).then(function () {
+        return feed(offset + inflateSlice);
+      });
+    }
+    var reading = pump();
+    // A write fails once the reader has stopped; the reader's verdict is the one that counts.
+    var writing = feed(0).catch(function (e) { if (!stopped) throw e; });
+    return Promise.all([reading, writing]).then(function () {
+      var out = new Uint8Array(total), at = 0;
+      for (var i = 0; i < chunks.length; ++i) { out.set(chunks[i], at); at += chunks[i].length; }
+      return out;
+    });
   }
 
   function transform(bytes, stream) { // Promise<Uint8Array>
@@ -72,6 +125,12 @@ var SwarmlabLink = (function () {
 
   function decode(key, value) {
     var what = 'share link: the text after #' + key + '= ';
+    // base64url carries 3 bytes in 4 characters; a deflated preset is never much longer than
+    // the preset, so either form over the limit is refused before it is decoded.
+    var characters = value.replace(/\s+/g, '').length;
+    if (characters > Math.ceil(maxPresetBytes / 3) * 4)
+      return Promise.resolve({ error: tooLarge('share link: the preset in #' + key + '=',
+                                               Math.floor(characters * 3 / 4)) });
     var bytes;
     try {
       bytes = fromBase64url(value);
@@ -80,7 +139,7 @@ var SwarmlabLink = (function () {
     }
     var inflated = key === 'preset' ? Promise.resolve(bytes)
       : !canCompress() ? null
-      : transform(bytes, new DecompressionStream('deflate-raw'));
+      : inflateLimited(bytes, maxPresetBytes);
     if (!inflated)
       return Promise.resolve({ error: what + 'needs a browser that can decompress (DecompressionStream); ' +
                                       'a #preset= link works everywhere' });
@@ -90,11 +149,14 @@ var SwarmlabLink = (function () {
       } catch (e) {
         return { error: what + 'is not UTF-8 text' };
       }
-    }, function () {
+    }, function (e) {
+      if (e && e.tooLarge)
+        return { error: 'share link: the preset in #z= inflates to more than ' + sizeText(maxPresetBytes) +
+                        ', the limit for a preset; stopped there' };
       return { error: what + 'does not decompress (the link may have been cut short)' };
     });
   }
 
   return { fragment: fragment, read: read, toBase64url: toBase64url, fromBase64url: fromBase64url,
-           canCompress: canCompress };
+           canCompress: canCompress, maxPresetBytes: maxPresetBytes, tooLarge: tooLarge };
 })();

@@ -4,7 +4,8 @@
 //   swarmlab.time()        the simulated time of the running preset (a number)
 //   swarmlab.preset()      the running preset, every edit included, as a JSON string
 //   swarmlab.load(json)    opens a preset (a JSON string, or an object); returns true, or, if
-//                          it fails validation, keeps the running preset, shows the message in
+//                          it fails validation or is larger than SwarmlabLink.maxPresetBytes
+//                          (4 MB of UTF-8), keeps the running preset, shows the message in
 //                          the scenario panel and on the page, and throws Error(message); the
 //                          message is the CLI's, e.g. "swarmlab.load(): dt: must be > 0"
 //   swarmlab.link()        Promise of a share link to the running preset (#z=... or #preset=...)
@@ -35,8 +36,25 @@
 
   function presetText(indent) { return Module.ccall('swarmlab_preset', 'string', ['number'], [indent]); }
 
+  // Calls use(pointer) with text as UTF-8 in a malloc'd buffer, freed afterwards. ccall's
+  // 'string' argument copies onto the wasm stack (5 MB), which a long text overruns ("memory
+  // access out of bounds"); the heap grows instead.
+  function withHeapText(text, use) {
+    var size = lengthBytesUTF8(text) + 1;
+    var pointer = _malloc(size);
+    if (!pointer) throw new Error('swarmlab: not enough memory for ' + size + ' bytes of text');
+    stringToUTF8(text, pointer, size);
+    try {
+      return use(pointer);
+    } finally {
+      _free(pointer);
+    }
+  }
+
   function setStatus(text, isError) {
-    Module.ccall('swarmlab_set_status', null, ['string', 'number'], [text, isError ? 1 : 0]);
+    withHeapText(String(text), function (pointer) {
+      Module.ccall('swarmlab_set_status', null, ['number', 'number'], [pointer, isError ? 1 : 0]);
+    });
   }
 
   function runningName() {
@@ -50,22 +68,38 @@
     if (typeof Module.showNotice === 'function') Module.showNotice(kind, text, link || '');
   }
 
+  // Shows a refusal in the scenario panel and on the page; returns it.
+  function refuse(error) {
+    setStatus(error, true);
+    notice('error', error + ' \u2014 still running: \u201c' + runningName() + '\u201d.');
+    return error;
+  }
+
   // Opens JSON text in the app. Returns '' or the error message (shown in the UI and the page).
+  // Text over the size limit is refused before any of it is copied into wasm.
   function openJson(text, source, location) {
-    var error = Module.ccall('swarmlab_open_json', 'string', ['string', 'string', 'string'],
-                             [String(text), source, location]);
+    text = String(text);
+    var bytes = lengthBytesUTF8(text);
+    if (bytes > SwarmlabLink.maxPresetBytes) return refuse(SwarmlabLink.tooLarge(source + ': the preset', bytes));
+    var error = withHeapText(text, function (pointer) {
+      return Module.ccall('swarmlab_open_json', 'string', ['number', 'string', 'string'],
+                          [pointer, source, location]);
+    });
     if (error) notice('error', error + ' \u2014 still running: \u201c' + runningName() + '\u201d.');
     else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
     return error;
   }
 
+  // A File (picked or dropped): its size is known before it is read, so a huge file is refused
+  // without reading it.
+  function openFileObject(file) {
+    if (file.size > SwarmlabLink.maxPresetBytes) return refuse(SwarmlabLink.tooLarge(file.name, file.size));
+    file.text().then(function (text) { openJson(text, file.name, file.name); });
+  }
+
   // { json } or { error } from SwarmlabLink.read, into the app. Returns '' or the message.
   function openLinkResult(result) {
-    if (result.error) {
-      setStatus(result.error, true);
-      notice('error', result.error + ' \u2014 still running: \u201c' + runningName() + '\u201d.');
-      return result.error;
-    }
+    if (result.error) return refuse(result.error);
     return openJson(result.json, 'share link', 'shared-preset.json');
   }
 
@@ -137,7 +171,7 @@
       input.addEventListener('change', function () {
         var file = input.files && input.files[0];
         input.remove();
-        if (file) file.text().then(function (text) { openJson(text, file.name, file.name); });
+        if (file) openFileObject(file);
       });
       document.body.appendChild(input);
       input.click();
@@ -178,15 +212,18 @@
 
   if (typeof window !== 'undefined') {
     // A link pasted into the address bar of an open page changes only the fragment.
+    // The fragment is read and decoded once: a long one costs the browser time on every read.
     window.addEventListener('hashchange', function () {
-      if (Module.swarmlabMainStarted && SwarmlabLink.read(location.hash)) api.openLink(location.hash);
+      if (!Module.swarmlabMainStarted) return;
+      var pending = SwarmlabLink.read(location.hash);
+      if (pending) pending.then(openLinkResult);
     });
     // A preset file dropped on the page opens like Open preset.
     window.addEventListener('dragover', function (e) { e.preventDefault(); });
     window.addEventListener('drop', function (e) {
       e.preventDefault();
       var file = e.dataTransfer && e.dataTransfer.files && e.dataTransfer.files[0];
-      if (file && Module.swarmlabMainStarted) file.text().then(function (text) { openJson(text, file.name, file.name); });
+      if (file && Module.swarmlabMainStarted) openFileObject(file);
     });
   }
 

@@ -29,8 +29,10 @@ int report_command(const ReportOptions& options) {
     std::fprintf(stderr, "error: nothing to overlay: fewer than one of these runs has stages\n");
     return 1;
   }
-  if (const std::string e = report::write_figures(options.plots_dir, figures, options.png);
-      !e.empty()) {
+  OutputFiles files;
+  std::string e = report::stage_figures(files, options.plots_dir, figures, options.png);
+  if (e.empty()) e = files.commit();
+  if (!e.empty()) {
     std::fprintf(stderr, "error: %s\n", e.c_str());
     return 1;
   }

@@ -1,5 +1,4 @@
 #include <cstdio>
-#include <fstream>
 #include <new>
 #include <stdexcept>
 
@@ -14,18 +13,6 @@
 
 namespace swarmlab {
 namespace {
-
-/// Finds out before a long run, not after it, that an output file cannot be written.
-std::string check_writable(const std::string& path) {
-  if (path.empty()) return {};
-  const std::string probe = path + ".probe";
-  {
-    std::ofstream out(probe);
-    if (!out) return path + ": cannot write here";
-  }
-  std::remove(probe.c_str());
-  return {};
-}
 
 void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
   const swarm::Run& run = runs.primary();
@@ -85,11 +72,12 @@ int run_command(const RunOptions& options) {
     std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
     return 1;
   }
-  for (const std::string* path : {&options.out_path, &options.csv_path}) {
-    if (const std::string err = check_writable(*path); !err.empty()) {
-      std::fprintf(stderr, "error: %s\n", err.c_str());
-      return 1;
-    }
+  // Every output path is checked before the run: a device, a FIFO, a directory, a missing
+  // folder or the same file twice is refused now, not after a long run.
+  if (const std::string err = check_output_paths({options.out_path, options.csv_path});
+      !err.empty()) {
+    std::fprintf(stderr, "error: %s\n", err.c_str());
+    return 1;
   }
   if (!options.plots_dir.empty()) {
     std::string err = options.png ? report::png_unavailable_reason() : "";
@@ -107,29 +95,23 @@ int run_command(const RunOptions& options) {
     runs.finish([&](double fraction) { bar.update(fraction); });
     bar.finish();
 
-    // Build both outputs before writing either, so a failure leaves no file behind.
-    const std::string json = options.out_path.empty() ? "" : result_json(preset, runs);
-    const std::string csv = options.csv_path.empty() ? "" : samples_csv(run);
+    // All outputs are staged, then committed together: a failure leaves every old file as it
+    // was, and Ctrl-C leaves no temporary behind.
     std::vector<report::NamedFigure> figures;
     if (!options.plots_dir.empty()) figures = report::run_figures(report::record_of(preset, runs));
-    // The figures go first: their writer cleans up after itself, so a failure leaves no file.
+    OutputFiles files;
+    std::string err;
     if (!options.plots_dir.empty())
-      if (const std::string err = report::write_figures(options.plots_dir, figures, options.png);
-          !err.empty()) {
-        std::fprintf(stderr, "error: %s\n", err.c_str());
-        return 1;
-      }
-    if (!options.out_path.empty())
-      if (const std::string err = write_file_atomically(options.out_path, json); !err.empty()) {
-        std::fprintf(stderr, "error: %s\n", err.c_str());
-        return 1;
-      }
-    if (!options.csv_path.empty())
-      if (const std::string err = write_file_atomically(options.csv_path, csv); !err.empty()) {
-        std::remove(options.out_path.c_str());
-        std::fprintf(stderr, "error: %s\n", err.c_str());
-        return 1;
-      }
+      err = report::stage_figures(files, options.plots_dir, figures, options.png);
+    if (err.empty() && !options.out_path.empty())
+      err = files.stage(options.out_path, result_json(preset, runs));
+    if (err.empty() && !options.csv_path.empty())
+      err = files.stage(options.csv_path, samples_csv(run));
+    if (err.empty()) err = files.commit();
+    if (!err.empty()) {
+      std::fprintf(stderr, "error: %s\n", err.c_str());
+      return 1;
+    }
     if (!options.quiet) {
       std::printf("%s\n\n",
                   preset.name.empty() ? options.preset_path.c_str() : preset.name.c_str());

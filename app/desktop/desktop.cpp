@@ -9,9 +9,10 @@
 #include <ctime>
 #include <filesystem>
 
+#include "files/atomic_file.h"
+#include "screenshot.h"
 #include "ui/main_loop.h"
 #include "ui/preset_store.h"
-#include "screenshot.h"
 
 namespace swarmlab {
 namespace {
@@ -39,6 +40,12 @@ void take_screenshot(Frontend& f) {
 }  // namespace
 
 int run_desktop(const DesktopOptions& options) {
+  // A screenshot that cannot be written is refused before the window opens, not after the run.
+  if (!options.screenshot_path.empty())
+    if (const std::string e = check_output_path(options.screenshot_path); !e.empty()) {
+      std::fprintf(stderr, "error: %s\n", e.c_str());
+      return 1;
+    }
   std::string error;
   Frontend f;
   f.window = open_window("Swarm Lab", 1280, 720, error);

@@ -4,7 +4,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #ifndef __EMSCRIPTEN__
 #include <spawn.h>
 #include <sys/wait.h>
@@ -20,13 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 
 [[maybe_unused]] constexpr const char* kRenderer = "rsvg-convert";
-
-std::string write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.flush();
-  return out ? "" : path.string() + ": write failed (disk full?)";
-}
 
 /// Runs rsvg-convert as a child process: librsvg is the SVG renderer Debian ships, and a
 /// process keeps its libraries out of the binary.
@@ -56,12 +48,7 @@ std::string prepare_plot_dir(const std::string& dir) {
     return dir + ": exists and is not a directory";
   fs::create_directories(dir, ec);
   if (ec) return dir + ": cannot create the directory (" + ec.message() + ")";
-  const fs::path probe = fs::path(dir) / (".swarmlab-probe-" + std::to_string(::getpid()));
-  {
-    std::ofstream out(probe);
-    if (!out) return dir + ": cannot write files here";
-  }
-  fs::remove(probe, ec);
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) return dir + ": cannot write files here";
   return {};
 }
 
@@ -82,34 +69,18 @@ std::string png_unavailable_reason() {
 #endif
 }
 
-std::string write_figures(const std::string& dir, const std::vector<NamedFigure>& figures,
-                          bool png) {
-  const fs::path temp = fs::path(dir) / (".swarmlab-plots-" + std::to_string(::getpid()));
-  std::error_code ec;
-  fs::remove_all(temp, ec);
-  if (!fs::create_directory(temp, ec)) return dir + ": cannot create a temporary directory";
-  std::vector<std::string> files;
-  auto fail = [&](const std::string& message) {
-    fs::remove_all(temp, ec);
-    return message;
-  };
+std::string stage_figures(OutputFiles& files, const std::string& dir,
+                          const std::vector<NamedFigure>& figures, bool png) {
   for (const NamedFigure& f : figures) {
-    const std::string svg = f.name + ".svg", csv = f.name + ".csv";
-    if (std::string e = write_text(temp / svg, svg_of(f.figure)); !e.empty()) return fail(e);
-    if (std::string e = write_text(temp / csv, csv_of(f.figure)); !e.empty()) return fail(e);
-    files.push_back(svg), files.push_back(csv);
+    const std::string stem = (fs::path(dir) / f.name).string();
+    if (std::string e = files.stage(stem + ".svg", svg_of(f.figure)); !e.empty()) return e;
+    if (std::string e = files.stage(stem + ".csv", csv_of(f.figure)); !e.empty()) return e;
     if (png) {
-      if (std::string e = render_png(temp / svg, temp / (f.name + ".png")); !e.empty())
-        return fail(e);
-      files.push_back(f.name + ".png");
+      const fs::path svg = files.temp_of(stem + ".svg");
+      const auto render = [&](const std::string& temp) { return render_png(svg, temp); };
+      if (std::string e = files.stage(stem + ".png", render); !e.empty()) return e;
     }
   }
-  // Renames within one directory tree: each file appears whole.
-  for (const std::string& name : files) {
-    fs::rename(temp / name, fs::path(dir) / name, ec);
-    if (ec) return fail(dir + "/" + name + ": cannot move into place (" + ec.message() + ")");
-  }
-  fs::remove_all(temp, ec);
   return {};
 }
 

@@ -1,10 +1,11 @@
 #pragma once
 // Writing a run's figures into a directory: NAME.svg and NAME.csv for each (and NAME.png when
-// asked), all of them or none, so a failed or interrupted report never leaves a partial set.
+// asked), committed with the run's other outputs (files/atomic_file.h), all of them or none.
 
 #include <string>
 #include <vector>
 
+#include "files/atomic_file.h"
 #include "report.h"
 
 namespace swarmlab::report {
@@ -16,9 +17,9 @@ std::string prepare_plot_dir(const std::string& dir);
 /// Whether PNG output is possible here (it needs rsvg-convert, from Debian's librsvg2-bin).
 std::string png_unavailable_reason();
 
-/// Writes every figure into a hidden temporary directory inside dir, renders the PNGs there,
-/// then moves the files into dir. On failure dir is left as it was and a message returned.
-std::string write_figures(const std::string& dir, const std::vector<NamedFigure>& figures,
-                          bool png);
+/// Stages every figure's files (NAME.svg, NAME.csv, and NAME.png rendered from the staged SVG)
+/// into files, for dir; they appear when files is committed, together with any other output.
+std::string stage_figures(OutputFiles& files, const std::string& dir,
+                          const std::vector<NamedFigure>& figures, bool png);
 
 }  // namespace swarmlab::report

@@ -4,6 +4,9 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
+#include <string>
+
 #include "panels.h"
 
 namespace swarmlab {
@@ -69,7 +72,17 @@ void draw_scenario_panel(AppState& state) {
                      state.preset.name.empty() ? "(unnamed preset)" : state.preset.name.c_str(),
                      state.modified ? "  (edited)" : "");
   ImGui::PopStyleColor();
-  if (!state.preset.description.empty()) ImGui::TextWrapped("%s", state.preset.description.c_str());
+  if (!state.preset.description.empty()) {
+    // ImGui wraps the whole text every frame: a description of a million characters (from a
+    // link or a file) would take the frame rate down to one a second, so a long one is cut.
+    constexpr std::size_t kShown = 2000;  // bytes of UTF-8
+    const std::string& text = state.preset.description;
+    std::size_t end = std::min(text.size(), kShown);
+    while (end < text.size() && end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
+      --end;  // not inside a character
+    const std::string shown = end < text.size() ? text.substr(0, end) + "..." : text;
+    ImGui::TextWrapped("%s", shown.c_str());
+  }
   if (state.modified && ImGui::Button("Reset to preset")) {
     state.draft = state.origin;
     state.apply_draft(Section::scenario);

@@ -78,6 +78,93 @@ fi
 "$bin" run "$work/good.json" --out "$work/no/such/dir/r.json" --quiet 2>"$work/stderr" &&
   bad "unwritable output accepted" || { grep -q "cannot write here" "$work/stderr" && ok || bad "unwritable: $(cat "$work/stderr")"; }
 
+# Output files that cannot hurt (app/files/atomic_file.h). A run of a few seconds, to tell a
+# refusal before the run from one after it, and to interrupt.
+printf '{"J": 1, "method": "rk4", "particles": {"count": 400, "position_radius": 1, "velocity": {"speed": 1}}, "dt": 0.001, "duration": 6}' >"$work/long.json"
+ms() { date +%s%3N; }
+# refused_before NAME MESSAGE ARGS...: run long.json with ARGS: exit 1 within a second (the
+# run itself takes seconds), MESSAGE on stderr.
+refused_before() {
+  local name=$1 message=$2
+  shift 2
+  local t0 code
+  t0=$(ms)
+  timeout 20 "$bin" run "$work/long.json" --quiet "$@" >/dev/null 2>"$work/stderr"
+  code=$?
+  local elapsed=$(($(ms) - t0))
+  if [ $code -ne 1 ]; then bad "$name: exit $code ($(cat "$work/stderr"))"; return; fi
+  grep -qF -- "$message" "$work/stderr" && ok || bad "$name: expected '$message', got: $(cat "$work/stderr")"
+  [ $elapsed -lt 1000 ] && ok || bad "$name: refused after ${elapsed} ms, not before the run"
+}
+if [ -c /dev/full ]; then
+  refused_before "--out /dev/full" "/dev/full: is a device, FIFO or socket" --out /dev/full
+  [ -c /dev/full ] && ok || bad "/dev/full is no longer a character device"
+fi
+mkfifo "$work/fifo"
+refused_before "--out FIFO" "fifo: is a device, FIFO or socket" --out "$work/fifo"
+[ -p "$work/fifo" ] && ok || bad "the FIFO was replaced"
+mkdir "$work/a-dir"
+refused_before "--out DIR" "a-dir: is a directory" --out "$work/a-dir"
+refused_before "--csv DIR" "a-dir: is a directory" --csv "$work/a-dir"
+refused_before "missing folder" "cannot write here (the folder" --csv "$work/no/such.csv"
+refused_before "same file twice" "is given twice as an output" --out "$work/same" --csv "$work/./same"
+ln -s nowhere "$work/dangling"
+refused_before "dangling symlink" "is a symlink to nothing" --out "$work/dangling"
+if [ "$(id -u)" -ne 0 ]; then
+  mkdir "$work/locked" && chmod a-w "$work/locked"
+  refused_before "unwritable folder" "no permission to create files" --out "$work/locked/r.json"
+fi
+
+# A symlink is written through: its target gets the result, the link stays a link.
+echo old >"$work/real.json"
+ln -s real.json "$work/link.json"
+"$bin" run "$work/good.json" --out "$work/link.json" --quiet 2>"$work/stderr" && ok || bad "--out symlink: $(cat "$work/stderr")"
+[ -L "$work/link.json" ] && [ "$(readlink "$work/link.json")" = real.json ] && ok || bad "the symlink was replaced"
+grep -q '"summary"' "$work/real.json" && ok || bad "the symlink's target was not written"
+
+# A user's files named like a temporary or a probe are never touched, and nothing is left over.
+mkdir "$work/names"
+for name in r.json.probe r.json.tmp r.json.tmp1 .r.json.swarmlab-1-0-00000000.tmp .swarmlab-probe-1; do
+  echo mine >"$work/names/$name"
+done
+"$bin" run "$work/good.json" --out "$work/names/r.json" --csv "$work/names/r.csv" --quiet && ok || bad "run into names/"
+for name in r.json.probe r.json.tmp r.json.tmp1 .r.json.swarmlab-1-0-00000000.tmp .swarmlab-probe-1; do
+  [ "$(cat "$work/names/$name")" = mine ] && ok || bad "a user's file $name was changed"
+done
+[ "$(ls -A "$work/names" | wc -l)" -eq 7 ] && ok || bad "files left over: $(ls -A "$work/names")"
+
+# Outputs commit together: when the --csv cannot be written at the end (its path became a FIFO
+# during the run), the existing --out keeps its old content and no temporary is left.
+mkdir "$work/both"
+echo old-result >"$work/both/r.json"
+"$bin" run "$work/long.json" --out "$work/both/r.json" --csv "$work/both/r.csv" --quiet 2>"$work/stderr" &
+pid=$!
+sleep 0.5
+mkfifo "$work/both/r.csv"
+wait $pid && bad "a --csv that became a FIFO was accepted" || {
+  grep -q "r.csv: is a device, FIFO or socket" "$work/stderr" && ok || bad "late FIFO: $(cat "$work/stderr")"; }
+[ "$(cat "$work/both/r.json")" = old-result ] && ok || bad "a failed --csv changed the existing --out"
+[ "$(ls -A "$work/both" | sort | tr '\n' ' ')" = "r.csv r.json " ] && ok || bad "left in both/: $(ls -A "$work/both")"
+
+# SIGINT or SIGTERM during a run with outputs: the conventional status, no temporary left, the
+# old --out untouched. (A background job ignores SIGINT; env gives it back its default.)
+for signal in INT TERM; do
+  mkdir "$work/stop-$signal"
+  echo old-result >"$work/stop-$signal/r.json"
+  env --default-signal=INT "$bin" run "$work/long.json" --out "$work/stop-$signal/r.json" \
+    --csv "$work/stop-$signal/r.csv" --plots "$work/stop-$signal/plots" --quiet 2>/dev/null &
+  pid=$!
+  sleep 1
+  kill -$signal $pid
+  wait $pid
+  code=$?
+  expected=$((128 + $(kill -l $signal)))
+  [ $code -eq $expected ] && ok || bad "SIG$signal: exit $code, expected $expected"
+  [ "$(ls -A "$work/stop-$signal" | tr '\n' ' ')" = "plots r.json " ] && [ -z "$(ls -A "$work/stop-$signal/plots")" ] &&
+    ok || bad "SIG$signal left: $(ls -AR "$work/stop-$signal")"
+  [ "$(cat "$work/stop-$signal/r.json")" = old-result ] && ok || bad "SIG$signal changed the old --out"
+done
+
 # A run longer than a second shows a progress bar on stderr; --quiet hides it.
 printf '{"J": 1, "method": "rk4", "particles": {"count": 500, "position_radius": 1, "velocity": {"speed": 1}}, "dt": 0.001, "duration": 8}' >"$work/slow.json"
 "$bin" run "$work/slow.json" 2>"$work/stderr" >/dev/null

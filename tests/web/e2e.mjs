@@ -6,7 +6,10 @@
 //   build/web-test/); the simulated clock advances (window.swarmlab.time()); the shipped presets
 //   are in the list; share links (#preset= and the compressed #z=) start their preset; a link
 //   or a load() whose preset fails validation shows the CLI's message and the app keeps running;
-//   Download preset and Open preset move JSON files; Space pauses; no WebGL2 gives a clear message.
+//   Download preset and Open preset move JSON files; Space pauses; hostile input (a preset of
+//   1.32 million characters, one over the 4 MB limit, a 6-million-character #preset=, a
+//   1.5-million-character link, a deflate bomb) never stalls the tab for a second or stops the drawing; no
+//   WebGL2 gives a clear message.
 // The last line is "N passed, M failed"; the exit code is non-zero on any failure.
 import { chromium } from 'playwright-core';
 import { spawn, spawnSync } from 'node:child_process';
@@ -15,7 +18,7 @@ import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join, dirname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { deflateRawSync } from 'node:zlib';
+import { deflateRawSync, constants as zlibConstants } from 'node:zlib';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
 const webDir = process.env.SWARMLAB_WEB_DIR || join(root, 'build/web');
@@ -382,10 +385,91 @@ async function main() {
     await b.page.close();
   }
 
+  // 10. Hostile input: a long preset, one over the 4 MB limit, long links and a deflate bomb.
+  //     Each is refused (the message names the size and the limit) or loaded, the tab never
+  //     stalls for a second, and the app keeps drawing the previous preset.
+  // The longest stall of the page's main thread while `action` runs in the page, from a 20 ms
+  // interval timer (ms), the action's result and how long it took.
+  const timed = (p, action, arg) => p.evaluate(async ([source, arg]) => {
+    let last = performance.now(), stall = 0;
+    const timer = setInterval(() => { const now = performance.now(); stall = Math.max(stall, now - last); last = now; }, 20);
+    const t0 = performance.now();
+    let result;
+    try { result = await (0, eval)(source)(arg); } catch (e) { result = 'threw: ' + e.message; }
+    const ms = performance.now() - t0;
+    await new Promise((r) => setTimeout(r, 60));
+    clearInterval(timer);
+    return { result, ms, stall: Math.max(stall, performance.now() - last) };
+  }, [action.toString(), arg]);
+  const drawing = async (p) => {
+    const f1 = await p.evaluate(() => window.swarmlab.frames());
+    await sleep(1000);
+    const f2 = await p.evaluate(() => window.swarmlab.frames());
+    const works = await p.evaluate(() => { try { return typeof JSON.parse(window.swarmlab.preset()).J === 'number'; } catch { return false; } });
+    return { ok: f2 - f1 >= 4 && works, detail: `${f2 - f1} frames in 1 s, preset() ${works ? 'works' : 'fails'}` };
+  };
+  const errorsBefore = pageErrors.length;
+  const long = await timed(page, (n) => {
+    const p = { J: 1, particles: { count: 10, position_radius: 1, velocity: { speed: 1 } }, dt: 0.01, duration: 1, description: 'x'.repeat(n) };
+    try { window.swarmlab.load(JSON.stringify(p)); return 'loaded'; } catch (e) { return 'refused: ' + e.message; }
+  }, 1_320_000);
+  let draws = await drawing(page);
+  check('load() of 1.32 million characters: the app keeps drawing and preset() works', draws.ok && pageErrors.length === errorsBefore,
+        `${long.result.slice(0, 60)}; ${draws.detail}; ${pageErrors.slice(errorsBefore).join(' | ')}`);
+  await page.evaluate((json) => window.swarmlab.load(json), JSON.stringify(upload));
+  const huge = await timed(page, (n) => {
+    try { window.swarmlab.load(JSON.stringify({ J: 1, description: 'y'.repeat(n) })); return 'loaded'; } catch (e) { return e.message; }
+  }, 5_000_000);
+  after = await state(page);
+  draws = await drawing(page);
+  check('load() of 5 MB: refused with the size and the limit, shown on the page', /5 MB; a preset may be at most 4 MB/.test(huge.result) &&
+        after.noticeKind === 'error' && after.notice.includes('at most 4 MB'), huge.result.slice(0, 100));
+  check('load() of 5 MB: the previous preset keeps running', after.preset?.name === upload.name && draws.ok, `"${after.preset?.name}", ${draws.detail}`);
+  const longPlain = await timed(page, (n) => window.swarmlab.openLink('#preset=' + 'A'.repeat(n)), 6_000_000);
+  after = await state(page);
+  check('openLink() of a 6-million-character #preset=: refused before decoding, within a second',
+        /at most 4 MB/.test(longPlain.result) && longPlain.ms < 1000 && longPlain.stall < 1000 && after.preset?.name === upload.name,
+        `${longPlain.result.slice(0, 90)}; ${longPlain.ms.toFixed(0)} ms, longest stall ${longPlain.stall.toFixed(0)} ms`);
+  // A deflate bomb: 1 GiB of zeros in about 1 MB. One MiB of zeros deflated with a full flush is
+  // a byte-aligned run of blocks that can be repeated; an empty final block ends the stream.
+  const mib = deflateRawSync(Buffer.alloc(1 << 20), { finishFlush: zlibConstants.Z_FULL_FLUSH });
+  const bomb = Buffer.concat([...Array(1024).fill(mib), deflateRawSync(Buffer.alloc(0))]);
+  const bombHash = '#z=' + base64url(bomb);
+  const burst = await timed(page, (hash) => window.swarmlab.openLink(hash), bombHash);
+  after = await state(page);
+  draws = await drawing(page);
+  check('a deflate bomb #z= (1 GiB in 1 MB): stopped at the limit within a second', /inflates to more than 4 MB/.test(burst.result) &&
+        burst.ms < 1000 && burst.stall < 1000, `${burst.result.slice(0, 90)}; ${burst.ms.toFixed(0)} ms, longest stall ${burst.stall.toFixed(0)} ms`);
+  check('a deflate bomb #z=: the previous preset keeps running, the message on the page', after.preset?.name === upload.name &&
+        draws.ok && after.notice.includes('inflates to more than'), `"${after.preset?.name}", ${draws.detail}`);
+  // As the address a page opens with: a smaller bomb (64 MiB) keeps the address short.
+  const smallBomb = Buffer.concat([...Array(64).fill(mib), deflateRawSync(Buffer.alloc(0))]);
+  const bombed = await openApp(url + '#z=' + base64url(smallBomb), 'bomb-link');
+  if (check('a deflate bomb as the start link (64 MiB): the app starts anyway', bombed.started, bombed.error || '')) {
+    const s = await state(bombed.page);
+    const first = await bombed.page.evaluate(() => window.swarmlab.firstFrameMs);
+    check('a deflate bomb as the start link: the message, and the default preset runs', s.noticeKind === 'error' &&
+          s.notice.includes('inflates to more than 4 MB') && s.preset?.name === DEFAULT_PRESET && (await drawing(bombed.page)).ok,
+          `first frame at ${first?.toFixed(0)} ms; ${s.notice.slice(0, 80)}`);
+    await bombed.page.close();
+  }
+  // A long #preset= link (1.5 million characters), through openLink(), what a link pasted into
+  // the address runs. (Chromium itself takes seconds to change the address to such a URL;
+  // that part is the browser's.)
+  const longLinked = { ...shipped('fig3-repulsive-fireball.json'), name: 'E2E long link', description: 'z'.repeat(1_100_000) };
+  const longHash = '#preset=' + base64url(JSON.stringify(longLinked));
+  const opened = await timed(page, (hash) => window.swarmlab.openLink(hash), longHash);
+  after = await state(page);
+  draws = await drawing(page);
+  check(`a ${(longHash.length / 1e6).toFixed(1)}-million-character #preset= link: its preset runs, the app keeps drawing`,
+        opened.result === '' && after.preset?.name === longLinked.name && after.preset?.description?.length === 1_100_000 &&
+        opened.stall < 1000 && draws.ok,
+        `"${after.preset?.name}" after ${opened.ms.toFixed(0)} ms, longest stall ${opened.stall.toFixed(0)} ms; ${draws.detail}`);
+
   check('no uncaught page errors', pageErrors.length === 0, pageErrors.slice(0, 3).join(' | '));
   check('no console errors', consoleErrors.length === 0, consoleErrors.slice(0, 3).join(' | '));
 
-  // 10. Without WebGL2 the page says so instead of loading the app.
+  // 11. Without WebGL2 the page says so instead of loading the app.
   const noGl = await context.newPage();
   await noGl.addInitScript(() => {
     const orig = HTMLCanvasElement.prototype.getContext;
