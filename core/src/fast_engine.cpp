@@ -3,7 +3,7 @@
 //
 // Index
 // [SECTION] Tuning
-// [SECTION] State: a particle's record, a lane, one step's shared data
+// [SECTION] State: a lane of the schedule (a particle: fast_engine_body.h)
 // [SECTION] Engine: construction, step, system()
 // [SECTION] Checks: Appendix A for the particles due in a step
 // [SECTION] Shared motion: the CM, Y and the step's end
@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "fast_engine_anchor.h"
+#include "fast_engine_body.h"
 #include "fast_engine_lookahead.h"
 #include "fast_engine_window.h"
 #include "swarm/flow.h"
@@ -32,7 +33,9 @@ namespace swarm {
 namespace {
 
 using fast::Anchor;
+using fast::Body;
 using fast::kParked;
+using fast::kUnknown;
 using fast::StepIndex;
 using fast::TimingWheel;
 
@@ -61,28 +64,7 @@ constexpr int kLanes = 2;
 // 40 per step), so only steps without any run on one.
 constexpr std::size_t kParallelChecks = 1;
 
-inline void prefetch(const void* p) {
-#if defined(__GNUC__)
-  __builtin_prefetch(p);
-  __builtin_prefetch(static_cast<const char*>(p) + 64);
-#else
-  (void)p;
-#endif
-}
-
 // [SECTION] State
-
-/// Everything the scheduler touches for one particle, together (80 bytes): a check is then
-/// one or two cache lines, fetched ahead of time (the ids due in a step are known in advance).
-struct Body {
-  Vec3 a, b;  ///< y_i(tau) = c(tau) a + s(tau) b: the free oscillation about the CM path
-  double m;
-  StepIndex due;        ///< the step in whose bucket the particle waits, or kParked
-  fast::Window window;  ///< valid in the particle's anchor until its next hit; NaN: unknown
-};
-
-constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
-static_assert(sizeof(Body) == 80, "a Body should stay within 80 bytes");
 
 /// One lane of the schedule: its timing wheel and the sums of one step.
 struct Lane {
@@ -95,14 +77,6 @@ struct Lane {
 #ifdef __EMSCRIPTEN__
   double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped
 #endif
-};
-
-/// What every check of one step reads: the flow and the shared offset at its start and end.
-struct StepData {
-  Flow f0, f1;
-  Vec3 o0, o0v, o1;
-  double R2;
-  double determinant;  ///< c^2 - dc s of f0, 1 up to rounding
 };
 
 // [SECTION] Engine
@@ -152,7 +126,7 @@ class FastEngine final : public Engine {
       steps_per_phase_ = 1 / (phase_per_time_ * dt_);
       schedule_all_pending_ = true;
     }
-    StepData& d = now_;
+    fast::StepData& d = now_;
     // The flow at the step's end; at its start it is the last step's end, unless a re-base
     // restarted the epoch's time since.
     const Flow last_end = d.f1;
@@ -211,13 +185,8 @@ class FastEngine final : public Engine {
       cache_.t = t_;
       cache_.particles.resize(orbits_.size());
       worker_.run([&](int lane) {
-        for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
-          const Body& b = orbits_[i];
-          Particle& p = cache_.particles[i];
-          p.m = b.m;
-          p.r = f.c * b.a + f.s * b.b + o;
-          p.v = f.dc() * b.a + f.c * b.b + ov;
-        }
+        for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
+          cache_.particles[i] = fast::particle_of(orbits_[i], f, o, ov);
       });
       cache_valid_ = true;
     }
@@ -244,47 +213,25 @@ class FastEngine final : public Engine {
   /// now are reflected now. Their predictions all use the state before any of this step's
   /// hits, so the lanes are independent.
   void check_lane(Lane& lane) {
-    const StepData& d = now_;
+    const fast::StepData& d = now_;
     lane.tally = WallTally{};
     lane.kick = Vec3::Zero();
     lane.checks = 0;
     lane.wheel.take(step_, lane.work);
     const std::size_t count = lane.work.size();
 #ifdef __EMSCRIPTEN__
-    // WebAssembly has no prefetch instruction. Loads of every body due in this step, issued
-    // together and independent of each other, overlap their cache misses in the same way
-    // (at N = 1,000,000 this made the browser build's steps about twice as fast).
-    double touched = 0;
-    for (std::size_t j = 0; j < count; ++j) {
-      const Body& o = orbits_[lane.work[j]];
-      touched += o.a.x() + o.window.second;  // the first and the last cache line of the body
-    }
-    lane.touched = touched;
+    lane.touched = fast::load_early(orbits_.data(), lane.work.data(), count);
 #endif
-    for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j) prefetch(&orbits_[lane.work[j]]);
+    for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j)
+      fast::prefetch(&orbits_[lane.work[j]]);
     for (std::size_t j = 0; j < count; ++j) {
-      if (j + kPrefetch < count) prefetch(&orbits_[lane.work[j + kPrefetch]]);
+      if (j + kPrefetch < count) fast::prefetch(&orbits_[lane.work[j + kPrefetch]]);
       const std::uint32_t i = lane.work[j];
       Body& o = orbits_[i];
       if (o.due != step_) continue;  // rescheduled since it was put here
       ++lane.checks;
-      const Vec3 r1 = d.f1.c * o.a + d.f1.s * o.b + d.o1;
-      if (r1.squaredNorm() > d.R2) {
-        const Vec3 r0 = d.f0.c * o.a + d.f0.s * o.b + d.o0;
-        const Vec3 v0 = d.f0.dc() * o.a + d.f0.c * o.b + d.o0v;
-        if (v0.dot(r0) > 0) {
-          const Vec3 dv = wall_reflection(o.m, r0, v0, lane.tally);
-          // y_i's velocity jumps by dv at tau_: in coefficients, the inverse flow of dv. The
-          // flow's determinant c^2 + k s^2 is 1 only up to rounding, which for J < 0 (cosh^2 -
-          // sinh^2) is a bias of its own: dividing by its computed value keeps the evaluated
-          // velocity jump dv, and the energy, unbiased.
-          const Vec3 jump = dv / d.determinant;
-          o.a -= d.f0.s * jump;
-          o.b += d.f0.c * jump;
-          o.window.first = kUnknown;
-          lane.kick += (o.m / M_) * dv;
-        }
-      }
+      Vec3 dv;
+      if (fast::reflect_if_leaving(o, d, lane.tally, dv)) lane.kick += (o.m / M_) * dv;
       schedule(i, step_ + 1);
     }
     lane.work.clear();
@@ -326,18 +273,11 @@ class FastEngine final : public Engine {
     return tau_ + dt > kMaxFreeSteps * dt;
   }
 
-  /// A re-base's change of every y_i: to the oscillation about the CM from now on.
-  struct Shift {
-    Flow f;       ///< at the re-base
-    Vec3 Y, Yv;   ///< Y and its velocity then
-    bool forget;  ///< also drop every window (the schedules are being rebuilt)
-  };
-
   /// Starts a new epoch at the current time, in one pass over the particles: applies a
   /// re-base's shift if there is one, recomputes Y from the y_i (it is zero up to rounding
   /// right after a re-base) and, for J > 0, tallies how far short of the wall each particle's
   /// largest |y| falls, for the next anchor's margin.
-  void start_epoch(const Shift* shift = nullptr) {
+  void start_epoch(const fast::Shift* shift = nullptr) {
     constexpr int kBins = fast::GapHistogram::kBins;
     const double Rw = config_.container_radius.value_or(0.0);
     const double reach = std::max(Rw - motion_.R_cm.norm(), 1e-300);
@@ -352,16 +292,7 @@ class FastEngine final : public Engine {
       auto& count = gaps[std::size_t(lane)].counts;
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
         Body& o = orbits_[i];
-        if (shift) {
-          const Flow& f = shift->f;
-          const Vec3 y = f.c * o.a + f.s * o.b - shift->Y;
-          const Vec3 yv = f.dc() * o.a + f.c * o.b - shift->Yv;
-          o.a = y;
-          o.b = yv;
-          // Dropped schedules are rebuilt from scratch: anchor ids are 8 bits and wrap, so
-          // after 256 re-bases without a wall an old window could pass for a current one.
-          if (shift->forget) o.window.first = kUnknown;
-        }
+        if (shift) fast::shift(o, *shift);
         sa += o.m * o.a;
         sb += o.m * o.b;
         if (!histogram) continue;
@@ -413,7 +344,7 @@ class FastEngine final : public Engine {
     const Vec3 Y = f.c * motion_.aY + f.s * motion_.bY;
     const Vec3 Yv = f.dc() * motion_.aY + f.c * motion_.bY;
     const bool keep_schedules = config_.container_radius && !schedule_all_pending_;
-    const Shift shift{f, Y, Yv, !keep_schedules};
+    const fast::Shift shift{f, Y, Yv, !keep_schedules};
     if (keep_schedules) {
       // Every y_i moved by the free flow of (-Y, -Y'): the anchors' p, q move with them.
       anchors_.retire_current();
@@ -573,7 +504,7 @@ class FastEngine final : public Engine {
   double dt_ = 0;
   std::array<Lane, kLanes> lanes_;
   std::size_t lane_split_ = 0;  // particles below it are in lane 0
-  StepData now_{};
+  fast::StepData now_{};
   bool flow_carried_ = false;  // now_.f1 holds the flow at tau_
   fast::Anchors anchors_;
   bool schedule_all_pending_ = true, rebase_pending_ = false;
