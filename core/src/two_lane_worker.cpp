@@ -80,7 +80,10 @@ void TwoLaneWorker::wait_for_worker() {
 #else  // no threads in the browser
 
 TwoLaneWorker::~TwoLaneWorker() = default;
-bool TwoLaneWorker::start() { return false; }
+bool TwoLaneWorker::start() {
+  (void)threads_;  // one thread whatever was asked
+  return false;
+}
 void TwoLaneWorker::hand_over() {}
 bool TwoLaneWorker::claim_current() { return true; }
 void TwoLaneWorker::wait_for_worker() {}
