@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <memory>
 
+#include "fast_engine_window.h"
 #include "scenarios/process_memory.h"
 #include "scenarios/workloads.h"
-#include "fast_engine_window.h"
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
@@ -49,7 +49,8 @@ template <Method M>
 void BM_Pairwise(benchmark::State& state) {
   const long n = long(state.range(0));
   System s = initial_system(swarmlab::scenarios::expansion_preset(false, n));
-  for (auto _ : state) step(M, s, 1e-3);
+  const int threads = default_threads();
+  for (auto _ : state) step(M, s, 1e-3, threads);
   state.SetItemsProcessed(state.iterations() * n);
   state.counters["steps/s"] =
       benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);

@@ -18,6 +18,9 @@ namespace {
 
 using namespace swarm;
 
+/// Threads for every engine and pairwise step: the command line's, else the default.
+int g_threads = default_threads();
+
 double seconds(const std::function<void()>& work) {
   const auto start = std::chrono::steady_clock::now();
   work();
@@ -28,7 +31,8 @@ double seconds(const std::function<void()>& work) {
 double expansion(bool repulsive, long n, long stages, long* hits) {
   Preset p = swarmlab::scenarios::expansion_preset(repulsive, n);
   p.expansion->stages = stages;
-  const RunPlan plan = run_plan(p);
+  RunPlan plan = run_plan(p);
+  plan.engine.threads = g_threads;
   return seconds([&] {
     Run run(make_engine(initial_system(p), plan.engine), plan);
     run.finish();
@@ -40,7 +44,8 @@ double expansion(bool repulsive, long n, long stages, long* hits) {
 double engine_steps(bool fast, long n, long steps, long* hits, double* build) {
   Preset p = swarmlab::scenarios::expansion_preset(false, n);
   System s = initial_system(p);
-  const EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
+  EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
+  config.threads = g_threads;
   return seconds([&] {
     std::unique_ptr<Engine> e;
     *build = seconds([&] {
@@ -55,7 +60,7 @@ double engine_steps(bool fast, long n, long steps, long* hits, double* build) {
 double pairwise(Method m, long n, long steps) {
   System s = initial_system(swarmlab::scenarios::expansion_preset(false, n));
   return seconds([&] {
-    for (long i = 0; i < steps; ++i) step(m, s, 1e-3);
+    for (long i = 0; i < steps; ++i) step(m, s, 1e-3, g_threads);
   });
 }
 
@@ -65,7 +70,8 @@ double pairwise(Method m, long n, long steps) {
 /// least a quarter of a second.
 double throughput(bool fast, bool repulsive, long n) {
   const Preset p = swarmlab::scenarios::expansion_preset(repulsive, n);
-  const RunPlan plan = run_plan(p);
+  RunPlan plan = run_plan(p);
+  plan.engine.threads = g_threads;
   auto e = fast ? make_fast_engine(initial_system(p), plan.engine)
                 : make_reference_engine(initial_system(p), plan.engine);
   e->step(plan.dt);
@@ -83,8 +89,13 @@ double throughput(bool fast, bool repulsive, long n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 1) set_thread_limit(std::atoi(argv[1]));
-  std::printf("threads %d\n", thread_limit());
+#ifndef __EMSCRIPTEN__
+  if (argc > 1) g_threads = std::atoi(argv[1]) >= 2 ? 2 : 1;
+#else
+  (void)argc;  // the browser build has one thread
+  (void)argv;
+#endif
+  std::printf("threads %d\n", g_threads);
   long hits = 0;
   double t = expansion(false, 40000, 50, &hits);
   std::printf("%-44s %8.3f s  %ld hits\n", "headline: attractive N=40000, 500000 steps", t, hits);

@@ -27,6 +27,13 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+/// The preset's plan, with --threads if given.
+swarm::RunPlan plan_with_threads(const swarm::Preset& preset, const BenchOptions& o) {
+  swarm::RunPlan plan = swarm::run_plan(preset);
+  if (o.threads > 0) plan.engine.threads = o.threads;
+  return plan;
+}
+
 std::unique_ptr<swarm::Engine> make(const std::string& engine, swarm::System s,
                                     const swarm::EngineConfig& config) {
   if (engine == "reference") return swarm::make_reference_engine(std::move(s), config);
@@ -48,10 +55,12 @@ void print_work(const swarm::Engine& engine) {
 
 /// Runs the reference and the chosen engine side by side for `steps` steps and says whether
 /// every step had the same hits, and how far the final states are apart.
-bool compare_with_reference(const swarm::Preset& preset, const std::string& engine, long steps) {
+bool compare_with_reference(const swarm::Preset& preset, const BenchOptions& o) {
+  const std::string& engine = o.engine;
+  const long steps = o.compare_steps;
   // Both engines run under the same protocol (expansion steps included), sampled every step,
   // so each sample's hits are that step's hits.
-  swarm::RunPlan plan = swarm::run_plan(preset);
+  swarm::RunPlan plan = plan_with_threads(preset, o);
   plan.steps = std::min(plan.steps, steps);
   plan.sample_every = 1;
   const swarm::System initial = swarm::initial_system(preset);
@@ -82,7 +91,7 @@ int expansion(const BenchOptions& o) {
     }
     preset = swarmlab::scenarios::scaled(*parsed.preset, n);
   }
-  const swarm::RunPlan plan = swarm::run_plan(preset);
+  const swarm::RunPlan plan = plan_with_threads(preset, o);
   std::printf("%-18s %s\n%-18s %ld particles, %ld steps of dt = %g, %s engine\n", "workload",
               preset.name.c_str(), "", n, plan.steps, plan.dt, o.engine.c_str());
   std::fflush(stdout);
@@ -110,7 +119,7 @@ int expansion(const BenchOptions& o) {
   for (const auto& [name, fit] : {std::pair{"P-V", f.P_V}, {"T-V", f.T_V}, {"P-T", f.P_T}})
     if (fit.valid)
       std::printf("fit %-4s exponent %+.4f  R^2 = %.4f\n", name, fit.slope, fit.r_squared);
-  if (o.compare_steps > 0 && !compare_with_reference(preset, o.engine, o.compare_steps)) return 1;
+  if (o.compare_steps > 0 && !compare_with_reference(preset, o)) return 1;
   return 0;
 }
 
@@ -121,7 +130,7 @@ int scale(const BenchOptions& o) {
   const Clock::time_point start = Clock::now();
   swarm::System initial = swarm::initial_system(preset);
   const double E0 = swarm::total_energy(initial);
-  auto engine = make(o.engine, std::move(initial), swarm::run_plan(preset).engine);
+  auto engine = make(o.engine, std::move(initial), plan_with_threads(preset, o).engine);
   const double setup = seconds_since(start);
   long hits = 0;
   for (long i = 0; i < o.steps; ++i) hits += engine->step(preset.dt).hits;
@@ -172,7 +181,6 @@ CLI::App* add_bench_subcommand(CLI::App& app, BenchOptions& o) {
 }
 
 int bench_command(const BenchOptions& o) {
-  if (o.threads > 0) swarm::set_thread_limit(o.threads);
   if (o.workload == "scale") return scale(o);
   return expansion(o);
 }

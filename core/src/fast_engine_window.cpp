@@ -12,8 +12,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Window attractive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
-  const auto [P, Q, S, A] = swing_of(a, b, inv_rate);
+Window attractive(const Vec3& a, const Vec3& b, double inv_omega, double T2) {
+  const auto [P, Q, S, A] = swing_of(a, b, inv_omega);
   if (T2 <= P - A) return {0, 4};  // always at least sqrt(T2) from the origin
   if (T2 > P + A) return {0, -1};  // never
   // alpha = acos(cos_alpha); phi and alpha may each be off by kAtanError.
@@ -22,14 +22,14 @@ Window attractive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
   return {fast_atan2(S, Q), fast_atan2(sin_alpha, cos_alpha) + 2 * kAtanError};
 }
 
-Window repulsive(const Vec3& a, const Vec3& b, double inv_rate, double T2) {
+Window repulsive(const Vec3& a, const Vec3& b, double inv_omega, double T2) {
   // h = C e^{Omega tau} + D e^{-Omega tau}; with E = e^{2 Omega tau},
   // E (|h|^2 - T2) = cc E^2 + beta E + dd, beta = 2 C.D - T2.
-  const Vec3 bW = b * inv_rate;
+  const Vec3 bW = b * inv_omega;
   const Vec3 C = 0.5 * (a + bW), D = 0.5 * (a - bW);
   const double cc = C.squaredNorm(), dd = D.squaredNorm(), beta = 2 * C.dot(D) - T2;
   const double disc = beta * beta - 4 * cc * dd;
-  if (beta >= 0 || disc <= 0) return {kInf, kInf};  // never negative for E > 0: always
+  if (beta >= 0 || disc <= 0) return {kInf, kInf};               // never negative for E > 0: always
   if (cc <= 0) return {fast_log(-dd / beta) + kLogError, kInf};  // only the decaying part
   // beta < 0, so neither root suffers cancellation.
   const double q = -beta + std::sqrt(disc);
@@ -59,11 +59,11 @@ Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
   // Each phase moves by the origin's; its rounding widens the window.
   const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(phase_origin) + 8);
   if (spring.k > 0) {
-    const Window w = attractive(a, b, spring.inv_rate, T2);
+    const Window w = attractive(a, b, spring.inv_omega, T2);
     return {w.first + phase_origin,
             w.second < 0 || w.second >= M_PI ? w.second : w.second + rounding};
   }
-  const Window w = spring.k < 0 ? repulsive(a, b, spring.inv_rate, T2) : free(a, b, T2);
+  const Window w = spring.k < 0 ? repulsive(a, b, spring.inv_omega, T2) : free(a, b, T2);
   return {w.first + phase_origin + rounding, w.second + phase_origin - rounding};
 }
 

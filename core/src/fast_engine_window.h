@@ -28,7 +28,7 @@ struct Window {
 
 /// The oscillator's k = J M and 1 / sqrt|k| (0 when k = 0).
 struct Spring {
-  double k = 0, inv_rate = 0;
+  double k = 0, inv_omega = 0;
 };
 
 /// For J > 0, with B = b / omega and theta = omega tau:
@@ -38,8 +38,8 @@ struct Swing {
   double P, Q, S, A;
 };
 
-inline Swing swing_of(const Vec3& a, const Vec3& b, double inv_rate) {
-  const Vec3 B = b * inv_rate;
+inline Swing swing_of(const Vec3& a, const Vec3& b, double inv_omega) {
+  const Vec3 B = b * inv_omega;
   const double aa = a.squaredNorm(), BB = B.squaredNorm();
   const double Q = 0.5 * (aa - BB), S = a.dot(B);
   return {0.5 * (aa + BB), Q, S, std::sqrt(Q * Q + S * S)};
@@ -52,10 +52,10 @@ Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
 Window always_window(double k);
 
 /// The time from which a schedule looks for the window: the end of a step, counted from 0.
-/// The windows' phase is phase_rate * time: 2 sqrt|k| t when J != 0, t itself when J = 0.
+/// The windows' phase is phase_per_time * time: 2 sqrt|k| t when J != 0, t itself when J = 0.
 struct Clock {
-  double k = 0, phase_rate = 1;
-  double steps_per_phase = 0;  ///< 1 / (phase_rate dt)
+  double k = 0, phase_per_time = 1;
+  double steps_per_phase = 0;  ///< 1 / (phase_per_time dt)
   double time = 0;
 };
 
@@ -73,7 +73,7 @@ inline Span span_of(const Window& w, const Clock& clock) {
     const double phi = w.first, alpha = w.second;
     if (alpha < 0) return {kInf, kInf};
     if (alpha >= M_PI) return {0, kInf};
-    const double x = clock.phase_rate * clock.time - phi;
+    const double x = clock.phase_per_time * clock.time - phi;
     // x minus the nearest multiple of 2 pi, in [-pi, pi] (|x| stays far below 2^53).
     const double turns = x * (1 / kTwoPi);
     const double psi = x - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
@@ -82,7 +82,7 @@ inline Span span_of(const Window& w, const Clock& clock) {
     return {ahead * clock.steps_per_phase, (ahead + 2 * alpha) * clock.steps_per_phase};
   }
   // J <= 0: the window is x <= first or x >= second.
-  const double x = clock.phase_rate * clock.time;
+  const double x = clock.phase_per_time * clock.time;
   if (x <= w.first) return {0, (w.first - x) * clock.steps_per_phase};
   if (x >= w.second) return {0, kInf};
   return {(w.second - x) * clock.steps_per_phase, kInf};  // +infinity when second is

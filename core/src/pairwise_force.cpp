@@ -4,7 +4,6 @@
 #include <thread>
 #endif
 
-#include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
 
 // The accumulators never alias the positions: telling the compiler lets it vectorise the
@@ -55,7 +54,7 @@ void add_rows(const Columns& c, std::size_t begin, std::size_t end, double* SWAR
 
 }  // namespace
 
-void pairwise_accelerations(const System& s, std::vector<Vec3>& a) {
+void pairwise_accelerations(const System& s, std::vector<Vec3>& a, int threads) {
   const std::size_t n = s.particles.size();
   Columns c;
   c.x.resize(n);
@@ -76,8 +75,10 @@ void pairwise_accelerations(const System& s, std::vector<Vec3>& a) {
   auto block = [&](std::vector<double>& acc, std::size_t begin, std::size_t end) {
     add_rows(c, begin, end, acc.data(), acc.data() + n, acc.data() + 2 * n);
   };
-#ifndef __EMSCRIPTEN__
-  if (n >= kThreadedPairs && thread_limit() >= 2) {
+#ifdef __EMSCRIPTEN__
+  (void)threads;  // the browser build has no threads
+#else
+  if (n >= kThreadedPairs && threads >= 2) {
     std::thread helper([&] { block(second, split, n); });
     block(first, 0, split);
     helper.join();

@@ -24,10 +24,10 @@ class ReferenceEngine final : public Engine {
   WallTally step(double dt) override {
     WallTally tally;
     if (!config_.container_radius) {
-      swarm::step(config_.method, system_, dt);
+      swarm::step(config_.method, system_, dt, config_.threads);
     } else if (config_.collisions == CollisionMode::paper) {
       reflect_predicted_leavers(dt, tally);
-      swarm::step(config_.method, system_, dt);
+      swarm::step(config_.method, system_, dt, config_.threads);
     } else {
       step_with_exact_hits(dt, tally);
     }
@@ -48,7 +48,7 @@ class ReferenceEngine final : public Engine {
     const double R2 = *config_.container_radius * *config_.container_radius;
     // The prediction is the method's own step, taken on a copy before anyone is reflected.
     System predicted = system_;
-    swarm::step(config_.method, predicted, dt);
+    swarm::step(config_.method, predicted, dt, config_.threads);
     for (std::size_t i = 0; i < system_.particles.size(); ++i) {
       auto& p = system_.particles[i];
       if (predicted.particles[i].r.squaredNorm() > R2 && moving_outward(p))

@@ -4,7 +4,7 @@
 
 namespace swarm {
 
-void step_analytic(System& s, double dt) {
+void step_analytic(System& s, double dt, int /*threads: one pass, O(N)*/) {
   // The CM is recomputed from the particles every step rather than carried separately: in the
   // repulsive case any difference between the two would grow as exp(Omega t).
   const Vec3 R = cm_position(s);

@@ -2,9 +2,9 @@
 
 namespace swarm {
 
-void step_euler_cromer(System& s, double dt) {
+void step_euler_cromer(System& s, double dt, int threads) {
   std::vector<Vec3> a;
-  pairwise_accelerations(s, a);
+  pairwise_accelerations(s, a, threads);
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
     auto& p = s.particles[i];
     p.v += a[i] * dt;

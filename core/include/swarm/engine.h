@@ -12,10 +12,17 @@
 
 namespace swarm {
 
+/// How many threads an engine uses by default: 2 where the platform has threads and at
+/// least two cores, 1 in the browser.
+int default_threads();
+
 struct EngineConfig {
   Method method = Method::analytic;
   CollisionMode collisions = CollisionMode::paper;
   std::optional<double> container_radius;  ///< none: an isolated system
+  /// Threads for the engine's work, 1 or 2 (more count as 2; the browser always uses 1).
+  /// Results do not depend on it: sums are combined in a fixed order.
+  int threads = default_threads();
 };
 
 class Engine {
@@ -36,7 +43,9 @@ class Engine {
 /// The straightforward engine: Appendix A with the chosen method as the trajectory map.
 std::unique_ptr<Engine> make_reference_engine(System initial, const EngineConfig& config);
 
-/// The best engine for the configuration.
+/// The best engine for the configuration: the fast engine (swarm/fast_engine.h) where it
+/// applies (the analytic method with paper collisions, with or without a container), else the
+/// reference engine.
 std::unique_ptr<Engine> make_engine(System initial, const EngineConfig& config);
 
 }  // namespace swarm

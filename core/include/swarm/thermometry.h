@@ -23,14 +23,13 @@ class WallMeter {
   /// R is the container radius during the step: the pressure divides by its area.
   void add(const WallTally& step_tally, double dt, double R);
   WallReading reading() const;
-  double elapsed() const { return elapsed_; }
   void reset();
 
  private:
   std::int64_t hits_ = 0;
   double impulse_per_area_ = 0;
   double hit_kinetic_energy_ = 0;
-  double elapsed_ = 0;
+  double elapsed_ = 0;  // time covered by the tallies added: P divides by it
 };
 
 }  // namespace swarm
