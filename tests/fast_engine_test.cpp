@@ -121,14 +121,6 @@ TEST_CASE("an isolated system in the fast engine follows the analytic solution")
   }
 }
 
-TEST_CASE("make_engine picks the fast engine only where it applies") {
-  const System s = crowded_swarm(10, 1.0, 1);
-  CHECK(fast_engine_stats(*make_engine(s, {Method::analytic, CollisionMode::paper, 1.0})));
-  CHECK_FALSE(fast_engine_stats(*make_engine(s, {Method::analytic, CollisionMode::exact, 1.0})));
-  CHECK_FALSE(fast_engine_stats(*make_engine(s, {Method::verlet, CollisionMode::paper, 1.0})));
-  CHECK_THROWS(make_fast_engine(s, {Method::rk4, CollisionMode::paper, 1.0}));
-}
-
 TEST_CASE("the fast engine only checks particles that can reach the wall") {
   // A large swarm with a few hundred hits per step must not touch every particle every step.
   const System s = crowded_swarm(20000, -1.0, 11, 1.0);
