@@ -22,20 +22,10 @@ constexpr ImU32 kPotential = IM_COL32(120, 200, 255, 255);
 constexpr ImU32 kTotal = IM_COL32(240, 240, 240, 255);
 constexpr ImU32 kFit = IM_COL32(255, 255, 255, 200);
 
+/// A method's plot colour, from the core's method table.
 ImU32 colour_of(swarm::Method m) {
-  switch (m) {
-    case swarm::Method::analytic:
-      return IM_COL32(235, 235, 235, 255);
-    case swarm::Method::euler:
-      return IM_COL32(255, 95, 95, 255);
-    case swarm::Method::euler_cromer:
-      return IM_COL32(100, 220, 120, 255);
-    case swarm::Method::verlet:
-      return IM_COL32(190, 140, 255, 255);
-    case swarm::Method::rk4:
-      return IM_COL32(80, 220, 220, 255);
-  }
-  return IM_COL32_WHITE;
+  const auto& [r, g, b] = swarm::info_of(m).colour;
+  return IM_COL32(r, g, b, 255);
 }
 
 /// The sample series of the primary run, with P and T averaged over a trailing time window.
