@@ -41,7 +41,8 @@ double error_after(const MethodInfo& method, double t_end, int steps) {
 
 /// The README's method table: the lines after its header row, up to the first non-table line.
 std::vector<std::string> readme_method_rows() {
-  std::ifstream in(SWARM_SOURCE_DIR "/README.md");
+  // The presets live in assets/presets/ of the repository, README.md at its top.
+  std::ifstream in(SWARM_PRESET_DIR "/../../README.md");
   REQUIRE(in);
   std::vector<std::string> rows;
   std::string line;

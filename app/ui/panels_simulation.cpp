@@ -116,9 +116,10 @@ void draw_transport_bar(AppState& state) {
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
 
   const double t = state.run->time();
-  const double rate = swarm::omega_of(swarm::stiffness(state.run->system()));
-  if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
-    ImGui::Text("t = %.3f   \u03c9t/2\u03c0 = %.3f", t, rate * t / (2 * M_PI));
+  const double k = swarm::stiffness(state.run->system());
+  const double rate = swarm::omega_of(k);
+  if (swarm::regime_of(k) == swarm::Regime::attractive)
+    ImGui::Text("t = %.3f   \u03c9t/2\u03c0 = %.3f", t, t / swarm::period_of(k));
   else if (rate > 0)
     ImGui::Text("t = %.3f   \u03a9t = %.3f", t, rate * t);
   else
