@@ -220,7 +220,7 @@ void draw_compare_tab(AppState& state, float plot_height) {
   p.y = {"max |\u0394r| from the exact orbit (length)", false, std::nullopt, std::nullopt};
   p.y_from_zero = true;
   p.empty_message = "tick 'analytic' under Side by side to measure position errors";
-  for (const ErrorTrack& track : errors)
+  for (const swarm::ErrorFromExact& track : errors)
     p.series.push_back({std::string(swarm::name_of(track.method)), &track.t, &track.position_error,
                         colour_of(track.method), false, 2.0f});
   draw_plot("position_error", p, plot_height);
