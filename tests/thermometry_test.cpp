@@ -29,3 +29,73 @@ TEST_CASE("wall pressure and temperature follow the paper's definitions, by hand
   CHECK(meter.reading().P == 0);
   CHECK(meter.reading().T == 0);
 }
+
+namespace {
+
+/// Four intervals by hand; the second and the fourth had no wall hit.
+std::vector<WallInterval> intervals_with_gaps() {
+  return {{1.0, 1.0, {2.0, 3.0, 4}},
+          {2.0, 1.0, {1.0, 0.0, 0}},
+          {2.5, 0.5, {4.0, 6.0, 2}},
+          {3.5, 1.0, {0.0, 0.0, 0}}};
+}
+
+void check_reading(const WallReading& w, double P, double T, std::int64_t hits) {
+  CHECK(w.P == Approx(P));
+  CHECK(w.T == Approx(T));
+  CHECK(w.hits == hits);
+}
+
+}  // namespace
+
+TEST_CASE("the wall average weighs P by time and T by hits; hitless intervals add nothing to T") {
+  const std::vector<WallInterval> in = intervals_with_gaps();
+  // P: impulse per area 2*1 + 1*1 + 4*0.5 + 0 = 5 over 3.5 time units. T: 4 hits at 3 and 2
+  // at 6 give (12 + 12) / 6 = 4; the unweighted mean over intervals with hits would be 4.5 and
+  // counting the hitless ones as T = 0 would give 2.25.
+  check_reading(wall_average(in, 0, 4), 5.0 / 3.5, 4.0, 6);
+  check_reading(wall_average(in, 1, 2), 1.0, 0.0, 0);  // nothing hit: T = 0 by convention
+  check_reading(wall_average(in, 1, 3), 3.0 / 1.5, 6.0, 2);
+}
+
+TEST_CASE("windowed wall averages: trailing, centred and zero windows, by hand") {
+  const std::vector<WallInterval> in = intervals_with_gaps();
+  // Trailing 1.5: the intervals ending in (t - 1.5, t].
+  const std::vector<WallReading> trailing = windowed_wall_averages(in, 1.5, 0);
+  REQUIRE(trailing.size() == 4);
+  check_reading(trailing[0], 2.0, 3.0, 4);        // {0}
+  check_reading(trailing[1], 3.0 / 2.0, 3.0, 4);  // {0, 1}: the hitless one leaves T at 3
+  check_reading(trailing[2], 3.0 / 1.5, 6.0, 2);  // {1, 2}
+  check_reading(trailing[3], 2.0 / 1.5, 6.0, 2);  // {2, 3}: interval 1 ends at 2, outside
+  // Centred, 1 either side: the intervals ending in (t - 1, t + 1].
+  const std::vector<WallReading> centred = windowed_wall_averages(in, 1, 1);
+  check_reading(centred[0], 3.0 / 2.0, 3.0, 4);  // {0, 1}
+  check_reading(centred[1], 3.0 / 1.5, 6.0, 2);  // {1, 2}
+  check_reading(centred[2], 3.0 / 2.5, 6.0, 2);  // {1, 2, 3}
+  check_reading(centred[3], 0.0, 0.0, 0);        // {3}: no hit in the window, so T = 0
+  // No window: every interval's own reading.
+  const std::vector<WallReading> own = windowed_wall_averages(in, 0, 0);
+  for (std::size_t i = 0; i < in.size(); ++i)
+    check_reading(own[i], in[i].reading.P, in[i].reading.T, in[i].reading.hits);
+}
+
+TEST_CASE("the wall average of intervals equals one meter over all of their steps") {
+  // Steps with and without hits, split into three intervals; the container grows in between,
+  // as in an expansion, so the per-step area matters.
+  const WallTally hit{3, 6.0, 9.0, Vec3::Zero()}, none{};
+  const WallTally steps[] = {hit, none, none, hit, none, hit, hit, none, none};
+  const double dt = 0.1, radius[] = {1.0, 1.5, 2.0};
+  WallMeter whole, part;
+  std::vector<WallInterval> intervals;
+  for (int i = 0; i < 9; ++i) {
+    whole.add(steps[i], dt, radius[i / 3]);
+    part.add(steps[i], dt, radius[i / 3]);
+    if (i % 3 == 2) {
+      intervals.push_back({dt * (i + 1), 3 * dt, part.reading()});  // three steps each
+      part.reset();
+    }
+  }
+  const WallReading expected = whole.reading();
+  check_reading(wall_average(intervals, 0, intervals.size()), expected.P, expected.T,
+                expected.hits);
+}

@@ -49,18 +49,17 @@ struct TimeAxis {
   }
 };
 
-template <class F>
-std::vector<double> column(const std::vector<swarm::Sample>& samples, F f) {
+template <class Row, class F>
+std::vector<double> column(const std::vector<Row>& rows, F f) {
   std::vector<double> out;
-  for (const swarm::Sample& s : samples) out.push_back(f(s));
+  for (const Row& row : rows) out.push_back(f(row));
   return out;
 }
 
 /// The relative energy change as the run's summary defines it (swarm::relative_energy_change).
 auto energy_change(const RunRecord& r) {
-  const swarm::Sample& first = r.samples.front();
-  const double E0 = r.summary.E0, fallback = first.KE + std::abs(first.PE);
-  return [E0, fallback](double E) { return swarm::relative_energy_change(E0, E, fallback); };
+  const swarm::Sample first = r.samples.front();
+  return [first](double E) { return swarm::relative_energy_change(first, E); };
 }
 
 NamedFigure energy_figure(const RunRecord& r, const TimeAxis& time) {
@@ -87,19 +86,6 @@ std::vector<swarm::Sample> wall_samples(const RunRecord& r) {
   return {r.samples.begin() + 1, r.samples.end()};
 }
 
-/// Running mean over `window` samples, centred, to show the trend through per-step noise.
-std::vector<double> running_mean(const std::vector<double>& y, std::size_t window) {
-  std::vector<double> out(y.size());
-  const std::size_t half = window / 2;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    const std::size_t a = i > half ? i - half : 0, b = std::min(y.size(), i + half + 1);
-    double sum = 0;
-    for (std::size_t k = a; k < b; ++k) sum += y[k];
-    out[i] = sum / double(b - a);
-  }
-  return out;
-}
-
 /// Fig. 4: P and T at every sample of a fixed container, each over its mean once equilibrated.
 NamedFigure equilibration_figure(const RunRecord& r, const TimeAxis& time) {
   const std::vector<swarm::Sample> samples = wall_samples(r);
@@ -107,34 +93,42 @@ NamedFigure equilibration_figure(const RunRecord& r, const TimeAxis& time) {
   // The paper's window, omega t > 6, when the run reaches well past it; else the later half.
   const bool paper_window = time.omega > 0 && t.back() > 2 * kEquilibratedOmegaT;
   const double start = paper_window ? kEquilibratedOmegaT : 0.5 * t.back();
-  double P_sum = 0, T_sum = 0;
-  long P_count = 0, T_count = 0;
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    if (t[i] > start) {
-      P_sum += samples[i].P, ++P_count;
-      if (samples[i].hits > 0) T_sum += samples[i].T, ++T_count;  // T needs a hit
-    }
-  const double P_mean = P_count ? P_sum / double(P_count) : 1;
-  const double T_mean = T_count && T_sum > 0 ? T_sum / double(T_count) : 1;
+  // Means and running means alike are wall averages (swarm::wall_average): P weighted by
+  // time, T by wall hits, so intervals without hits do not pull T down.
+  const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(r.samples);
+  std::size_t first_equilibrated = 0;
+  while (first_equilibrated < t.size() && t[first_equilibrated] <= start) ++first_equilibrated;
+  const swarm::WallReading equilibrated =
+      swarm::wall_average(intervals, first_equilibrated, intervals.size());
+  const double P_mean = equilibrated.P > 0 ? equilibrated.P : 1;
+  const double T_mean = equilibrated.T > 0 ? equilibrated.T : 1;
   const std::vector<double> P = column(samples, [&](auto& s) { return s.P / P_mean; });
   const std::vector<double> T = column(samples, [&](auto& s) { return s.T / T_mean; });
-  const std::size_t window = std::max<std::size_t>(1, samples.size() / 100);
+  // Centred on each sample, 1% of the run wide.
+  const double half_window = 0.005 * (samples.back().t - r.samples.front().t);
+  const std::vector<swarm::WallReading> running =
+      swarm::windowed_wall_averages(intervals, half_window, half_window);
+  const std::vector<double> P_running =
+      column(running, [&](const swarm::WallReading& w) { return w.P / P_mean; });
+  const std::vector<double> T_running =
+      column(running, [&](const swarm::WallReading& w) { return w.T / T_mean; });
   const std::string window_text = paper_window ? "ωt > 6" : "the later half";
-  const std::string averaged = "running mean of " + std::to_string(window) + " samples";
+  const std::string averaged = "running mean over 1% of the run";
 
-  auto panel = [&](const char* name, const std::vector<double>& y, int colour) {
+  auto panel = [&](const char* name, const std::vector<double>& y,
+                   const std::vector<double>& y_running, int colour) {
     Panel p{time.axis(), {std::string(name) + " / mean", ""}};
     p.height = 0.55;
     Series raw = series(std::string(name) + " per sample", t, y, colour);
     raw.thin = true;
-    p.series = {raw, series(averaged, t, running_mean(y, window), colour == blue ? purple : brown)};
+    p.series = {raw, series(averaged, t, y_running, colour == blue ? purple : brown)};
     p.note = std::string(name) + " normalised by its mean over " + window_text +
              printed(" (%.4g)", name[0] == 'P' ? P_mean : T_mean);
     return p;
   };
   Figure f{"Wall pressure and temperature in a fixed container",
            r.preset.name,
-           {panel("P", P, blue), panel("T", T, orange)},
+           {panel("P", P, P_running, blue), panel("T", T, T_running, orange)},
            true};
   return {"equilibration", f};
 }

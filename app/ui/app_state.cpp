@@ -30,11 +30,11 @@ void AppState::open(const swarm::Preset& p, std::string from) {
 
   // Start at a pace a class can follow: a period in five seconds, an expansion stage in ten.
   const swarm::System& s = run->system();
-  const double rate = swarm::omega_of(swarm::stiffness(s));
+  const double time_scale = swarm::natural_time_of(swarm::stiffness(s));
   if (p.expansion)
     speed = p.expansion->tau / 10;
-  else if (rate > 0)
-    speed = 2 * M_PI / rate / 5;
+  else if (std::isfinite(time_scale))
+    speed = time_scale / 5;
   else
     speed = p.duration / 20;
   speed = std::clamp(speed, 1e-3, 1e4);

@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "swarm/diagnostics.h"
 #include "swarm/regime.h"
-#include "swarm/side_by_side.h"
 
 namespace swarmlab {
 namespace {
@@ -14,74 +12,25 @@ constexpr std::size_t kTrailPoints = 600;
 
 }  // namespace
 
-LiveRun::LiveRun(const swarm::Preset& preset) : preset_(preset) {
+LiveRun::LiveRun(const swarm::Preset& preset)
+    : preset_(preset),
+      runs_(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare) {
   static long runs_made = 0;
   id_ = ++runs_made;
-  const swarm::System initial = swarm::initial_system(preset);
-  const swarm::RunPlan plan = swarm::run_plan(preset);
-  primary_ = std::make_unique<swarm::Run>(initial, plan);
-  for (swarm::Method m : preset.compare) {
-    swarm::RunPlan other = plan;
-    other.engine.method = m;
-    compared_.push_back(std::make_unique<swarm::Run>(initial, other));
-  }
-
-  // The exact solution to measure against: the primary itself, or a compared analytic run.
-  swarm::Run* exact = preset.method == swarm::Method::analytic ? primary_.get() : nullptr;
-  for (std::size_t i = 0; i < compared_.size() && !exact; ++i)
-    if (preset.compare[i] == swarm::Method::analytic) exact = compared_[i].get();
-  if (exact && exact != primary_.get()) analytic_reference_ = exact;
-  if (exact) {
-    if (preset.method != swarm::Method::analytic) errors_.push_back({preset.method, {}, {}});
-    for (swarm::Method m : preset.compare)
-      if (m != swarm::Method::analytic) errors_.push_back({m, {}, {}});
-  }
-  record_errors();
-
-  const double k = swarm::stiffness(initial);
-  const double rate = swarm::omega_of(k);
-  const double period = rate > 0 ? 2 * M_PI / rate : 2 * M_PI;
+  // About 150 trail points per period (or per the same time when J <= 0).
+  const double time_scale = swarm::natural_time_of(swarm::stiffness(system()));
+  const double period = std::isfinite(time_scale) ? time_scale : 2 * M_PI;
   trail_stride_ = std::max(1L, std::lround(period / 150.0 / preset.dt));
 }
 
 long LiveRun::advance(long steps) {
   long taken = 0;
-  // One step at a time in lockstep, so that the errors are taken at the primary's samples.
-  while (taken < steps && !finished()) {
-    const std::size_t before = primary_->samples().size();
-    primary_->advance(1);
-    for (auto& run : compared_) run->advance(1);
-    if (primary_->samples().size() != before) record_errors();
+  // One step at a time, so that the trails get their points between steps.
+  while (taken < steps && runs_.advance(1) == 1) {
     if (++steps_since_trail_point_ >= trail_stride_) record_trails();
     ++taken;
   }
   return taken;
-}
-
-void LiveRun::record_errors() {
-  if (errors_.empty()) return;
-  swarm::Run& exact = analytic_reference_ ? *analytic_reference_ : *primary_;
-  const swarm::System& reference = exact.engine().system();
-  std::size_t track = 0;
-  // Energy errors need no track: the Compare tab reads them from each run's samples.
-  auto add = [&](swarm::Run& run) {
-    ErrorTrack& e = errors_[track++];
-    const swarm::System& s = run.engine().system();
-    e.t.push_back(s.t);
-    e.position_error.push_back(swarm::max_position_difference(s, reference));
-  };
-  if (preset_.method != swarm::Method::analytic) add(*primary_);
-  for (std::size_t i = 0; i < compared_.size(); ++i)
-    if (preset_.compare[i] != swarm::Method::analytic) add(*compared_[i]);
-}
-
-void LiveRun::expand_container(double factor) {
-  auto grow = [factor](swarm::Run& run) {
-    if (const auto R = run.engine().container_radius())
-      run.engine().set_container_radius(*R * factor);
-  };
-  grow(*primary_);
-  for (auto& run : compared_) grow(*run);
 }
 
 void LiveRun::follow(const std::vector<std::size_t>& particles) {

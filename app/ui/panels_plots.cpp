@@ -22,20 +22,10 @@ constexpr ImU32 kPotential = IM_COL32(120, 200, 255, 255);
 constexpr ImU32 kTotal = IM_COL32(240, 240, 240, 255);
 constexpr ImU32 kFit = IM_COL32(255, 255, 255, 200);
 
+/// A method's plot colour, from the core's method table.
 ImU32 colour_of(swarm::Method m) {
-  switch (m) {
-    case swarm::Method::analytic:
-      return IM_COL32(235, 235, 235, 255);
-    case swarm::Method::euler:
-      return IM_COL32(255, 95, 95, 255);
-    case swarm::Method::euler_cromer:
-      return IM_COL32(100, 220, 120, 255);
-    case swarm::Method::verlet:
-      return IM_COL32(190, 140, 255, 255);
-    case swarm::Method::rk4:
-      return IM_COL32(80, 220, 220, 255);
-  }
-  return IM_COL32_WHITE;
+  const auto& [r, g, b] = swarm::info_of(m).colour;
+  return IM_COL32(r, g, b, 255);
 }
 
 /// The sample series of the primary run, with P and T averaged over a trailing time window.
@@ -54,33 +44,25 @@ struct SampleSeries {
     count = samples.size();
     window = average_window;
     for (auto* v : {&t, &P, &T, &P_mean, &T_mean, &t_all, &KE, &PE, &E, &drift}) v->clear();
-    const double E0 = samples.front().E;
-    double P_sum = 0, hit_T_sum = 0, hit_sum = 0;
-    std::size_t first = 1;  // the first sample (t = 0) has no interval behind it
-    for (std::size_t i = 1; i < samples.size(); ++i) {
-      const swarm::Sample& s = samples[i];
-      P_sum += s.P;
-      hit_T_sum += s.T * double(s.hits);
-      hit_sum += double(s.hits);
-      while (first < i && samples[first].t <= s.t - average_window) {
-        P_sum -= samples[first].P;
-        hit_T_sum -= samples[first].T * double(samples[first].hits);
-        hit_sum -= double(samples[first].hits);
-        ++first;
-      }
-      t.push_back(s.t);
-      P.push_back(s.P);
-      T.push_back(s.hits > 0 ? s.T : std::nan(""));
-      P_mean.push_back(P_sum / double(i - first + 1));
-      // The temperature is a mean over wall hits, so its average weighs intervals by hits.
-      T_mean.push_back(hit_sum > 0.5 ? hit_T_sum / hit_sum : std::nan(""));
+    // P and T over a trailing window, by the core's one definition of a wall average.
+    const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(samples);
+    const std::vector<swarm::WallReading> means =
+        swarm::windowed_wall_averages(intervals, average_window, 0);
+    for (std::size_t i = 0; i < intervals.size(); ++i) {
+      const swarm::WallReading& w = intervals[i].reading;
+      t.push_back(intervals[i].t_end);
+      P.push_back(w.P);
+      // Without a hit there is no temperature: a gap in the curve, not T = 0.
+      T.push_back(w.hits > 0 ? w.T : std::nan(""));
+      P_mean.push_back(means[i].P);
+      T_mean.push_back(means[i].hits > 0 ? means[i].T : std::nan(""));
     }
     for (const swarm::Sample& s : samples) {
       t_all.push_back(s.t);
       KE.push_back(s.KE);
       PE.push_back(s.PE);
       E.push_back(s.E);
-      drift.push_back(E0 != 0 ? (s.E - E0) / std::abs(E0) : s.E - E0);
+      drift.push_back(swarm::relative_energy_change(samples.front(), s.E));
     }
   }
 };
@@ -221,12 +203,11 @@ void draw_compare_tab(AppState& state, float plot_height) {
   for (std::size_t k = 0; k < runs; ++k) {
     swarm::Run& run = k == 0 ? state.run->primary() : state.run->compared(k - 1);
     const swarm::Method m = k == 0 ? state.preset.method : state.run->compared_method(k - 1);
-    const double E0 = run.samples().front().E;
     energy_t[k].clear();
     energy[k].clear();
     for (const swarm::Sample& s : run.samples()) {
       energy_t[k].push_back(s.t);
-      energy[k].push_back(E0 != 0 ? (s.E - E0) / std::abs(E0) : s.E - E0);
+      energy[k].push_back(swarm::relative_energy_change(run.samples().front(), s.E));
     }
     e.series.push_back(
         {std::string(swarm::name_of(m)), &energy_t[k], &energy[k], colour_of(m), false, 2.0f});
@@ -239,7 +220,7 @@ void draw_compare_tab(AppState& state, float plot_height) {
   p.y = {"max |\u0394r| from the exact orbit (length)", false, std::nullopt, std::nullopt};
   p.y_from_zero = true;
   p.empty_message = "tick 'analytic' under Side by side to measure position errors";
-  for (const ErrorTrack& track : errors)
+  for (const swarm::ErrorFromExact& track : errors)
     p.series.push_back({std::string(swarm::name_of(track.method)), &track.t, &track.position_error,
                         colour_of(track.method), false, 2.0f});
   draw_plot("position_error", p, plot_height);

@@ -13,28 +13,13 @@
 namespace swarmlab {
 namespace {
 
-constexpr swarm::Method kMethods[] = {swarm::Method::analytic, swarm::Method::euler,
-                                      swarm::Method::euler_cromer, swarm::Method::verlet,
-                                      swarm::Method::rk4};
-
-const char* describe(swarm::Method m) {
-  switch (m) {
-    case swarm::Method::analytic:
-      return "The exact closed-form orbits of the paper: every particle on its ellipse (or "
-             "hyperbola) about the centre of mass. O(N) per step, exact for any dt.";
-    case swarm::Method::euler:
-      return "x += v dt, then v += a dt from the pairwise forces. First order; the energy grows "
-             "every step. O(N^2).";
-    case swarm::Method::euler_cromer:
-      return "v += a dt, then x += v dt with the new v. First order, but the energy only wobbles "
-             "and stays bounded. O(N^2).";
-    case swarm::Method::verlet:
-      return "Velocity Verlet (kick-drift-kick). Second order, energy bounded. O(N^2).";
-    case swarm::Method::rk4:
-      return "Classical fourth-order Runge-Kutta. Very accurate for small dt; its energy "
-             "drifts slowly. O(N^2).";
-  }
-  return "";
+/// The method's row of the core's table as a tooltip: what it does, its order and its cost.
+std::string describe(swarm::Method m) {
+  const swarm::MethodInfo& info = swarm::info_of(m);
+  std::string text = std::string(info.display_name) + ": " + std::string(info.description) + ". ";
+  text += info.order == 0 ? std::string("Exact") : "Order " + std::to_string(info.order);
+  text += info.pairwise ? ", O(N^2) per step." : ", O(N) per step.";
+  return text;
 }
 
 }  // namespace
@@ -45,16 +30,17 @@ void draw_simulation_panel(AppState& state) {
   const float width = 0.55f * ImGui::GetContentRegionAvail().x;
   ImGui::SetNextItemWidth(width);
   if (ImGui::BeginCombo("method", std::string(swarm::name_of(d.method)).c_str())) {
-    for (swarm::Method m : kMethods) {
+    for (const swarm::MethodInfo& info : swarm::method_table()) {
+      const swarm::Method m = info.id;
       if (ImGui::Selectable(std::string(swarm::name_of(m)).c_str(), m == d.method)) {
         d.method = m;
         changed = true;
       }
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(m));
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(m).c_str());
     }
     ImGui::EndCombo();
   }
-  help_marker(describe(d.method));
+  help_marker(describe(d.method).c_str());
 
   ImGui::SetNextItemWidth(width);
   ImGui::InputDouble("dt", &d.dt, 0, 0, "%.6g");
@@ -73,7 +59,8 @@ void draw_simulation_panel(AppState& state) {
       "Run other methods from the same initial state in lockstep. With 'analytic' "
       "among them, its positions are drawn as hollow ghosts and the Compare plots show "
       "each numerical method's position and energy errors.");
-  for (swarm::Method m : kMethods) {
+  for (const swarm::MethodInfo& info : swarm::method_table()) {
+    const swarm::Method m = info.id;
     if (m == d.method) continue;
     bool on = std::find(d.compare.begin(), d.compare.end(), m) != d.compare.end();
     if (ImGui::Checkbox(std::string(swarm::name_of(m)).c_str(), &on)) {
@@ -129,9 +116,10 @@ void draw_transport_bar(AppState& state) {
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
 
   const double t = state.run->time();
-  const double rate = swarm::omega_of(swarm::stiffness(state.run->system()));
-  if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
-    ImGui::Text("t = %.3f   \u03c9t/2\u03c0 = %.3f", t, rate * t / (2 * M_PI));
+  const double k = swarm::stiffness(state.run->system());
+  const double rate = swarm::omega_of(k);
+  if (swarm::regime_of(k) == swarm::Regime::attractive)
+    ImGui::Text("t = %.3f   \u03c9t/2\u03c0 = %.3f", t, t / swarm::period_of(k));
   else if (rate > 0)
     ImGui::Text("t = %.3f   \u03a9t = %.3f", t, rate * t);
   else

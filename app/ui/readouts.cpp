@@ -58,7 +58,6 @@ void draw_readouts(AppState& state) {
   const double rate = swarm::omega_of(k);
   const double KE = swarm::kinetic_energy(s);
   const double E = KE + swarm::potential_energy_cm(s);
-  const double E0 = state.run->primary().samples().front().E;
   const double p = swarm::total_momentum(s).norm();
   const double L = swarm::angular_momentum_cm(s).norm();
 
@@ -76,7 +75,7 @@ void draw_readouts(AppState& state) {
     row("\u03c9", value,
         "\u03c9 = \u221a(J M): the one angular frequency of every particle "
         "about the centre of mass (J > 0).");
-    std::snprintf(value, sizeof value, "%.5g", 2 * M_PI / rate);
+    std::snprintf(value, sizeof value, "%.5g", swarm::period_of(k));
     row("period", value,
         "2\u03c0 / \u03c9 = 2\u03c0 / \u221a(J M): every orbit closes after "
         "this time, whatever its size and mass.");
@@ -93,9 +92,11 @@ void draw_readouts(AppState& state) {
       "E = \u03a3 \u00bd m\u1d62 v\u1d62\u00b2 + \u00bd J M \u03a3 m\u1d62 "
       "|r\u1d62 \u2212 R|\u00b2: kinetic plus the springs' potential energy (eq. 13). "
       "Conserved by the exact solution and by elastic wall hits.");
-  std::snprintf(value, sizeof value, "%+.2e", E0 != 0 ? (E - E0) / std::abs(E0) : E - E0);
+  std::snprintf(value, sizeof value, "%+.2e",
+                swarm::relative_energy_change(state.run->primary().samples().front(), E));
   row("\u0394E/|E\u2080|", value,
-      "Relative change of the energy since t = 0: rounding only for "
+      "Relative change of the energy since t = 0 (over KE\u2080 + |PE\u2080| when "
+      "E\u2080 = 0): rounding only for "
       "the analytic method; Euler's grows, Euler-Cromer's wobbles.");
   std::snprintf(value, sizeof value, "%.5g", p);
   row("|p|", value,

@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
-#include "swarm/flow.h"
+#include "swarm/orbit_ahead.h"
 #include "swarm/regime.h"
 
 namespace swarmlab {
@@ -125,27 +126,20 @@ void draw_springs(const Painter& paint, const swarm::System& s, SpringOverlay mo
   }
 }
 
-/// The analytic path of particle i from now on, about the uniformly moving centre of mass:
-/// one period when J > 0, a stretch of the runaway or the straight line otherwise.
-std::vector<Vec3f> orbit_ahead(const swarm::System& s, std::size_t i, float scene_radius) {
-  const swarm::Vec3 R = swarm::cm_position(s), V = swarm::cm_velocity(s);
-  const double k = swarm::stiffness(s);
-  const swarm::Particle& p = s.particles[i];
-  const swarm::Vec3 x = p.r - R, u = p.v - V;
-  const double rate = swarm::omega_of(k);
+/// The analytic path of a particle from now on (swarm::OrbitsAhead): one period when J > 0, a
+/// stretch of the runaway or of the straight line otherwise.
+std::vector<Vec3f> orbit_ahead(const swarm::OrbitsAhead& orbits, const swarm::Particle& p,
+                               float scene_radius) {
+  const double k = orbits.stiffness();
   double span;
   if (k > 0)
-    span = 2 * M_PI / rate;
+    span = swarm::period_of(k);
   else if (k < 0)
-    span = 2.5 / rate;
+    span = 2.5 / swarm::omega_of(k);
   else
-    span = 2 * scene_radius / std::max(u.norm(), 1e-12);
+    span = 2 * scene_radius / std::max((p.v - orbits.cm_velocity()).norm(), 1e-12);
   std::vector<Vec3f> out;
-  for (int step = 0; step <= 180; ++step) {
-    const double tau = span * step / 180;
-    const swarm::Flow f = swarm::Flow::over(k, tau);
-    out.push_back((R + V * tau + f.c * x + f.s * u).cast<float>());
-  }
+  for (const swarm::Vec3& r : orbits.path(p, span, 180)) out.push_back(r.cast<float>());
   return out;
 }
 
@@ -220,14 +214,18 @@ void draw_scene_overlay(AppState& state) {
 
   // In a small system every orbit is drawn faintly: the closed ellipses with one common period
   // are the paper's first result.
-  if (state.view.orbit && s.particles.size() <= kSpringLimit)
+  std::optional<swarm::OrbitsAhead> orbits;  // O(N) once, only when orbits are drawn
+  if (state.view.orbit) orbits.emplace(s);
+  if (orbits && s.particles.size() <= kSpringLimit)
     for (std::size_t i = 0; i < s.particles.size(); ++i)
       if (!state.selected || *state.selected != i)
-        paint.path(orbit_ahead(s, i, state.scene_radius), IM_COL32(255, 225, 90, 70), 1.3f);
+        paint.path(orbit_ahead(*orbits, s.particles[i], state.scene_radius),
+                   IM_COL32(255, 225, 90, 70), 1.3f);
   if (state.selected && *state.selected < s.particles.size()) {
     const std::size_t i = *state.selected;
-    if (state.view.orbit)
-      paint.path(orbit_ahead(s, i, state.scene_radius), IM_COL32(255, 225, 90, 220), 2.2f);
+    if (orbits)
+      paint.path(orbit_ahead(*orbits, s.particles[i], state.scene_radius),
+                 IM_COL32(255, 225, 90, 220), 2.2f);
     const ScreenPoint p = paint.project(s.particles[i].r.cast<float>());
     if (p.visible) {
       draw->AddCircle(paint.at(p), 0.9f * font, IM_COL32(255, 235, 120, 255), 24, 2.0f);

@@ -197,7 +197,7 @@ Preset parse(const json& j) {
   const std::string method = f.text("method", "analytic");
   const auto m = method_named(method);
   require(m.has_value(), "method",
-          "unknown method \"" + method + "\" (use analytic, euler, euler-cromer, verlet or rk4)");
+          "unknown method \"" + method + "\" (use " + method_names_listed() + ")");
   p.method = *m;
   const std::string collisions = f.text("collisions", "paper");
   const auto c = collision_mode_named(collisions);
@@ -243,8 +243,8 @@ Preset parse(const json& j) {
       if (!list[i].is_string()) fail(path, "must be a method name");
       const auto other = method_named(list[i].get<std::string>());
       require(other.has_value(), path,
-              "unknown method \"" + list[i].get<std::string>() +
-                  "\" (use analytic, euler, euler-cromer, verlet or rk4)");
+              "unknown method \"" + list[i].get<std::string>() + "\" (use " +
+                  method_names_listed() + ")");
       require(!(p.collisions == CollisionMode::exact && *other != Method::analytic), path,
               "collisions \"exact\" needs method \"analytic\"");
       p.compare.push_back(*other);

@@ -14,8 +14,12 @@ Regime regime_of(double k) {
 double omega_of(double k) { return std::sqrt(std::abs(k)); }
 
 double period_of(double k) {
-  if (k > 0) return 2 * M_PI / std::sqrt(k);
-  return std::numeric_limits<double>::infinity();
+  return k > 0 ? natural_time_of(k) : std::numeric_limits<double>::infinity();
+}
+
+double natural_time_of(double k) {
+  if (k == 0) return std::numeric_limits<double>::infinity();
+  return 2 * M_PI / omega_of(k);
 }
 
 }  // namespace swarm

@@ -12,6 +12,19 @@ double relative_energy_change(double E0, double E_end, double energy_scale) {
   return scale > 0 ? (E_end - E0) / scale : 0.0;
 }
 
+double relative_energy_change(const Sample& start, double E) {
+  return relative_energy_change(start.E, E, start.KE + std::abs(start.PE));
+}
+
+std::vector<WallInterval> wall_intervals(const std::vector<Sample>& samples) {
+  std::vector<WallInterval> out;
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    const Sample& s = samples[i];
+    out.push_back({s.t, s.t - samples[i - 1].t, {s.P, s.T, s.hits}});
+  }
+  return out;
+}
+
 Run::Run(System initial, const RunPlan& plan)
     : Run(make_engine(std::move(initial), plan.engine), plan) {}
 

@@ -22,6 +22,14 @@ SideBySide::SideBySide(const System& initial, const RunPlan& plan,
     other.engine.method = m;
     tracks_.push_back({m, std::make_unique<Run>(initial, other), {}});
   }
+  if (plan.engine.method == Method::analytic) exact_ = primary_.get();
+  for (std::size_t i = 0; i < tracks_.size() && !exact_; ++i)
+    if (tracks_[i].method == Method::analytic) exact_ = tracks_[i].run.get();
+  if (exact_) {
+    if (plan.engine.method != Method::analytic) errors_.push_back({plan.engine.method, {}, {}});
+    for (Method m : compared)
+      if (m != Method::analytic) errors_.push_back({m, {}, {}});
+  }
   record();
 }
 
@@ -31,6 +39,27 @@ void SideBySide::record() {
     const System& s = track.run->engine().system();
     track.samples.push_back({s.t, total_energy(s), max_position_difference(s, reference)});
   }
+  if (!exact_) return;
+  const System& exact = exact_->engine().system();
+  auto next = errors_.begin();
+  auto add = [&](Run& run) {
+    const System& s = run.engine().system();
+    next->t.push_back(s.t);
+    next->position_error.push_back(max_position_difference(s, exact));
+    ++next;
+  };
+  if (primary_->plan().engine.method != Method::analytic) add(*primary_);
+  for (Track& track : tracks_)
+    if (track.method != Method::analytic) add(*track.run);
+}
+
+void SideBySide::scale_container(double factor) {
+  auto grow = [factor](Run& run) {
+    if (const auto R = run.engine().container_radius())
+      run.engine().set_container_radius(*R * factor);
+  };
+  grow(*primary_);
+  for (Track& track : tracks_) grow(*track.run);
 }
 
 long SideBySide::advance(long n) {

@@ -1,6 +1,45 @@
 #include "swarm/thermometry.h"
 
+#include <algorithm>
+
 namespace swarm {
+namespace {
+
+/// The additive tallies behind consecutive readings: sums over intervals can be subtracted,
+/// so any window's average follows from two prefix sums.
+struct WallSums {
+  double impulse_per_area = 0;  ///< sum of P * duration
+  double hit_temperature = 0;   ///< sum of T * hits
+  std::int64_t hits = 0;
+  double elapsed = 0;
+
+  void add(const WallInterval& i) {
+    impulse_per_area += i.reading.P * i.duration;
+    hit_temperature += i.reading.T * double(i.reading.hits);
+    hits += i.reading.hits;
+    elapsed += i.duration;
+  }
+  /// The reading of the intervals counted in *this but not in `before`.
+  WallReading since(const WallSums& before) const {
+    WallReading w;
+    w.hits = hits - before.hits;
+    const double time = elapsed - before.elapsed;
+    if (time > 0) w.P = (impulse_per_area - before.impulse_per_area) / time;
+    if (w.hits > 0) w.T = (hit_temperature - before.hit_temperature) / double(w.hits);
+    return w;
+  }
+};
+
+std::vector<WallSums> prefix_sums(const std::vector<WallInterval>& intervals) {
+  std::vector<WallSums> prefix(intervals.size() + 1);
+  for (std::size_t i = 0; i < intervals.size(); ++i) {
+    prefix[i + 1] = prefix[i];
+    prefix[i + 1].add(intervals[i]);
+  }
+  return prefix;
+}
+
+}  // namespace
 
 void WallMeter::add(const WallTally& step_tally, double dt, double R) {
   hits_ += step_tally.hits;
@@ -18,5 +57,28 @@ WallReading WallMeter::reading() const {
 }
 
 void WallMeter::reset() { *this = WallMeter{}; }
+
+WallReading wall_average(const std::vector<WallInterval>& intervals, std::size_t first,
+                         std::size_t last) {
+  WallSums sums;
+  for (std::size_t i = first; i < last && i < intervals.size(); ++i) sums.add(intervals[i]);
+  return sums.since(WallSums{});
+}
+
+std::vector<WallReading> windowed_wall_averages(const std::vector<WallInterval>& intervals,
+                                                double before, double after) {
+  const std::vector<WallSums> prefix = prefix_sums(intervals);
+  std::vector<WallReading> out;
+  out.reserve(intervals.size());
+  std::size_t first = 0, last = 0;  // the window is [first, last)
+  for (std::size_t i = 0; i < intervals.size(); ++i) {
+    const double t = intervals[i].t_end;
+    while (last < intervals.size() && intervals[last].t_end <= t + after) ++last;
+    // Interval i itself always counts, so a zero window gives its own reading.
+    while (first < i && intervals[first].t_end <= t - before) ++first;
+    out.push_back(prefix[std::max(last, i + 1)].since(prefix[first]));
+  }
+  return out;
+}
 
 }  // namespace swarm

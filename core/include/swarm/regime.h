@@ -15,4 +15,8 @@ double omega_of(double k);
 /// Period 2 pi / omega of the attractive case; infinity otherwise.
 double period_of(double k);
 
+/// 2 pi / sqrt|k| (time): the period when k > 0, and when k < 0 the time in which the runaway
+/// grows e^(2 pi)-fold, the same scale of time for pacing and drawing; infinity when k = 0.
+double natural_time_of(double k);
+
 }  // namespace swarm

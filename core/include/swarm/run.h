@@ -80,5 +80,11 @@ class Run {
 
 /// Relative change (E_end - E0) / |E0|, or over KE0 + |PE0| when E0 is zero.
 double relative_energy_change(double E0, double E_end, double energy_scale);
+/// The same from a run's first sample: (E - E0) / |E0|, or over KE0 + |PE0| when E0 is zero.
+double relative_energy_change(const Sample& start, double E);
+
+/// The wall interval behind every sample but the first (which covers no step), for
+/// wall_average and windowed_wall_averages.
+std::vector<WallInterval> wall_intervals(const std::vector<Sample>& samples);
 
 }  // namespace swarm

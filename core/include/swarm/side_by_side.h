@@ -17,6 +17,13 @@ struct ComparisonSample {
   double position_error = 0;  ///< max over particles of |r_compared - r_primary|
 };
 
+/// How far one numerical method has strayed from the exact solution, at the primary's samples.
+struct ErrorFromExact {
+  Method method;
+  std::vector<double> t;
+  std::vector<double> position_error;  ///< max_i |r_i - r_i(analytic)| (length)
+};
+
 class SideBySide {
  public:
   struct Track {
@@ -32,13 +39,28 @@ class SideBySide {
   void finish(const std::function<void(double)>& progress = {});
 
   Run& primary() { return *primary_; }
+  const Run& primary() const { return *primary_; }
+  /// The compared runs, in the order asked for.
   const std::vector<Track>& tracks() const { return tracks_; }
+
+  /// The run of the exact solution: the primary when it is analytic, else the first compared
+  /// analytic run; null when no analytic method runs.
+  Run* exact() { return exact_; }
+  /// The distance of every numerical run (the primary first) from exact(), recorded at the
+  /// primary's samples; empty when no analytic method runs.
+  const std::vector<ErrorFromExact>& errors_from_exact() const { return errors_; }
+
+  /// Grows every run's container by `factor` at once. No particle is touched, so no work is
+  /// done.
+  void scale_container(double factor);
 
  private:
   void record();
 
   std::unique_ptr<Run> primary_;
   std::vector<Track> tracks_;
+  Run* exact_ = nullptr;
+  std::vector<ErrorFromExact> errors_;
 };
 
 /// max_i |a_i.r - b_i.r| over two systems of the same particles.

@@ -6,7 +6,10 @@
 /// energy is 2T: with this convention T equals the ideal-gas temperature and P V = N T holds
 /// when J = 0.
 
+#include <cstddef>
 #include <cstdint>
+#include <vector>
+
 #include "swarm/wall.h"
 
 namespace swarm {
@@ -31,5 +34,26 @@ class WallMeter {
   double hit_kinetic_energy_ = 0;
   double elapsed_ = 0;  // time covered by the tallies added: P divides by it
 };
+
+/// One interval's wall reading and the time it covers.
+struct WallInterval {
+  double t_end = 0;     ///< when the interval ended (time)
+  double duration = 0;  ///< its length (time)
+  WallReading reading;
+};
+
+/// P and T over the consecutive intervals [first, last), as one WallMeter over all of them would
+/// read: P is the total impulse per area over the total time (each interval weighted by its
+/// duration), T the mean over every hit (each interval weighted by its hits), so an interval
+/// without hits adds nothing to T instead of counting as T = 0. T = 0 when nothing hit.
+WallReading wall_average(const std::vector<WallInterval>& intervals, std::size_t first,
+                         std::size_t last);
+
+/// For every interval i, the wall_average over the intervals that end in
+/// (t_end_i - before, t_end_i + after], and interval i itself: a trailing window when
+/// after = 0 (the live plots), a centred one when before = after (the report's figures).
+/// O(number of intervals) in all.
+std::vector<WallReading> windowed_wall_averages(const std::vector<WallInterval>& intervals,
+                                                double before, double after);
 
 }  // namespace swarm
