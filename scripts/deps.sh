@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Swarm Lab needs, only those still missing, so a second run
-# costs a second. Usage: scripts/deps.sh [native] [desktop] [web]
+# costs a second. Usage: scripts/deps.sh [native] [desktop] [web] [fuzz]
 set -euo pipefail
 
 declare -A groups=(
   [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin"
   [desktop]="libimgui-dev libsdl2-dev libstb-dev fonts-dejavu-core xvfb xauth"
   [web]="emscripten nodejs npm chromium"
+  [fuzz]="clang libclang-rt-14-dev"
 )
 
 wanted=()

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite: installs what is missing, builds natively and with Emscripten, runs
 # the doctest suite natively and under node, the CLI as a process, the desktop window under
-# Xvfb and the browser app in headless Chromium.
+# Xvfb, the browser app in headless Chromium and a minute of fuzzing the preset parser.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh native desktop web
@@ -27,3 +27,6 @@ python3 tests/wasm/same_final_state.py build/app/swarmlab build-wasm/app/swarmla
 
 echo "== the browser app in headless Chromium (build/web, playwright-core)"
 tests/web/run.sh
+
+echo "== preset parsing, validation and the resource estimate under libFuzzer (a minute)"
+scripts/fuzz.sh 60

@@ -1,3 +1,5 @@
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <new>
 #include <stdexcept>
@@ -9,10 +11,50 @@
 #include "report/plot_files.h"
 #include "report/report.h"
 #include "result_json.h"
+#include "swarm/printable_text.h"
+#include "swarm/resource_budget.h"
 #include "swarm/side_by_side.h"
 
 namespace swarmlab {
 namespace {
+
+/// Runs to the end in chunks of about a tenth of a second (doubled or halved as they come in
+/// short or long), so the bar moves at least once a second however long the run or a step.
+void run_to_end(swarm::SideBySide& runs, ProgressBar& bar) {
+  using clock = std::chrono::steady_clock;
+  const double total = double(runs.primary().plan().steps);
+  long chunk = 1;
+  while (!runs.finished()) {
+    const clock::time_point start = clock::now();
+    runs.advance(chunk);
+    bar.update(double(runs.primary().steps_done()) / total);
+    const double seconds = std::chrono::duration<double>(clock::now() - start).count();
+    if (seconds < 0.05)
+      chunk *= 2;
+    else if (seconds > 0.2 && chunk > 1)
+      chunk /= 2;
+  }
+}
+
+/// "" when every number of the summaries is finite, else the first that is not.
+std::string non_finite_summary(swarm::SideBySide& runs) {
+  auto check = [](const swarm::RunSummary& s, const std::string& who) -> std::string {
+    const std::pair<const char*, double> values[] = {{"M", s.M},
+                                                     {"omega", s.omega},
+                                                     {"E0", s.E0},
+                                                     {"E_end", s.E_end},
+                                                     {"energy_drift", s.energy_drift},
+                                                     {"t_end", s.t_end}};
+    for (const auto& [name, x] : values)
+      if (!std::isfinite(x)) return who + "summary: " + name + " is not finite";
+    return {};
+  };
+  std::string err = check(runs.primary().summary(), "");
+  for (const auto& track : runs.tracks())
+    if (err.empty())
+      err = check(track.run->summary(), std::string(swarm::name_of(track.method)) + ": ");
+  return err;
+}
 
 void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
   const swarm::Run& run = runs.primary();
@@ -87,13 +129,28 @@ int run_command(const RunOptions& options) {
       return 1;
     }
   }
+  const swarm::Preset& preset = *parsed.preset;
+  // The files are built whole in memory before they are written: count them in the budget.
+  const bool files =
+      !options.out_path.empty() || !options.csv_path.empty() || !options.plots_dir.empty();
+  if (const std::string err = swarm::resource_error(preset, swarm::ResourceLimits{}, files);
+      !err.empty()) {
+    std::fprintf(stderr, "error: %s: %s\n", options.preset_path.c_str(), err.c_str());
+    return 1;
+  }
   try {
-    const swarm::Preset& preset = *parsed.preset;
     swarm::SideBySide runs(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare);
     swarm::Run& run = runs.primary();
     ProgressBar bar("running", !options.quiet);
-    runs.finish([&](double fraction) { bar.update(fraction); });
+    run_to_end(runs, bar);
     bar.finish();
+    std::string failure = runs.failure();
+    if (failure.empty()) failure = non_finite_summary(runs);
+    if (!failure.empty()) {
+      std::fprintf(stderr, "error: %s: the run stopped: %s; nothing was written\n",
+                   options.preset_path.c_str(), failure.c_str());
+      return 1;
+    }
 
     // All outputs are staged, then committed together: a failure leaves every old file as it
     // was, and Ctrl-C leaves no temporary behind.
@@ -113,8 +170,9 @@ int run_command(const RunOptions& options) {
       return 1;
     }
     if (!options.quiet) {
-      std::printf("%s\n\n",
-                  preset.name.empty() ? options.preset_path.c_str() : preset.name.c_str());
+      // A name is the preset author's text: escaped, so it cannot drive the terminal.
+      std::printf("%s\n\n", preset.name.empty() ? options.preset_path.c_str()
+                                                : swarm::printable(preset.name, 200).c_str());
       print_table(run.summary(), runs);
       if (!options.plots_dir.empty())
         std::printf("\nwrote %zu figures to %s\n", figures.size(), options.plots_dir.c_str());

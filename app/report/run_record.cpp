@@ -1,5 +1,6 @@
 #include "run_record.h"
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -9,11 +10,17 @@ namespace {
 
 using json = nlohmann::json;
 
+/// A number of a RESULT.json: runs written before non-finite numbers stopped a run wrote them
+/// as null, which reads back as NaN (a gap in the figures) rather than refusing the file.
+double number(const json& v) { return v.is_null() ? std::nan("") : v.get<double>(); }
+
 swarm::RunSummary summary_from(const json& j) {
   swarm::RunSummary s;
-  s.M = j.at("M"), s.omega = j.at("omega"), s.E0 = j.at("E0"), s.E_end = j.at("E_end");
-  s.energy_drift = j.at("energy_drift"), s.wall_hits = j.at("wall_hits"), s.steps = j.at("steps");
-  s.t_end = j.at("t_end");
+  s.M = number(j.at("M")), s.omega = number(j.at("omega")), s.E0 = number(j.at("E0")),
+  s.E_end = number(j.at("E_end"));
+  s.energy_drift = number(j.at("energy_drift")), s.wall_hits = j.at("wall_hits"),
+  s.steps = j.at("steps");
+  s.t_end = number(j.at("t_end"));
   return s;
 }
 
@@ -41,15 +48,18 @@ RecordRead read_result_file(const std::string& path) {
     r.preset = *parsed.preset;
     r.summary = summary_from(j.at("summary"));
     for (const json& x : j.at("samples"))
-      r.samples.push_back({x.at("t"), x.at("P"), x.at("T"), x.at("KE"), x.at("PE"), x.at("E"),
-                           x.at("hits"), x.at("R")});
+      r.samples.push_back({number(x.at("t")), number(x.at("P")), number(x.at("T")),
+                           number(x.at("KE")), number(x.at("PE")), number(x.at("E")), x.at("hits"),
+                           number(x.at("R"))});
     for (const json& x : j.at("stages"))
-      r.stages.push_back({x.at("R"), x.at("V"), x.at("P"), x.at("T"), x.at("E"), x.at("hits")});
+      r.stages.push_back({number(x.at("R")), number(x.at("V")), number(x.at("P")),
+                          number(x.at("T")), number(x.at("E")), x.at("hits")});
     if (j.contains("comparisons"))
       for (const json& c : j.at("comparisons")) {
-        ComparisonTrack track{c.at("method"), c.at("summary").at("energy_drift"), {}};
+        ComparisonTrack track{c.at("method"), number(c.at("summary").at("energy_drift")), {}};
         for (const json& x : c.at("samples"))
-          track.samples.push_back({x.at("t"), x.at("E"), x.at("position_error")});
+          track.samples.push_back(
+              {number(x.at("t")), number(x.at("E")), number(x.at("position_error"))});
         r.comparisons.push_back(std::move(track));
       }
     return {std::move(r), {}};

@@ -113,7 +113,14 @@ void App::advance_simulation(double seconds) {
     smooth(s.stats.speed_ratio, double(steps) / wanted);
   else if (!s.playing)
     s.stats.speed_ratio = 1;
-  if (s.run->finished()) s.playing = false;
+  if (s.run->finished()) {
+    s.playing = false;
+    // Validation keeps a preset's numbers finite; should one still overflow, say so.
+    if (const std::string& failure = s.run->primary().failure(); !failure.empty()) {
+      s.status = "The run stopped: " + failure;
+      s.status_is_error = true;
+    }
+  }
 }
 
 void App::layout_windows() {

@@ -1,11 +1,17 @@
 #include "swarm/preset.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
+#include <vector>
 
+#include "preset_numbers.h"
+#include "swarm/printable_text.h"
 #include "swarm/regime.h"
+#include "swarm/resource_budget.h"
 
 namespace swarm {
 namespace {
@@ -15,7 +21,9 @@ using json = nlohmann::json;
 constexpr long kMaxParticles = 10'000'000;
 constexpr long kMaxPairwiseParticles = 20'000;
 constexpr double kMaxSteps = 1e9;
-constexpr double kMaxRunawayExponent = 700;  // exp(700) is near the largest double
+/// nlohmann's tree of a preset takes up to about this many bytes per byte of its text (a list
+/// of particles: 8-byte numbers in 16-byte values, vectors and maps around them).
+constexpr double kParseBytesPerTextByte = 10;
 
 struct Invalid {
   std::string message;
@@ -48,7 +56,7 @@ class Fields {
         known = known || key == a;
         list += (list.empty() ? "" : ", ") + std::string(a);
       }
-      if (!known) fail(join(path_, key), "unknown key (allowed here: " + list + ")");
+      if (!known) fail(join(path_, printable(key)), "unknown key (allowed here: " + list + ")");
     }
   }
 
@@ -197,7 +205,7 @@ Preset parse(const json& j) {
   const std::string method = f.text("method", "analytic");
   const auto m = method_named(method);
   require(m.has_value(), "method",
-          "unknown method \"" + method + "\" (use " + method_names_listed() + ")");
+          "unknown method \"" + printable(method) + "\" (use " + method_names_listed() + ")");
   p.method = *m;
   const std::string collisions = f.text("collisions", "paper");
   const auto c = collision_mode_named(collisions);
@@ -220,6 +228,12 @@ Preset parse(const json& j) {
     x.stages = e.integer("stages", 1, 1'000'000);
     x.tau = e.number("tau");
     require(x.tau >= p.dt, e.path("tau"), "must be >= dt");
+    // Checked before anything rounds tau / dt to a whole number of steps (which could overflow).
+    require(x.tau / p.dt <= kMaxSteps, e.path("tau"),
+            "tau / dt = " + format(x.tau / p.dt) + " steps per stage: at most 1e9 steps in all");
+    require(double(x.stages) * std::round(x.tau / p.dt) <= kMaxSteps, "expansion",
+            "must give between 1 and 1e9 steps of dt (got stages * round(tau / dt) = " +
+                format(double(x.stages) * std::round(x.tau / p.dt)) + ")");
     x.thermalize_fraction = e.number("thermalize", 0.8);
     require(x.thermalize_fraction >= 0 && x.thermalize_fraction < 1, e.path("thermalize"),
             "must be in [0, 1)");
@@ -243,7 +257,7 @@ Preset parse(const json& j) {
       if (!list[i].is_string()) fail(path, "must be a method name");
       const auto other = method_named(list[i].get<std::string>());
       require(other.has_value(), path,
-              "unknown method \"" + list[i].get<std::string>() + "\" (use " +
+              "unknown method \"" + printable(list[i].get<std::string>()) + "\" (use " +
                   method_names_listed() + ")");
       require(!(p.collisions == CollisionMode::exact && *other != Method::analytic), path,
               "collisions \"exact\" needs method \"analytic\"");
@@ -256,10 +270,8 @@ Preset parse(const json& j) {
 /// Rules that look at the particles and the rest of the preset together.
 void check_consistency(const Preset& p) {
   long count = 0;
-  double max_mass_sum = 0;
   if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
     count = long(list->size());
-    for (const auto& q : *list) max_mass_sum += q.m;
     if (p.container_radius) {
       for (std::size_t i = 0; i < list->size(); ++i) {
         const double r = (*list)[i].r.norm();
@@ -271,7 +283,6 @@ void check_consistency(const Preset& p) {
   } else {
     const auto& s = std::get<SwarmSpec>(p.particles);
     count = s.count;
-    max_mass_sum = double(s.count) * s.mass_max;
     if (p.container_radius)
       require(s.position_radius <= *p.container_radius, "particles.position_radius",
               "must be <= container.radius (particles must start inside the container)");
@@ -285,12 +296,6 @@ void check_consistency(const Preset& p) {
             "\"" + std::string(name_of(p.method)) + "\" sums over every pair: use at most " +
                 std::to_string(kMaxPairwiseParticles) + " particles (got " + std::to_string(count) +
                 ")");
-  if (!p.container_radius && p.J < 0) {
-    const double growth = std::sqrt(-p.J * max_mass_sum) * p.duration;
-    require(growth <= kMaxRunawayExponent, "duration",
-            "an isolated repulsive system grows as exp(Omega t): Omega * duration must be <= " +
-                format(kMaxRunawayExponent) + " (got " + format(growth) + ")");
-  }
 }
 
 json to_json(const Preset& p) {
@@ -343,33 +348,131 @@ json to_json(const Preset& p) {
   return j;
 }
 
+/// No preset field needs a longer string; nlohmann reads a 100 MB one in seconds, so such text
+/// is refused by a scan before it is parsed.
+constexpr std::size_t kMaxStringBytes = 65'536;
+
+/// "" or a message about the first string literal longer than kMaxStringBytes.
+std::string overlong_string(std::string_view text) {
+  bool in_string = false;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (!in_string) {
+      if (c == '"') in_string = true, start = i + 1;
+    } else if (c == '\\') {
+      ++i;
+    } else if (c == '"') {
+      in_string = false;
+    } else if (i - start >= kMaxStringBytes) {
+      return "preset: the string at offset " + std::to_string(start) + " (\"" +
+             printable(text.substr(start, 40)) + "...\") is longer than " +
+             std::to_string(kMaxStringBytes) + " bytes, more than any field takes";
+    }
+  }
+  return {};
+}
+
+/// Parses one JSON value and nothing after it, refusing a key given twice in one object (JSON
+/// leaves that open and nlohmann would keep the last).
+json parse_strict(std::string_view text) {
+  struct Level {
+    bool is_array = false;
+    long index = 0;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  std::vector<Level> levels;
+  auto path = [&levels]() {
+    std::string out;
+    for (const Level& l : levels)
+      out += l.is_array ? "[" + std::to_string(l.index) + "]"
+                        : (out.empty() ? "" : ".") + printable(l.key);
+    return out;
+  };
+  auto value_done = [&levels]() {
+    if (!levels.empty() && levels.back().is_array) ++levels.back().index;
+  };
+  const json::parser_callback_t on_event = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        levels.push_back({false, 0, {}, {}});
+        break;
+      case json::parse_event_t::array_start:
+        levels.push_back({true, 0, {}, {}});
+        break;
+      case json::parse_event_t::key: {
+        Level& l = levels.back();
+        l.key = parsed.get<std::string>();
+        if (!l.keys.insert(l.key).second)
+          throw Invalid{path() + ": given twice (each key at most once)"};
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        levels.pop_back();
+        value_done();
+        break;
+      case json::parse_event_t::value:
+        value_done();
+        break;
+    }
+    return true;
+  };
+  return json::parse(text.begin(), text.end(), on_event);
+}
+
 }  // namespace
 
-PresetParse parse_preset(std::string_view json_text) {
+PresetParse parse_preset(std::string_view json_text, const ResourceLimits& limits) {
   PresetParse out;
+  const double reading = double(json_text.size()) * kParseBytesPerTextByte;
+  if (reading > limits.memory_bytes) {
+    out.error = "preset: " + format(double(json_text.size())) + " bytes of text need about " +
+                format(reading) + " bytes of memory to read (limit " + format(limits.memory_bytes) +
+                ")";
+    return out;
+  }
+  // nlohmann stops at a NUL byte as at the end of input, so whatever follows would go unread.
+  if (const std::size_t nul = json_text.find('\0'); nul != std::string_view::npos) {
+    out.error =
+        "preset: a NUL byte at offset " + std::to_string(nul) + " (a preset is plain JSON text)";
+    return out;
+  }
+  if (std::string e = overlong_string(json_text); !e.empty()) {
+    out.error = std::move(e);
+    return out;
+  }
   json j;
   try {
-    j = json::parse(json_text.begin(), json_text.end());
+    j = parse_strict(json_text);
+  } catch (const Invalid& e) {
+    out.error = e.message;
+    return out;
   } catch (const json::parse_error& e) {
-    out.error = std::string("preset: not valid JSON (") + e.what() + ")";
+    out.error = printable(std::string("preset: not valid JSON (") + e.what() + ")", 300);
     return out;
   } catch (const json::exception& e) {  // e.g. a number beyond the range of a double
-    out.error = std::string("preset: a number cannot be read (") + e.what() + ")";
+    out.error = printable(std::string("preset: a number cannot be read (") + e.what() + ")", 300);
     return out;
   }
   try {
     Preset p = parse(j);
     check_consistency(p);
+    if (std::string e = unrepresentable_numbers(p); !e.empty()) throw Invalid{std::move(e)};
+    if (std::string e = resource_error(p, limits); !e.empty()) throw Invalid{std::move(e)};
     out.preset = std::move(p);
   } catch (const Invalid& e) {
     out.error = e.message;
   } catch (const json::exception& e) {
-    out.error = std::string("preset: ") + e.what();
+    out.error = printable(std::string("preset: ") + e.what(), 300);
   }
   return out;
 }
 
-std::string preset_error(const Preset& p) { return parse_preset(preset_to_json(p)).error; }
+std::string preset_error(const Preset& p, const ResourceLimits& limits) {
+  return parse_preset(preset_to_json(p), limits).error;
+}
 
 std::string preset_to_json(const Preset& p, int indent) { return to_json(p).dump(indent); }
 

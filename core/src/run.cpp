@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <utility>
 
 #include "swarm/diagnostics.h"
 
@@ -74,8 +76,23 @@ void Run::step_once() {
       if (long(stages_.size()) < e.stages) engine_->set_container_radius(R * e.factor);
     }
   }
-  if (steps_done_ % plan_.sample_every == 0 || steps_done_ == plan_.steps)
+  if (steps_done_ % plan_.sample_every == 0 || steps_done_ == plan_.steps) {
     samples_.push_back(sample_now());
+    check_finite(samples_.back());
+  }
+}
+
+void Run::check_finite(const Sample& s) {
+  const std::pair<const char*, double> quantities[] = {
+      {"t", s.t}, {"P", s.P}, {"T", s.T}, {"KE", s.KE}, {"PE", s.PE}, {"E", s.E}, {"R", s.R}};
+  for (const auto& [name, value] : quantities)
+    if (!std::isfinite(value)) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "step %ld (t = %.6g): %s is not finite (%g)", steps_done_, s.t,
+                    name, value);
+      failure_ = buf;
+      return;
+    }
 }
 
 long Run::advance(long n) {

@@ -64,7 +64,7 @@ void SideBySide::scale_container(double factor) {
 
 long SideBySide::advance(long n) {
   long taken = 0;
-  while (taken < n && !primary_->finished()) {
+  while (taken < n && !finished()) {
     const std::size_t before = primary_->samples().size();
     primary_->advance(1);
     for (Track& track : tracks_) track.run->advance(1);
@@ -77,10 +77,20 @@ long SideBySide::advance(long n) {
 void SideBySide::finish(const std::function<void(double)>& progress) {
   const long total = primary_->plan().steps;
   const long chunk = std::max(1L, total / 1000);
-  while (!primary_->finished()) {
+  while (!finished()) {
     advance(chunk);
     if (progress) progress(double(primary_->steps_done()) / double(total));
   }
+}
+
+bool SideBySide::finished() const { return primary_->finished() || !failure().empty(); }
+
+std::string SideBySide::failure() const {
+  if (!primary_->failure().empty()) return primary_->failure();
+  for (const Track& track : tracks_)
+    if (!track.run->failure().empty())
+      return std::string(name_of(track.method)) + ": " + track.run->failure();
+  return {};
 }
 
 }  // namespace swarm

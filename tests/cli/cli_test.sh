@@ -170,4 +170,81 @@ printf '{"J": 1, "method": "rk4", "particles": {"count": 500, "position_radius":
 "$bin" run "$work/slow.json" 2>"$work/stderr" >/dev/null
 grep -q 'running \[#' "$work/stderr" && ok || bad "no progress bar on a long run"
 
+# Hostile but well-formed presets: refused at validation, fast, naming the field that drives
+# the cost or the overflow.
+expect_error samples-fill '{"J":1,"particles":{"count":1,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1}' 'sample_every: 1e+09 samples need ~128 GB of memory (limit ~12 GB); raise sample_every'
+expect_error repulsive-700 '{"J": -1, "particles": [{"m": 1, "r": [0.5,0,0], "v": [0,0,0]}, {"m": 1, "r": [-0.5,0,0], "v": [0,0,0]}], "dt": 0.01, "duration": 494.97474683058323}' "duration: an isolated repulsive system's energies grow as exp(2 Omega t)"
+expect_error overflow-J '{"J": 1e308, "particles": [{"m": 1, "r": [0,0,0], "v": [0,0,0]}, {"m": 1, "r": [0.1,0,0], "v": [0,0,0]}], "dt": 0.1, "duration": 1}' 'J: J * M = inf must stay within +-1e300'
+expect_error overflow-mass '{"J": 1, "particles": [{"m": 1e308, "r": [0,0,0], "v": [0,0,0]}, {"m": 1e308, "r": [0,0,0], "v": [0,0,0]}], "dt": 0.1, "duration": 1}' 'particles: the total mass M = inf must stay <= 1e300'
+expect_error overflow-r '{"J": 1, "particles": [{"m": 1, "r": [1e200,0,0], "v": [0,0,0]}], "dt": 0.1, "duration": 1}' 'particles: the energies at t = 0 could reach inf'
+expect_error expansion-factor '{"J": 1, "particles": {"count": 10, "position_radius": 1, "velocity": {"speed": 1}}, "container": {"radius": 1}, "dt": 1e-3, "expansion": {"factor": 1e308, "stages": 1000, "tau": 1e-3}}' 'expansion.factor: the container would grow to R * factor^(stages - 1) = inf'
+expect_error tau-over-dt '{"J": 1, "particles": {"count": 10, "position_radius": 1, "velocity": {"speed": 1}}, "container": {"radius": 1}, "dt": 1e-300, "expansion": {"factor": 1.1, "stages": 1000000, "tau": 1e300}}' 'expansion.tau: tau / dt = inf steps per stage'
+expect_error months-of-work '{"J":1,"particles":{"count":10000000,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1000000}' 'duration: 1e+07 particles x 1e+09 steps = 1e+16 particle-steps (limit 4e+12)'
+expect_error duplicate-key "{$good, \"duration\": 1, \"J\": 2}" 'J: given twice (each key at most once)'
+expect_error trailing "{$good, \"duration\": 1} {}" 'preset: not valid JSON'
+
+# Ten million particles run in the CLI, but not with RESULT.json (~17 GB): refused at once.
+printf '{"J":1,"particles":{"count":10000000,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e-3}' >"$work/ten-million.json"
+"$bin" validate "$work/ten-million.json" >/dev/null 2>&1 && ok || bad "ten million particles: not valid"
+start=$(date +%s.%N)
+"$bin" run "$work/ten-million.json" --out "$work/ten-million.out.json" 2>"$work/stderr" >/dev/null &&
+  bad "ten million particles with --out: exit 0" || {
+  grep -qF 'particles.count: 1e+07 particles need ~16.6 GB of memory (limit ~12 GB), RESULT.json included; use fewer particles' "$work/stderr" &&
+    ok || bad "ten million with --out: $(cat "$work/stderr")"; }
+python3 -c "import sys; sys.exit(0 if $(date +%s.%N) - $start < 2 else 1)" && ok || bad "ten million with --out: refused after more than 2 s"
+[ ! -e "$work/ten-million.out.json" ] && ok || bad "ten million with --out: wrote a file"
+
+# Text after a NUL byte was once ignored.
+printf '{%s, "duration": 1}\0{"J": 5}' "$good" >"$work/nul.json"
+"$bin" validate "$work/nul.json" 2>"$work/stderr" >/dev/null && bad "NUL byte: valid" || {
+  grep -qF 'preset: a NUL byte at offset' "$work/stderr" && ok || bad "NUL byte: $(cat "$work/stderr")"; }
+
+# A 100 MB method name (once 24-28 s and 600 MB to an error echoing it whole) is refused by a
+# scan before parsing, within a few seconds, quoting a short prefix.
+python3 -c "import sys; sys.stdout.write('{\"J\": 1, \"method\": \"' + 'x' * 100_000_000 + '\", \"particles\": [{\"m\": 1, \"r\": [0,0,0], \"v\": [0,0,0]}], \"dt\": 0.1, \"duration\": 1}')" >"$work/long-method.json"
+start=$(date +%s.%N)
+"$bin" validate "$work/long-method.json" 2>"$work/stderr" >/dev/null && bad "100 MB method: valid" || {
+  [ "$(wc -c <"$work/stderr")" -lt 300 ] && grep -qF 'preset: the string at offset 20 ("xxxxxxxx' "$work/stderr" && ok ||
+    bad "100 MB method: $(head -c 300 "$work/stderr")"; }
+python3 -c "import sys; sys.exit(0 if $(date +%s.%N) - $start < 10 else 1)" && ok || bad "100 MB method: more than 10 s"
+rm -f "$work/long-method.json"
+
+# A name with terminal escape sequences is printed escaped, never raw.
+printf '{"name": "\\u001b]0;pwned\\u0007\\u001b[2J", %s, "duration": 1}' "$good" >"$work/escape.json"
+"$bin" run "$work/escape.json" >"$work/stdout" 2>&1 && ok || bad "escape name: run failed"
+if grep -qP '\x1b|\x07' "$work/stdout"; then bad "escape name: raw control characters printed"; else ok; fi
+grep -qF '\u001b]0;pwned\u0007\u001b[2J' "$work/stdout" && ok || bad "escape name: not shown escaped"
+
+# report reads RESULT.json files with nulls (written by runs before non-finite numbers
+# stopped a run).
+"$bin" run "$work/good.json" --out "$work/with-nulls.json" --quiet &&
+  python3 - "$work/with-nulls.json" <<'PY' && ok || bad "could not write a RESULT.json with nulls"
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["samples"][-1]["E"] = None
+d["summary"]["E_end"] = None
+d["summary"]["energy_drift"] = None
+json.dump(d, open(sys.argv[1], "w"))
+PY
+"$bin" report "$work/with-nulls.json" --plots "$work/null-plots" --quiet 2>"$work/stderr" && ok ||
+  bad "report refuses nulls: $(cat "$work/stderr")"
+
+# A big run shows its progress at least once a second (the bar once moved every steps/1000
+# steps: for 1e6 particles 1e9 particle-steps between draws). Watched for 10 s, then stopped.
+printf '{"J":1,"particles":{"count":1000000,"position_radius":1,"velocity":{"speed":1}},"container":{"radius":1},"dt":1e-3,"duration":1000}' >"$work/big.json"
+python3 - "$bin" "$work/big.json" <<'PY' && ok || bad "big run: progress less often than once a second"
+import os, subprocess, sys, time, select
+p = subprocess.Popen([sys.argv[1], "run", sys.argv[2]], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+start = time.monotonic(); draws = []
+os.set_blocking(p.stderr.fileno(), False)
+while time.monotonic() - start < 10:
+    select.select([p.stderr], [], [], 0.05)
+    chunk = p.stderr.read()
+    if chunk and b"running [" in chunk: draws.append(time.monotonic() - start)
+p.kill(); p.wait()
+gaps = [b - a for a, b in zip(draws, draws[1:])]
+print("progress draws at", ["%.2f" % t for t in draws[:3]], "largest gap %.2f s" % max(gaps or [99]))
+sys.exit(0 if draws and draws[0] < 8 and max(gaps or [99]) <= 1.0 else 1)
+PY
+
 finish

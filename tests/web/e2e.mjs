@@ -311,6 +311,27 @@ async function main() {
   const malformed = await page.evaluate(() => { try { window.swarmlab.load('{ this is not json'); return null; } catch (e) { return e.message; } });
   check('load() rejects malformed JSON', !!malformed, malformed || 'accepted');
 
+  // 6b. Hostile but well-formed presets: ten million particles (beyond a Chromebook's ~1 GB) and
+  //     an isolated repulsive pair run past the point where its energies overflow. Refused
+  //     within a second or two with the field named; the previous preset keeps running.
+  const hostile = [
+    ['ten million particles', { name: 'E2E huge', J: 1, particles: { count: 10000000, position_radius: 1, velocity: { speed: 1 } }, dt: 1e-3, duration: 1 },
+     'particles.count: 1e+07 particles need'],
+    ['a pair that overflows to NaN', { name: 'E2E NaN', J: -1, particles: [{ m: 1, r: [0.5, 0, 0], v: [0, 0, 0] }, { m: 1, r: [-0.5, 0, 0], v: [0, 0, 0] }], dt: 0.01, duration: 494.97474683058323 },
+     "duration: an isolated repulsive system's energies grow as exp(2 Omega t)"],
+  ];
+  for (const [what, preset, message] of hostile) {
+    const started = Date.now();
+    const refused = await page.evaluate((text) => { try { window.swarmlab.load(text); return null; } catch (e) { return e.message; } }, JSON.stringify(preset));
+    const ms = Date.now() - started;
+    after = await state(page);
+    going = await clockAdvances(page, 400);
+    check(`load() of ${what}: refused within 2 s naming the field`, !!refused && refused.includes(message) && ms < 2000,
+          `${ms} ms: ${refused || 'accepted'}`);
+    check(`load() of ${what}: the previous preset keeps running`, after.preset?.name === DEFAULT_PRESET && going.ok,
+          `"${after.preset?.name}", ${going.detail}`);
+  }
+
   // 7. Download preset (the scenario panel's button, clicked) and Open preset (a file picker).
   const [download, clicked] = await Promise.all([page.waitForEvent('download', { timeout: 10_000 }).catch(() => null),
                                                  clickButton(page, 'Download preset')]);

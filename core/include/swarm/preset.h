@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "swarm/initial_conditions.h"
+#include "swarm/resource_budget.h"
 #include "swarm/run.h"
 
 namespace swarm {
@@ -37,9 +38,12 @@ struct PresetParse {
   std::string error;
 };
 
-PresetParse parse_preset(std::string_view json_text);
+/// Refuses text that is not exactly one JSON object (a NUL byte, anything after it, a key given
+/// twice), a preset whose derived numbers would leave the range of a double, and one that
+/// needs more than `limits` (the CLI's by default).
+PresetParse parse_preset(std::string_view json_text, const ResourceLimits& limits = {});
 /// Checks a preset built in code (the UI) against the same rules as parse_preset.
-std::string preset_error(const Preset& p);
+std::string preset_error(const Preset& p, const ResourceLimits& limits = {});
 std::string preset_to_json(const Preset& p, int indent = 2);
 
 /// The initial system: the explicit particles, or the generated swarm, at t = 0 with J set.

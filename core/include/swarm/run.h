@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "swarm/engine.h"
@@ -54,7 +55,11 @@ class Run {
   long advance(long n);
   /// Runs to the end, calling progress(fraction done) now and then.
   void finish(const std::function<void(double)>& progress = {});
-  bool finished() const { return steps_done_ >= plan_.steps; }
+  /// At the end, or stopped because a number left the range of a double (see failure()).
+  bool finished() const { return steps_done_ >= plan_.steps || !failure_.empty(); }
+  /// "" while every sample is finite, else which quantity stopped the run and at which step,
+  /// e.g. "step 412 (t = 0.412): E is not finite (nan)".
+  const std::string& failure() const { return failure_; }
   long steps_done() const { return steps_done_; }
 
   Engine& engine() { return *engine_; }
@@ -67,6 +72,7 @@ class Run {
  private:
   void step_once();
   Sample sample_now();
+  void check_finite(const Sample& s);
 
   std::unique_ptr<Engine> engine_;
   RunPlan plan_;
@@ -76,6 +82,7 @@ class Run {
   WallMeter sample_meter_, stage_meter_;
   std::vector<Sample> samples_;
   std::vector<Stage> stages_;
+  std::string failure_;
 };
 
 /// Relative change (E_end - E0) / |E0|, or over KE0 + |PE0| when E0 is zero.

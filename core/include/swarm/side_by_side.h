@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "swarm/run.h"
@@ -37,6 +38,11 @@ class SideBySide {
   /// Advances every run by up to n steps; returns the steps taken.
   long advance(long n);
   void finish(const std::function<void(double)>& progress = {});
+  /// At the end, or stopped because one of the runs failed.
+  bool finished() const;
+  /// "" while every run's numbers are finite, else the first failure, prefixed with the
+  /// method's name when it is a compared run's.
+  std::string failure() const;
 
   Run& primary() { return *primary_; }
   const Run& primary() const { return *primary_; }

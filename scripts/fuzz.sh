@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Fuzzes preset parsing, validation and the resource estimate with libFuzzer (Debian's clang,
+# AddressSanitizer and UndefinedBehaviorSanitizer), seeded with the shipped presets.
+# Usage: scripts/fuzz.sh [seconds] (default 60). New interesting inputs collect in
+# build-fuzz/corpus and make the next run start further; a crash leaves build-fuzz/crash-*,
+# which `build-fuzz/preset_fuzz FILE` replays.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+scripts/deps.sh fuzz
+
+out=build-fuzz
+mkdir -p "$out/obj" "$out/corpus"
+flags=(-std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
+       -Icore/include -Icore/src -I/usr/include/eigen3)
+launcher=()
+command -v ccache >/dev/null && launcher=(ccache)
+
+# The core's sources compile once each; only changed files are rebuilt.
+objects=()
+for src in core/src/*.cpp tests/fuzz/preset_fuzz.cpp; do
+  obj="$out/obj/$(basename "${src%.cpp}").o"
+  if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find core/include core/src -newer "$obj" -name '*.h' -print -quit)" ]; then
+    "${launcher[@]}" clang++ "${flags[@]}" -c "$src" -o "$obj"
+  fi
+  objects+=("$obj")
+done
+clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$out/preset_fuzz" -lpthread
+
+# The first corpus folder receives new inputs; the shipped presets are read-only seeds.
+cd "$out"
+./preset_fuzz -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
+  -print_final_stats=1 corpus ../assets/presets
