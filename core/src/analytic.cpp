@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "portable_math.h"
 #include "swarm/flow.h"
 #include "swarm/regime.h"
 
@@ -77,9 +78,11 @@ OrbitEllipse AnalyticSolution::ellipse(std::size_t i) const {
 
 OrbitEllipse ellipse_of(const Vec3& A, const Vec3& B) {
   // |A cos + B sin|^2 is extremal where tan(2 theta) = 2 A.B / (|A|^2 - |B|^2).
-  const double theta = 0.5 * std::atan2(2 * A.dot(B), A.squaredNorm() - B.squaredNorm());
-  const Vec3 p = A * std::cos(theta) + B * std::sin(theta);
-  const Vec3 q = -A * std::sin(theta) + B * std::cos(theta);
+  const double theta = 0.5 * portable::atan2(2 * A.dot(B), A.squaredNorm() - B.squaredNorm());
+  double sin_theta, cos_theta;
+  portable::sincos(theta, &sin_theta, &cos_theta);
+  const Vec3 p = A * cos_theta + B * sin_theta;
+  const Vec3 q = -A * sin_theta + B * cos_theta;
   if (p.squaredNorm() >= q.squaredNorm()) return {p, q};
   return {q, p};
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "portable_math.h"
+
 namespace swarm {
 
 PowerLawFit fit_power_law(const std::vector<double>& x, const std::vector<double>& y) {
@@ -9,8 +11,8 @@ PowerLawFit fit_power_law(const std::vector<double>& x, const std::vector<double
   std::vector<double> lx, ly;
   for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
     if (x[i] > 0 && y[i] > 0 && std::isfinite(x[i]) && std::isfinite(y[i])) {
-      lx.push_back(std::log(x[i]));
-      ly.push_back(std::log(y[i]));
+      lx.push_back(portable::log(x[i]));
+      ly.push_back(portable::log(y[i]));
       f.used.push_back(int(i));
     }
   }

@@ -1,7 +1,6 @@
 #include "swarm/flow.h"
 
-#include <cmath>
-
+#include "portable_math.h"
 #include "swarm/regime.h"
 
 namespace swarm {
@@ -9,10 +8,14 @@ namespace swarm {
 Flow Flow::over(double k, double t) {
   const double w = omega_of(k);
   switch (regime_of(k)) {
-    case Regime::attractive:
-      return {std::cos(w * t), std::sin(w * t) / w, k};
+    case Regime::attractive: {
+      // The core's own functions, so that native and WebAssembly runs agree to the bit.
+      double sin_wt, cos_wt;
+      portable::sincos(w * t, &sin_wt, &cos_wt);
+      return {cos_wt, sin_wt / w, k};
+    }
     case Regime::repulsive:
-      return {std::cosh(w * t), std::sinh(w * t) / w, k};
+      return {portable::cosh(w * t), portable::sinh(w * t) / w, k};
     case Regime::free:
       break;
   }

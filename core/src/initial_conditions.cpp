@@ -3,11 +3,14 @@
 #include <cmath>
 #include <random>
 
+#include "portable_math.h"
+
 namespace swarm {
 namespace {
 
 // std::uniform_real_distribution and std::normal_distribution differ between standard
-// libraries, so the native and WebAssembly builds would draw different swarms from one seed.
+// libraries, so the native and WebAssembly builds would draw different swarms from one seed;
+// libm's log and cos differ in the last bit between them too, hence portable_math.h.
 class Random {
  public:
   explicit Random(std::uint64_t seed) : engine_(seed) {}
@@ -18,7 +21,7 @@ class Random {
   double normal() {
     const double u1 = 1.0 - uniform();  // in (0, 1], so the log is finite
     const double u2 = uniform();
-    return std::sqrt(-2 * std::log(u1)) * std::cos(2 * M_PI * u2);
+    return std::sqrt(-2 * portable::log(u1)) * portable::cos(2 * M_PI * u2);
   }
   /// Three draws in a fixed order: the order in which function arguments are evaluated is
   /// unspecified (g++ and clang differ), so Vec3(draw(), draw(), draw()) is not reproducible.
