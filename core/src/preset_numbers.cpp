@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
+// The core's own exp and log, so that a preset at a limit is judged alike natively and in wasm.
+#include "portable_math.h"
+
 namespace swarm {
 namespace {
 
@@ -54,7 +57,7 @@ double energy_scale(double M, double k, double r, double v) {
 double amplification(Method m, double h, bool repulsive) {
   switch (m) {
     case Method::analytic:
-      return repulsive ? std::exp(h) : 1.0;
+      return repulsive ? portable::exp(h) : 1.0;
     case Method::euler:
       return repulsive ? 1 + h : std::sqrt(1 + h * h);
     case Method::euler_cromer:
@@ -68,13 +71,13 @@ double amplification(Method m, double h, bool repulsive) {
       return std::sqrt(std::max(1.0, 1 - h6 / 72 + h6 * h2 / 576));
     }
   }
-  return std::exp(h);
+  return portable::exp(h);
 }
 
 }  // namespace
 
 std::string unrepresentable_numbers(const Preset& p) {
-  const double ln_largest = std::log(kLargestDerived);
+  const double ln_largest = portable::log(kLargestDerived);
   const Extent x = extent_of(p);
   if (!(x.M <= kLargestDerived))
     return std::string(x.field) + ": the total mass M = " + number(x.M) + " must stay <= 1e300";
@@ -99,12 +102,12 @@ std::string unrepresentable_numbers(const Preset& p) {
       return "container.radius: must be >= 1e-100 (so that R^2 and the volume stay normal doubles)";
     if (R > kLargestRadius)
       return "container.radius: must be <= 1e100 (so that the volume 4/3 pi R^3 stays finite)";
-    double ln_R_final = std::log(R);
-    if (p.expansion) ln_R_final += double(p.expansion->stages - 1) * std::log(p.expansion->factor);
-    if (ln_R_final > std::log(kLargestRadius))
+    double ln_R_final = portable::log(R);
+    if (p.expansion) ln_R_final += double(p.expansion->stages - 1) * portable::log(p.expansion->factor);
+    if (ln_R_final > portable::log(kLargestRadius))
       return "expansion.factor: the container would grow to R * factor^(stages - 1) = " +
-             number(std::exp(ln_R_final)) + ", beyond 1e100 (so that V = 4/3 pi R^3 stays finite)";
-    R_final = std::exp(ln_R_final);
+             number(portable::exp(ln_R_final)) + ", beyond 1e100 (so that V = 4/3 pi R^3 stays finite)";
+    R_final = portable::exp(ln_R_final);
   }
 
   // Bound on the energies over the run before any growth: positions stay within the
@@ -132,10 +135,10 @@ std::string unrepresentable_numbers(const Preset& p) {
   methods.push_back(p.method);
   for (Method m : methods) {
     if (m == Method::analytic && (p.container_radius || !repulsive)) continue;
-    const double ln_growth = 2 * double(steps) * std::log(amplification(m, h, repulsive));
-    if (std::log(S_run) + ln_growth <= ln_largest) continue;
+    const double ln_growth = 2 * double(steps) * portable::log(amplification(m, h, repulsive));
+    if (portable::log(S_run) + ln_growth <= ln_largest) continue;
     if (m == Method::analytic) {
-      const double allowed = (ln_largest - std::log(S_run)) / 2;
+      const double allowed = (ln_largest - portable::log(S_run)) / 2;
       return "duration: an isolated repulsive system's energies grow as exp(2 Omega t) and must "
              "stay <= 1e300: with these particles Omega * duration must be <= " +
              number(allowed) + " (got " + number(omega * T) + ")";
@@ -147,11 +150,11 @@ std::string unrepresentable_numbers(const Preset& p) {
 
   // The wall pressure of a single step: every particle's momentum reversed at the smallest radius.
   if (p.container_radius) {
-    const double ln_P = std::log(2.0) + 0.5 * (std::log(x.M) + std::log(S_run)) -
-                        std::log(4 * M_PI) - 2 * std::log(*p.container_radius) - std::log(p.dt);
+    const double ln_P = portable::log(2.0) + 0.5 * (portable::log(x.M) + portable::log(S_run)) -
+                        portable::log(4 * M_PI) - 2 * portable::log(*p.container_radius) - portable::log(p.dt);
     if (ln_P > ln_largest)
       return "dt: the wall pressure of one step (momentum / (4 pi R^2 dt)) could reach " +
-             number(std::exp(std::min(ln_P, 700.0))) +
+             number(portable::exp(std::min(ln_P, 700.0))) +
              ", beyond 1e300; raise dt or container.radius";
   }
   return {};
