@@ -66,8 +66,9 @@ constexpr std::size_t kParallelChecks = 1;
 
 // [SECTION] State
 
-/// One lane of the schedule: its timing wheel and the sums of one step.
-struct Lane {
+/// One lane of the schedule: its timing wheel and the sums of one step. Each lane's thread
+/// writes its own sums in every check: a cache line apart, they never share one.
+struct alignas(64) Lane {
   TimingWheel wheel;
   std::vector<std::uint32_t> work;  // the ids taken from the wheel for this step
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
