@@ -16,15 +16,18 @@ flags=(-std=c++17 -g -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-saniti
 launcher=()
 command -v ccache >/dev/null && launcher=(ccache)
 
-# The core's sources compile once each; only changed files are rebuilt.
+# The core's sources compile once each, on every core; only changed files are rebuilt.
 objects=()
+jobs=$(nproc 2>/dev/null || echo 2)
 for src in core/src/*.cpp tests/fuzz/preset_fuzz.cpp; do
   obj="$out/obj/$(basename "${src%.cpp}").o"
   if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find core/include core/src -newer "$obj" -name '*.h' -print -quit)" ]; then
-    "${launcher[@]}" clang++ "${flags[@]}" -c "$src" -o "$obj"
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+    "${launcher[@]}" clang++ "${flags[@]}" -c "$src" -o "$obj" &
   fi
   objects+=("$obj")
 done
+while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n; done
 clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$out/preset_fuzz" -lpthread
 
 # The first corpus folder receives new inputs; the shipped presets are read-only seeds.
