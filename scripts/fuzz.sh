@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes preset parsing, validation and the resource estimate with libFuzzer (Debian's clang,
-# AddressSanitizer and UndefinedBehaviorSanitizer), seeded with the shipped presets.
+# AddressSanitizer and UndefinedBehaviorSanitizer), seeded with the shipped presets, and the
+# browser's share-link decoding under node (tests/fuzz/share_link_fuzz.mjs).
 # Usage: scripts/fuzz.sh [seconds] (default 60). New interesting inputs collect in
 # build-fuzz/corpus and make the next run start further; a crash leaves build-fuzz/crash-*,
 # which `build-fuzz/preset_fuzz FILE` replays.
@@ -30,7 +31,12 @@ done
 while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n; done
 clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$out/preset_fuzz" -lpthread
 
+# The share links' decoding in the page's JavaScript, under node, for a third of the time.
+echo "== share-link decoding (web/share_link.js) under node"
+node tests/fuzz/share_link_fuzz.mjs "$(( seconds / 3 > 0 ? seconds / 3 : 1 ))"
+
 # The first corpus folder receives new inputs; the shipped presets are read-only seeds.
+echo "== preset parsing, validation and the resource estimate under libFuzzer"
 cd "$out"
 ./preset_fuzz -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
   -print_final_stats=1 corpus ../assets/presets

@@ -28,5 +28,5 @@ python3 tests/wasm/same_final_state.py build/app/swarmlab build-wasm/app/swarmla
 echo "== the browser app in headless Chromium (build/web, playwright-core)"
 tests/web/run.sh
 
-echo "== preset parsing, validation and the resource estimate under libFuzzer (a minute)"
+echo "== fuzzing: preset parsing, validation and the resource estimate (libFuzzer, a minute) and share-link decoding (node, 20 s)"
 scripts/fuzz.sh 60
