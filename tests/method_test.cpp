@@ -10,25 +10,16 @@
 #include <vector>
 
 #include "swarm/system.h"
+#include "test_systems.h"
 
 using namespace swarm;
 using doctest::Approx;
+using swarm::testing::two_body_circle;
 
 namespace {
 
 constexpr Method kEveryMethod[] = {Method::analytic, Method::euler, Method::euler_cromer,
                                    Method::verlet, Method::rk4};
-
-/// Two unit masses at x = +-1/2 on a circle about their CM at rest, J = 1: k = J M = 2, so
-/// omega = sqrt(2) and the circular speed is omega / 2. Exactly, particle 0 is at
-/// (cos(omega t), sin(omega t), 0) / 2.
-System two_body_circle() {
-  const double w = std::sqrt(2.0);
-  System s;
-  s.J = 1.0;
-  s.particles = {{1.0, {0.5, 0, 0}, {0, 0.5 * w, 0}}, {1.0, {-0.5, 0, 0}, {0, -0.5 * w, 0}}};
-  return s;
-}
 
 /// Distance of particle 0 from its exact position after `steps` steps of the method to t_end.
 double error_after(const MethodInfo& method, double t_end, int steps) {

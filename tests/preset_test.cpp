@@ -3,13 +3,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "swarm/diagnostics.h"
 #include "swarm/run.h"
+#include "test_systems.h"
 
 using namespace swarm;
 
@@ -152,13 +151,9 @@ TEST_CASE("pairwise methods refuse swarms too large to integrate pair by pair") 
 
 TEST_CASE("every shipped preset is valid") {
   int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(SWARM_PRESET_DIR)) {
-    if (entry.path().extension() != ".json") continue;
-    std::ifstream in(entry.path());
-    std::stringstream text;
-    text << in.rdbuf();
-    CAPTURE(entry.path().string());
-    const PresetParse p = parse_preset(text.str());
+  for (const auto& [file, text] : swarm::testing::shipped_preset_texts()) {
+    CAPTURE(file);
+    const PresetParse p = parse_preset(text);
     CHECK(p.error == "");
     CHECK_FALSE(p.preset->description.empty());
     ++count;

@@ -2,11 +2,9 @@
 
 #include <doctest/doctest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "swarm/preset.h"
+#include "test_systems.h"
 
 using namespace swarm;
 
@@ -100,13 +98,9 @@ TEST_CASE("work beyond the limit is refused naming the run's length") {
 
 TEST_CASE("every shipped preset fits within the browser's limits") {
   int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(SWARM_PRESET_DIR)) {
-    if (entry.path().extension() != ".json") continue;
-    std::ifstream in(entry.path());
-    std::stringstream text;
-    text << in.rdbuf();
-    CAPTURE(entry.path().string());
-    const PresetParse p = parse_preset(text.str(), browser_limits());
+  for (const auto& [file, text] : swarm::testing::shipped_preset_texts()) {
+    CAPTURE(file);
+    const PresetParse p = parse_preset(text, browser_limits());
     CHECK(p.error == "");
     if (p.preset) CHECK(resource_error(*p.preset, ResourceLimits{}, true) == "");
     ++count;

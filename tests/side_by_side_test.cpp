@@ -9,6 +9,7 @@
 #include "test_systems.h"
 
 using namespace swarm;
+using swarm::testing::two_body_circle;
 
 namespace {
 
@@ -29,16 +30,6 @@ double largest_distance(const System& a, const System& b) {
     worst = std::max(worst, std::sqrt(d.x() * d.x() + d.y() * d.y() + d.z() * d.z()));
   }
   return worst;
-}
-
-/// Particle 0 of two unit masses on a circle of radius 1/2 about their CM at rest, J = 1
-/// (omega = sqrt(2)): exactly at (cos(omega t), sin(omega t), 0) / 2.
-System two_body_circle() {
-  const double w = std::sqrt(2.0);
-  System s;
-  s.J = 1.0;
-  s.particles = {{1.0, {0.5, 0, 0}, {0, 0.5 * w, 0}}, {1.0, {-0.5, 0, 0}, {0, -0.5 * w, 0}}};
-  return s;
 }
 
 }  // namespace

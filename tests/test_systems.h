@@ -5,6 +5,12 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"
@@ -63,6 +69,30 @@ void check_energy_kept_in_fixed_container(MakeEngine make_engine) {
     CHECK(std::abs(total_energy(engine->system()) - E0) / std::abs(E0) < 1e-10);
     for (const auto& p : engine->system().particles) CHECK(p.r.norm() < 1.01);
   }
+}
+
+/// Two unit masses at x = +-1/2 on a circle about their CM at rest, J = 1: k = J M = 2, so
+/// omega = sqrt(2) and the circular speed is omega / 2. Exactly, particle 0 is at
+/// (cos(omega t), sin(omega t), 0) / 2.
+inline System two_body_circle() {
+  const double w = std::sqrt(2.0);
+  System s;
+  s.J = 1.0;
+  s.particles = {{1.0, {0.5, 0, 0}, {0, 0.5 * w, 0}}, {1.0, {-0.5, 0, 0}, {0, -0.5 * w, 0}}};
+  return s;
+}
+
+/// The shipped presets (assets/presets/*.json) as {file name, text}.
+inline std::vector<std::pair<std::string, std::string>> shipped_preset_texts() {
+  std::vector<std::pair<std::string, std::string>> presets;
+  for (const auto& entry : std::filesystem::directory_iterator(SWARM_PRESET_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    std::ifstream in(entry.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    presets.emplace_back(entry.path().filename().string(), text.str());
+  }
+  return presets;
 }
 
 /// Steps `engine`, started from s, 5,000 times (dt = 1e-3) and checks that the momentum the

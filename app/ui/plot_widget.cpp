@@ -9,7 +9,7 @@
 namespace swarmlab {
 namespace {
 
-constexpr ImU32 kFrame = IM_COL32(22, 26, 34, 255);
+constexpr ImU32 kPlotBackground = IM_COL32(22, 26, 34, 255);
 constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 28);
 constexpr ImU32 kAxis = IM_COL32(200, 205, 215, 160);
 constexpr ImU32 kText = IM_COL32(215, 220, 230, 255);
@@ -88,7 +88,7 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
 
   const float left = origin.x + 4.2f * font, right = origin.x + width - 0.6f * font;
   const float top = origin.y + 1.5f * font, bottom = origin.y + height - 2.4f * font;
-  draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), kFrame, 4.0f);
+  draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), kPlotBackground, 4.0f);
   draw->AddText(ImVec2(origin.x + 0.5f * font, origin.y + 0.2f * font), kText, spec.title.c_str());
 
   Scale xs{0, 1, spec.x.log, left, right};
