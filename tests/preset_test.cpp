@@ -151,7 +151,10 @@ TEST_CASE("pairwise methods refuse swarms too large to integrate pair by pair") 
 
 TEST_CASE("every shipped preset is valid") {
   int count = 0;
-  for (const auto& [file, text] : swarm::testing::shipped_preset_texts()) {
+  // Named, not structured bindings: CAPTURE keeps them in a lambda, which C++17 forbids for those.
+  for (const auto& shipped : swarm::testing::shipped_preset_texts()) {
+    const std::string& file = shipped.first;
+    const std::string& text = shipped.second;
     CAPTURE(file);
     const PresetParse p = parse_preset(text);
     CHECK(p.error == "");

@@ -2,7 +2,6 @@
 
 #include <doctest/doctest.h>
 
-
 #include "swarm/preset.h"
 #include "test_systems.h"
 
@@ -98,7 +97,10 @@ TEST_CASE("work beyond the limit is refused naming the run's length") {
 
 TEST_CASE("every shipped preset fits within the browser's limits") {
   int count = 0;
-  for (const auto& [file, text] : swarm::testing::shipped_preset_texts()) {
+  // Named, not structured bindings: CAPTURE keeps them in a lambda, which C++17 forbids for those.
+  for (const auto& shipped : swarm::testing::shipped_preset_texts()) {
+    const std::string& file = shipped.first;
+    const std::string& text = shipped.second;
     CAPTURE(file);
     const PresetParse p = parse_preset(text, browser_limits());
     CHECK(p.error == "");
