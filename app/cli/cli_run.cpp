@@ -1,4 +1,3 @@
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <new>
@@ -17,24 +16,6 @@
 
 namespace swarmlab {
 namespace {
-
-/// Runs to the end in chunks of about a tenth of a second (doubled or halved as they come in
-/// short or long), so the bar moves at least once a second however long the run or a step.
-void run_to_end(swarm::SideBySide& runs, ProgressBar& bar) {
-  using clock = std::chrono::steady_clock;
-  const double total = double(runs.primary().plan().steps);
-  long chunk = 1;
-  while (!runs.finished()) {
-    const clock::time_point start = clock::now();
-    runs.advance(chunk);
-    bar.update(double(runs.primary().steps_done()) / total);
-    const double seconds = std::chrono::duration<double>(clock::now() - start).count();
-    if (seconds < 0.05)
-      chunk *= 2;
-    else if (seconds > 0.2 && chunk > 1)
-      chunk /= 2;
-  }
-}
 
 /// "" when every number of the summaries is finite, else the first that is not.
 std::string non_finite_summary(swarm::SideBySide& runs) {
@@ -142,7 +123,7 @@ int run_command(const RunOptions& options) {
     swarm::SideBySide runs(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare);
     swarm::Run& run = runs.primary();
     ProgressBar bar("running", !options.quiet);
-    run_to_end(runs, bar);
+    runs.finish([&bar](double done) { bar.update(done); });
     bar.finish();
     std::string failure = runs.failure();
     if (failure.empty()) failure = non_finite_summary(runs);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "advance_to_end.h"
 #include "swarm/diagnostics.h"
 
 namespace swarm {
@@ -105,11 +106,8 @@ long Run::advance(long n) {
 }
 
 void Run::finish(const std::function<void(double)>& progress) {
-  const long chunk = std::max(1L, plan_.steps / 1000);
-  while (!finished()) {
-    advance(chunk);
-    if (progress) progress(double(steps_done_) / double(plan_.steps));
-  }
+  advance_to_end([this](long n) { advance(n); }, [this] { return finished(); },
+                 [this] { return double(steps_done_) / double(plan_.steps); }, progress);
 }
 
 StageFits Run::fits() const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "advance_to_end.h"
 #include "swarm/diagnostics.h"
 
 namespace swarm {
@@ -75,12 +76,9 @@ long SideBySide::advance(long n) {
 }
 
 void SideBySide::finish(const std::function<void(double)>& progress) {
-  const long total = primary_->plan().steps;
-  const long chunk = std::max(1L, total / 1000);
-  while (!finished()) {
-    advance(chunk);
-    if (progress) progress(double(primary_->steps_done()) / double(total));
-  }
+  const double total = double(primary_->plan().steps);
+  advance_to_end([this](long n) { advance(n); }, [this] { return finished(); },
+                 [this, total] { return double(primary_->steps_done()) / total; }, progress);
 }
 
 bool SideBySide::finished() const { return primary_->finished() || !failure().empty(); }

@@ -53,7 +53,7 @@ class Run {
 
   /// Advances up to n steps; returns how many were taken.
   long advance(long n);
-  /// Runs to the end, calling progress(fraction done) now and then.
+  /// Runs to the end, calling progress(fraction done) at least about once a second.
   void finish(const std::function<void(double)>& progress = {});
   /// At the end, or stopped because a number left the range of a double (see failure()).
   bool finished() const { return steps_done_ >= plan_.steps || !failure_.empty(); }

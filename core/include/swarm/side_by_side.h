@@ -37,6 +37,7 @@ class SideBySide {
 
   /// Advances every run by up to n steps; returns the steps taken.
   long advance(long n);
+  /// Runs to the end, calling progress(fraction done) at least about once a second.
   void finish(const std::function<void(double)>& progress = {});
   /// At the end, or stopped because one of the runs failed.
   bool finished() const;
