@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include "swarm/energy_books.h"
 #include "swarm/system.h"
 
 namespace swarm {
@@ -13,6 +14,7 @@ struct WallTally {
   double radial_impulse = 0;          ///< sum |dp_r| = sum 2 m |v_r|, momentum units
   double hit_kinetic_energy = 0;      ///< sum of 1/2 m v^2 of the particles as they hit
   Vec3 wall_momentum = Vec3::Zero();  ///< momentum taken up by the wall: minus the system's change
+  EnergyBooks books;                  ///< energy from outside in the step (walls, floor, drag)
 
   void add(const WallTally& other);
 };
