@@ -11,203 +11,17 @@
 //   1.5-million-character link, a deflate bomb) never stalls the tab for a second or stops the drawing; no
 //   WebGL2 gives a clear message.
 // The last line is "N passed, M failed"; the exit code is non-zero on any failure.
-import { chromium } from 'playwright-core';
-import { spawn, spawnSync } from 'node:child_process';
-import { mkdtempSync, mkdirSync, rmSync, statSync, existsSync, writeFileSync, readFileSync, readdirSync } from 'node:fs';
-import { createServer } from 'node:net';
-import { tmpdir } from 'node:os';
-import { join, dirname, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { statSync, existsSync, writeFileSync, readFileSync, readdirSync } from 'node:fs';
+import { join } from 'node:path';
 import { deflateRawSync, constants as zlibConstants } from 'node:zlib';
+import * as harness from './harness.mjs';
 
-const root = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
-const webDir = process.env.SWARMLAB_WEB_DIR || join(root, 'build/web');
-const outDir = join(root, 'build/web-test');
-const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
-// The native CLI, to compare validation messages with (skipped when it is not built).
-const cliPath = process.env.SWARMLAB_CLI || join(root, 'build/app/swarmlab');
-const WASM_LIMIT = 4 * 1024 * 1024;
-const START_LIMIT_MS = 3000;  // navigation start to the first frame
-const OVERALL_MS = 110_000;   // the whole run, browser included, stays under 2 minutes
-const DEFAULT_PRESET = 'Four masses (paper Fig. 1)';
+const { root, webDir, outDir, check, sleep, base64url, shipped, openApp, state, clockAdvances,
+        analysePng, screenshot, clickButton, cliMessage, launchBrowser, runSuite, pageErrors,
+        consoleErrors, WASM_LIMIT, START_LIMIT_MS, DEFAULT_PRESET, VIEW_RECTS, PLOT_RECTS, vividIn,
+        cliPath } = harness;
 
-let passed = 0, failed = 0;
-function check(name, ok, detail = '') {
-  if (ok) { passed++; console.log(`ok    ${name}${detail ? ' (' + detail + ')' : ''}`); }
-  else { failed++; console.log(`FAIL  ${name}${detail ? ': ' + detail : ''}`); }
-  return ok;
-}
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
-const base64url = (buf) => Buffer.from(buf).toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
-const shipped = (file) => JSON.parse(readFileSync(join(root, 'assets/presets', file), 'utf8'));
-
-let server = null, context = null, profile = null;
-async function cleanup() {
-  if (context) await context.close().catch(() => {});
-  context = null;
-  if (server && server.exitCode === null) server.kill('SIGTERM');
-  if (profile) rmSync(profile, { recursive: true, force: true });
-}
-function finish() {
-  console.log(`${passed} passed, ${failed} failed`);
-  process.exit(failed > 0 || passed === 0 ? 1 : 0);
-}
-const watchdog = setTimeout(async () => {
-  check('whole run within ' + OVERALL_MS / 1000 + ' s', false, 'timed out');
-  await Promise.race([cleanup(), sleep(3000)]);
-  finish();
-}, OVERALL_MS);
-
-function freePort() {
-  return new Promise((res, rej) => {
-    const s = createServer();
-    s.once('error', rej);
-    s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => res(port)); });
-  });
-}
-
-async function startServer() {
-  const port = await freePort();
-  server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', '--directory', webDir, String(port)],
-                 { stdio: ['ignore', 'ignore', 'ignore'] });
-  const url = `http://127.0.0.1:${port}/`;
-  const deadline = Date.now() + 10_000;
-  while (Date.now() < deadline) {
-    if (server.exitCode !== null) throw new Error('http.server exited with ' + server.exitCode);
-    try { if ((await fetch(url)).ok) return url; } catch { /* not up yet */ }
-    await sleep(100);
-  }
-  throw new Error('http.server did not answer on ' + url);
-}
-
-// Console errors and uncaught exceptions of every page, checked at the end.
-const pageErrors = [], consoleErrors = [], consoleLog = [];
-function watch(page, label) {
-  page.on('pageerror', (e) => pageErrors.push(`${label}: ${e}`));
-  page.on('response', (r) => { if (r.status() >= 400) consoleErrors.push(`${label}: HTTP ${r.status()} for ${r.url()}`); });
-  page.on('console', (m) => {
-    consoleLog.push(`[${label} ${m.type()}] ${m.text()}`);
-    if (m.type() === 'error' && !/^Failed to load resource/.test(m.text())) consoleErrors.push(`${label}: ${m.text()}`);
-  });
-}
-
-// Opens url in a new page and waits for `frames` frames (or the page's own error).
-async function openApp(url, label, frames = 10) {
-  const page = await context.newPage();
-  watch(page, label);
-  await page.goto(url, { waitUntil: 'load' });
-  let started = true;
-  try {
-    await page.waitForFunction((n) => window.swarmlabError || (window.swarmlab && window.swarmlab.frames() >= n),
-                               frames, { timeout: 30_000, polling: 50 });
-  } catch { started = false; }
-  const error = await page.evaluate(() => window.swarmlabError || null);
-  return { page, started: started && !error, error };
-}
-
-const state = (page) => page.evaluate(() => {
-  const notice = document.getElementById('notice'), text = document.getElementById('notice-text');
-  let preset = null;
-  try { preset = JSON.parse(window.swarmlab.preset()); } catch { /* not started */ }
-  return { time: window.swarmlab.time(), preset, notice: notice.hidden ? '' : text.textContent.trim(),
-           noticeKind: notice.className, hash: location.hash };
-});
-
-// Over at least ms and at least three frames: a busy machine may draw only a few a second.
-async function clockAdvances(page, ms = 500) {
-  const t1 = await page.evaluate(() => window.swarmlab.time());
-  const f1 = await page.evaluate(() => window.swarmlab.frames());
-  await sleep(ms);
-  await page.waitForFunction((target) => window.swarmlab.frames() >= target, f1 + 3, { timeout: 10000 });
-  const t2 = await page.evaluate(() => window.swarmlab.time());
-  return { ok: t2 > t1, detail: `t ${t1.toFixed(3)} -> ${t2.toFixed(3)}` };
-}
-
-// Decodes a PNG in a blank page and measures it: distinct colours (quantised to 4 bits per
-// channel), the share of the most common colour and of black, and in each named rectangle the
-// number of vivid pixels (clearly coloured: the particles' colour map, the plot lines; the
-// UI's greys, dark blues and white text are not).
-async function analysePng(png, rects = {}) {
-  const scratch = await context.newPage();
-  await scratch.setContent('<html><body></body></html>');
-  const out = await scratch.evaluate(async ({ b64, rects }) => {
-    const img = new Image();
-    img.src = 'data:image/png;base64,' + b64;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width; c.height = img.height;
-    const g = c.getContext('2d');
-    g.drawImage(img, 0, 0);
-    const d = g.getImageData(0, 0, c.width, c.height).data;
-    const counts = new Map();
-    let black = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      const key = ((d[i] >> 4) << 8) | ((d[i + 1] >> 4) << 4) | (d[i + 2] >> 4);
-      counts.set(key, (counts.get(key) || 0) + 1);
-      if (d[i] < 8 && d[i + 1] < 8 && d[i + 2] < 8) black++;
-    }
-    const n = d.length / 4;
-    let top = 0, topKey = 0;
-    for (const [k, v] of counts) if (v > top) { top = v; topKey = k; }
-    const vivid = {};
-    for (const [name, [x0, y0, x1, y1]] of Object.entries(rects)) {
-      let count = 0;
-      for (let y = y0; y < y1; ++y) for (let x = x0; x < x1; ++x) {
-        const i = 4 * (y * c.width + x);
-        const hi = Math.max(d[i], d[i + 1], d[i + 2]), lo = Math.min(d[i], d[i + 1], d[i + 2]);
-        if (hi >= 150 && hi - lo >= 90) count++;
-      }
-      vivid[name] = count;
-    }
-    return { width: c.width, height: c.height, distinct: counts.size, topShare: top / n,
-             topColor: '#' + topKey.toString(16).padStart(3, '0'), blackShare: black / n, vivid };
-  }, { b64: png.toString('base64'), rects });
-  await scratch.close();
-  return out;
-}
-
-// At 1280x720 and UI scale 1: the controls take the left 352 px, the plots the right 400 px
-// (app/desktop/app.cpp), the menu bar the top 24 px; the transport bar and the read-outs sit in
-// the top left corner of the 3D view, and the page's messages at its bottom.
-const VIEW_RECTS = { viewRight: [580, 40, 870, 600], viewLower: [362, 360, 870, 600] };
-const PLOT_RECTS = { plots: [890, 100, 1270, 710] };
-const vividIn = (img, names) => names.reduce((sum, n) => sum + img.vivid[n], 0);
-
-async function screenshot(page, file, rects) {
-  await page.evaluate(() => { document.getElementById('notice').hidden = true; });
-  await sleep(150); // a frame or two without the message
-  const png = await page.screenshot({ path: join(outDir, file) });
-  const img = await analysePng(png, rects);
-  console.log(`      ${file} ${img.width}x${img.height}: ${img.distinct} colours, most common ${img.topColor} ` +
-              `${(100 * img.topShare).toFixed(1)}%, vivid pixels ${JSON.stringify(img.vivid)} -> build/web-test/${file}`);
-  return img;
-}
-
-// Clicks a button of the scenario panel where the app drew it, holding the mouse for a few
-// frames as a hand does (ImGui 1.86 reads the button state once a frame).
-async function clickButton(page, label) {
-  const r = await page.evaluate((l) => window.swarmlab.buttonRect(l), label);
-  if (!r) return false;
-  await page.mouse.move(r.x + r.width / 2, r.y + r.height / 2);
-  await sleep(80);
-  await page.mouse.down();
-  await sleep(120);
-  await page.mouse.up();
-  await sleep(120);
-  return true;
-}
-
-// What the CLI says about a preset file ("error: FILE: field: problem" -> "field: problem").
-function cliMessage(json) {
-  if (!existsSync(cliPath)) return null;
-  const file = join(profile, 'bad-preset.json');
-  writeFileSync(file, json);
-  const r = spawnSync(cliPath, ['validate', file], { encoding: 'utf8', timeout: 20_000 });
-  const m = /^error: .*?bad-preset\.json: (.*)$/m.exec(r.stderr || '');
-  return m ? m[1].trim() : null;
-}
-
-async function main() {
+async function main(url) {
   // 1. The build output.
   for (const f of ['index.html', 'swarmlab.js', 'swarmlab.wasm']) {
     if (!check(`build/web/${f} exists`, existsSync(join(webDir, f)))) return;
@@ -215,20 +29,7 @@ async function main() {
   const wasmSize = statSync(join(webDir, 'swarmlab.wasm')).size;
   check('swarmlab.wasm < 4 MB', wasmSize < WASM_LIMIT, `${(wasmSize / 1048576).toFixed(2)} MB`);
 
-  const url = await startServer();
-  mkdirSync(outDir, { recursive: true });
-  profile = mkdtempSync(join(tmpdir(), 'swarmlab-chromium-'));
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath: chromiumPath,
-    headless: true,
-    viewport: { width: 1280, height: 720 },
-    acceptDownloads: true,
-    timeout: 30_000,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-           '--disable-background-networking', '--disable-component-update', '--disable-sync',
-           '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-  });
-  context.setDefaultTimeout(30_000);
+  const context = await launchBrowser({ width: 1280, height: 720 });
   const blank = context.pages()[0];
 
   // 2. The app starts within 3 s and renders frames.
@@ -515,12 +316,4 @@ async function main() {
   await noGl.close();
 }
 
-try {
-  await main();
-} catch (e) {
-  check('test run', false, String(e && e.stack || e).split('\n').slice(0, 3).join(' / '));
-}
-writeFileSync(join(outDir, 'console.log'), consoleLog.join('\n') + '\n');
-clearTimeout(watchdog);
-await cleanup();
-finish();
+await runSuite('e2e', 110_000, main);

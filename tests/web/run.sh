@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Browser end-to-end test of the web build: (re)builds build/web (scripts/web.sh --build-only,
 # seconds when nothing changed; --no-build skips it), installs playwright-core from npm into
-# tests/web/node_modules if needed, then runs e2e.mjs in Debian's headless Chromium.
-# Last line: "N passed, M failed". Screenshots and the console log: build/web-test/.
+# tests/web/node_modules if needed, then runs e2e.mjs and every *_e2e.mjs suite beside it
+# (each its own Chromium, sharing harness.mjs) in Debian's headless Chromium.
+# Each suite ends with "N passed, M failed"; the exit code is non-zero if any suite failed.
+# Screenshots and console logs: build/web-test/.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -35,4 +37,10 @@ if [ ! -f "$here/node_modules/playwright-core/package.json" ] || [ "$here/packag
 fi
 
 cd "$root"
-exec timeout 150 node "$here/e2e.mjs"
+status=0
+for suite in "$here/e2e.mjs" "$here"/*_e2e.mjs; do
+  [ -f "$suite" ] || continue
+  echo "== $(basename "$suite")"
+  timeout 150 node "$suite" || status=1
+done
+exit $status

@@ -1,0 +1,233 @@
+// What every browser suite in tests/web/ shares: the served build/web, one headless Chromium
+// with a persistent profile, pages that report their errors, screenshots measured by colour,
+// clicks held for a few frames, the CLI's validation message, and the "N passed, M failed"
+// line. A suite calls runSuite(name, overallMs, main) with main(url) doing its checks.
+import { chromium } from 'playwright-core';
+import { spawn, spawnSync } from 'node:child_process';
+import { mkdtempSync, mkdirSync, rmSync, existsSync, writeFileSync, readFileSync } from 'node:fs';
+import { createServer } from 'node:net';
+import { tmpdir } from 'node:os';
+import { join, dirname, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const root = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
+export const webDir = process.env.SWARMLAB_WEB_DIR || join(root, 'build/web');
+export const outDir = join(root, 'build/web-test');
+export const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
+// The native CLI, to compare validation messages with (skipped when it is not built).
+export const cliPath = process.env.SWARMLAB_CLI || join(root, 'build/app/swarmlab');
+export const WASM_LIMIT = 4 * 1024 * 1024;
+export const START_LIMIT_MS = 3000;  // navigation start to the first frame
+export const DEFAULT_PRESET = 'Four masses (paper Fig. 1)';
+
+export let passed = 0, failed = 0;
+export function check(name, ok, detail = '') {
+  if (ok) { passed++; console.log(`ok    ${name}${detail ? ' (' + detail + ')' : ''}`); }
+  else { failed++; console.log(`FAIL  ${name}${detail ? ': ' + detail : ''}`); }
+  return ok;
+}
+export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+export const base64url = (buf) => Buffer.from(buf).toString('base64').replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+export const shipped = (file) => JSON.parse(readFileSync(join(root, 'assets/presets', file), 'utf8'));
+
+let server = null, profile = null;
+/** The browser of the running suite (set by runSuite). */
+export let context = null;
+export async function cleanup() {
+  if (context) await context.close().catch(() => {});
+  context = null;
+  if (server && server.exitCode === null) server.kill('SIGTERM');
+  if (profile) rmSync(profile, { recursive: true, force: true });
+}
+export function finish() {
+  console.log(`${passed} passed, ${failed} failed`);
+  process.exit(failed > 0 || passed === 0 ? 1 : 0);
+}
+
+export function freePort() {
+  return new Promise((res, rej) => {
+    const s = createServer();
+    s.once('error', rej);
+    s.listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => res(port)); });
+  });
+}
+
+export async function startServer() {
+  const port = await freePort();
+  server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', '--directory', webDir, String(port)],
+                 { stdio: ['ignore', 'ignore', 'ignore'] });
+  const url = `http://127.0.0.1:${port}/`;
+  const deadline = Date.now() + 10_000;
+  while (Date.now() < deadline) {
+    if (server.exitCode !== null) throw new Error('http.server exited with ' + server.exitCode);
+    try { if ((await fetch(url)).ok) return url; } catch { /* not up yet */ }
+    await sleep(100);
+  }
+  throw new Error('http.server did not answer on ' + url);
+}
+
+// Console errors and uncaught exceptions of every page, checked at the end.
+export const pageErrors = [], consoleErrors = [], consoleLog = [];
+export function watch(page, label) {
+  page.on('pageerror', (e) => pageErrors.push(`${label}: ${e}`));
+  page.on('response', (r) => { if (r.status() >= 400) consoleErrors.push(`${label}: HTTP ${r.status()} for ${r.url()}`); });
+  page.on('console', (m) => {
+    consoleLog.push(`[${label} ${m.type()}] ${m.text()}`);
+    if (m.type() === 'error' && !/^Failed to load resource/.test(m.text())) consoleErrors.push(`${label}: ${m.text()}`);
+  });
+}
+
+// Opens url in a new page and waits for `frames` frames (or the page's own error).
+export async function openApp(url, label, frames = 10) {
+  const page = await context.newPage();
+  watch(page, label);
+  await page.goto(url, { waitUntil: 'load' });
+  let started = true;
+  try {
+    await page.waitForFunction((n) => window.swarmlabError || (window.swarmlab && window.swarmlab.frames() >= n),
+                               frames, { timeout: 30_000, polling: 50 });
+  } catch { started = false; }
+  const error = await page.evaluate(() => window.swarmlabError || null);
+  return { page, started: started && !error, error };
+}
+
+export const state = (page) => page.evaluate(() => {
+  const notice = document.getElementById('notice'), text = document.getElementById('notice-text');
+  let preset = null;
+  try { preset = JSON.parse(window.swarmlab.preset()); } catch { /* not started */ }
+  return { time: window.swarmlab.time(), preset, notice: notice.hidden ? '' : text.textContent.trim(),
+           noticeKind: notice.className, hash: location.hash };
+});
+
+// Over at least ms and at least three frames: a busy machine may draw only a few a second.
+export async function clockAdvances(page, ms = 500) {
+  const t1 = await page.evaluate(() => window.swarmlab.time());
+  const f1 = await page.evaluate(() => window.swarmlab.frames());
+  await sleep(ms);
+  await page.waitForFunction((target) => window.swarmlab.frames() >= target, f1 + 3, { timeout: 30_000 });
+  const t2 = await page.evaluate(() => window.swarmlab.time());
+  return { ok: t2 > t1, detail: `t ${t1.toFixed(3)} -> ${t2.toFixed(3)}` };
+}
+
+// Decodes a PNG in a blank page and measures it: distinct colours (quantised to 4 bits per
+// channel), the share of the most common colour and of black, and in each named rectangle the
+// number of vivid pixels (clearly coloured: the particles' colour map, the plot lines; the
+// UI's greys, dark blues and white text are not).
+export async function analysePng(png, rects = {}) {
+  const scratch = await context.newPage();
+  await scratch.setContent('<html><body></body></html>');
+  const out = await scratch.evaluate(async ({ b64, rects }) => {
+    const img = new Image();
+    img.src = 'data:image/png;base64,' + b64;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    const counts = new Map();
+    let black = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const key = ((d[i] >> 4) << 8) | ((d[i + 1] >> 4) << 4) | (d[i + 2] >> 4);
+      counts.set(key, (counts.get(key) || 0) + 1);
+      if (d[i] < 8 && d[i + 1] < 8 && d[i + 2] < 8) black++;
+    }
+    const n = d.length / 4;
+    let top = 0, topKey = 0;
+    for (const [k, v] of counts) if (v > top) { top = v; topKey = k; }
+    const vivid = {};
+    for (const [name, [x0, y0, x1, y1]] of Object.entries(rects)) {
+      let count = 0;
+      for (let y = y0; y < y1; ++y) for (let x = x0; x < x1; ++x) {
+        const i = 4 * (y * c.width + x);
+        const hi = Math.max(d[i], d[i + 1], d[i + 2]), lo = Math.min(d[i], d[i + 1], d[i + 2]);
+        if (hi >= 150 && hi - lo >= 90) count++;
+      }
+      vivid[name] = count;
+    }
+    return { width: c.width, height: c.height, distinct: counts.size, topShare: top / n,
+             topColor: '#' + topKey.toString(16).padStart(3, '0'), blackShare: black / n, vivid };
+  }, { b64: png.toString('base64'), rects });
+  await scratch.close();
+  return out;
+}
+
+// At 1280x720 and UI scale 1: the controls take the left 352 px, the plots the right 400 px
+// (app/desktop/app.cpp), the menu bar the top 24 px; the transport bar and the read-outs sit in
+// the top left corner of the 3D view, and the page's messages at its bottom.
+export const VIEW_RECTS = { viewRight: [580, 40, 870, 600], viewLower: [362, 360, 870, 600] };
+export const PLOT_RECTS = { plots: [890, 100, 1270, 710] };
+export const vividIn = (img, names) => names.reduce((sum, n) => sum + img.vivid[n], 0);
+
+export async function screenshot(page, file, rects) {
+  await page.evaluate(() => { document.getElementById('notice').hidden = true; });
+  await sleep(150); // a frame or two without the message
+  const png = await page.screenshot({ path: join(outDir, file) });
+  const img = await analysePng(png, rects);
+  console.log(`      ${file} ${img.width}x${img.height}: ${img.distinct} colours, most common ${img.topColor} ` +
+              `${(100 * img.topShare).toFixed(1)}%, vivid pixels ${JSON.stringify(img.vivid)} -> build/web-test/${file}`);
+  return img;
+}
+
+// Clicks a button of the scenario panel where the app drew it, holding the mouse for a few
+// frames as a hand does (ImGui 1.86 reads the button state once a frame).
+export async function clickButton(page, label) {
+  const r = await page.evaluate((l) => window.swarmlab.buttonRect(l), label);
+  if (!r) return false;
+  await page.mouse.move(r.x + r.width / 2, r.y + r.height / 2);
+  await sleep(80);
+  await page.mouse.down();
+  await sleep(120);
+  await page.mouse.up();
+  await sleep(120);
+  return true;
+}
+
+// What the CLI says about a preset file ("error: FILE: field: problem" -> "field: problem").
+export function cliMessage(json) {
+  if (!existsSync(cliPath)) return null;
+  const file = join(profile, 'bad-preset.json');
+  writeFileSync(file, json);
+  const r = spawnSync(cliPath, ['validate', file], { encoding: 'utf8', timeout: 20_000 });
+  const m = /^error: .*?bad-preset\.json: (.*)$/m.exec(r.stderr || '');
+  return m ? m[1].trim() : null;
+}
+
+/** Opens the browser at viewport (CSS pixels) with touch when asked. */
+export async function launchBrowser({ width = 1280, height = 720, hasTouch = false, isMobile = false } = {}) {
+  mkdirSync(outDir, { recursive: true });
+  profile = mkdtempSync(join(tmpdir(), 'swarmlab-chromium-'));
+  context = await chromium.launchPersistentContext(profile, {
+    executablePath: chromiumPath,
+    headless: true,
+    viewport: { width, height },
+    hasTouch, isMobile,
+    acceptDownloads: true,
+    timeout: 30_000,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+           '--disable-background-networking', '--disable-component-update', '--disable-sync',
+           '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  });
+  context.setDefaultTimeout(30_000);
+  return context;
+}
+
+/** Runs main(url) against the served build/web within overallMs, then prints the tally and
+ *  exits non-zero on any failure. The suite's console log goes to build/web-test/NAME.log. */
+export async function runSuite(name, overallMs, main) {
+  const watchdog = setTimeout(async () => {
+    check(`whole ${name} run within ${overallMs / 1000} s`, false, 'timed out');
+    await Promise.race([cleanup(), sleep(3000)]);
+    finish();
+  }, overallMs);
+  try {
+    mkdirSync(outDir, { recursive: true });
+    await main(await startServer());
+  } catch (e) {
+    check(`${name} run`, false, String(e && e.stack || e).split('\n').slice(0, 3).join(' / '));
+  }
+  writeFileSync(join(outDir, `${name}.log`), consoleLog.join('\n') + '\n');
+  clearTimeout(watchdog);
+  await cleanup();
+  finish();
+}
