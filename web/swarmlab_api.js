@@ -2,6 +2,8 @@
 // into swarmlab.js with --post-js after share_link.js. It wraps the C functions of
 // web/js_api.cpp:
 //   swarmlab.time()        the simulated time of the running preset (a number)
+//   swarmlab.state()       what the app shows and runs: { name, edited, playing, t, speed,
+//                          selected, ... } (web/README.md lists every field)
 //   swarmlab.preset()      the running preset, every edit included, as a JSON string
 //   swarmlab.load(json)    opens a preset (a JSON string, or an object); returns true, or, if
 //                          it fails validation or is larger than SwarmlabLink.maxPresetBytes
@@ -133,6 +135,7 @@
     lastMessage: null,
     frames: function () { return frames; },
     time: function () { check(); return Module.ccall('swarmlab_time', 'number', [], []); },
+    state: function () { check(); return JSON.parse(Module.ccall('swarmlab_state', 'string', [], [])); },
     preset: function () { check(); return presetText(2); },
     load: function (json) {
       check();
