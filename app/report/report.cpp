@@ -343,11 +343,14 @@ NamedFigure energy_books_figure(const RunRecord& r, const TimeAxis& time) {
   const double E0 = r.samples.front().E;
   Panel books{time.axis(), {"energy since t = 0", "mass·length²/time²"}};
   books.zero_line = true;
+  // E - E0 last and dashed: when the books balance it lies on top of their sum.
+  Series change = series("E − E₀", t, column(r.samples, [&](auto& s) { return s.E - E0; }), grey);
+  change.dashed = true;
   books.series = {
-      series("E − E₀", t, column(r.samples, [&](auto& s) { return s.E - E0; }), grey),
       series("work by walls and floor", t, column(r.samples, [](auto& s) { return s.books.wall_work; }), blue),
       series("heat from the wall", t, column(r.samples, [](auto& s) { return s.books.wall_heat; }), orange),
-      series("− drag losses", t, column(r.samples, [](auto& s) { return -s.books.drag_loss; }), red)};
+      series("− drag losses", t, column(r.samples, [](auto& s) { return -s.books.drag_loss; }), red),
+      change};
   Panel residual{time.axis(), {"(E − E₀) − books", "mass·length²/time²"}};
   residual.height = 0.45;
   residual.zero_line = true;
@@ -377,7 +380,7 @@ std::vector<NamedFigure> run_figures(const RunRecord& r) {
     for (NamedFigure& f : comparison_figures(r, time)) out.push_back(std::move(f));
   if (has_drawable_orbits(r))
     for (NamedFigure& f : orbit_figures(r)) out.push_back(std::move(f));
-  if ((r.preset.floor || r.preset.gravity) && r.samples.size() >= 2)
+  if ((r.preset.floor || r.preset.gravity || r.preset.drag) && r.samples.size() >= 2)
     out.push_back(floor_figure(r, time));
   if ((r.preset.floor || r.preset.drag) && r.samples.size() >= 2)
     out.push_back(energy_books_figure(r, time));

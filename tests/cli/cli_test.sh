@@ -180,6 +180,12 @@ expect_error overflow-r '{"J": 1, "particles": [{"m": 1, "r": [1e200,0,0], "v": 
 expect_error expansion-factor '{"J": 1, "particles": {"count": 10, "position_radius": 1, "velocity": {"speed": 1}}, "container": {"radius": 1}, "dt": 1e-3, "expansion": {"factor": 1e308, "stages": 1000, "tau": 1e-3}}' 'expansion.factor: the container would grow to R * factor^(stages - 1) = inf'
 expect_error tau-over-dt '{"J": 1, "particles": {"count": 10, "position_radius": 1, "velocity": {"speed": 1}}, "container": {"radius": 1}, "dt": 1e-300, "expansion": {"factor": 1.1, "stages": 1000000, "tau": 1e300}}' 'expansion.tau: tau / dt = inf steps per stage'
 expect_error months-of-work '{"J":1,"particles":{"count":10000000,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1000000}' 'duration: 1e+07 particles x 1e+09 steps = 1e+16 particle-steps (limit 4e+12)'
+# Gravity, a floor and drag (Appendix B): one message naming the field and the rule.
+two='"particles":[{"m":1,"r":[0,0,1],"v":[1,0,0]},{"m":2,"r":[0,0.5,2],"v":[0,0,0]}]'
+expect_error floor-restitution "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"floor\":{\"z\":0,\"restitution\":2}}" 'floor.restitution: must be in [0, 1]'
+expect_error floor-above "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"floor\":{\"z\":1.5}}" 'particles[0].r: starts below the floor (z = 1 < floor.z = 1.5)'
+expect_error drag-b-analytic "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"drag\":{\"b\":1,\"particles\":[0]}}" 'drag.b: drag on chosen particles breaks the centre-of-mass picture'
+expect_error gravity-short "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"gravity\":[0,-9.8]}" 'gravity: must be an array of 3 numbers [x, y, z]'
 expect_error duplicate-key "{$good, \"duration\": 1, \"J\": 2}" 'J: given twice (each key at most once)'
 expect_error trailing "{$good, \"duration\": 1} {}" 'preset: not valid JSON'
 

@@ -76,13 +76,14 @@ class Run {
   const std::vector<Stage>& stages() const { return stages_; }
   StageFits fits() const;
   RunSummary summary();
+  /// The kinetic and potential energy of the current state; the potential counts the springs
+  /// and, under gravity, -sum m g.r.
+  EnergyParts energy_now();
 
  private:
   void step_once();
   Sample sample_now();
   void check_finite(const Sample& s);
-  /// Kinetic, potential (springs and gravity) energy of the current state.
-  EnergyParts energy_now();
 
   std::unique_ptr<Engine> engine_;
   RunPlan plan_;
