@@ -108,8 +108,9 @@ void draw_forces_panel(AppState& state) {
   help_marker(
       "gamma: a force -gamma m v on every particle (proportional to its mass): still solved "
       "exactly; the CM velocity decays as exp(-gamma t) and every particle is a damped "
-      "oscillator about the CM. b: a force -b v on the listed particles only: needs a "
-      "numerical method (Euler, Euler-Cromer, Verlet or RK4).");
+      "oscillator about the CM. b: a force -b v on the listed particles only (indices from "
+      "0: the table's #1 is 0): needs a numerical method (Euler, Euler-Cromer, Verlet or "
+      "RK4).");
   if (drag_changed) {
     changed = true;
     if (drag == 0) d.drag.reset();
