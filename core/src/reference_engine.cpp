@@ -56,8 +56,12 @@ class ReferenceEngine final : public Engine {
   void reflect_predicted_leavers(double dt, WallTally& tally) {
     // The prediction is the method's own step, taken on a copy before anyone is reflected.
     System predicted = system_;
-    WallTally unused;
-    move(predicted, dt, unused);
+    if (config_.forces.any() && config_.method == Method::analytic) {
+      step_analytic_forced(predicted, dt, config_.forces);  // the same map, without booking
+    } else {
+      WallTally unused;
+      move(predicted, dt, unused);
+    }
     if (config_.container_radius) {
       const double R2 = *config_.container_radius * *config_.container_radius;
       for (std::size_t i = 0; i < system_.particles.size(); ++i) {
