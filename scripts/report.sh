@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Regenerates every figure of docs/paper-reproduction.md into docs/figures/, one command per
-# figure set, from the shipped presets (a few minutes in all; the Fig. 5 long run dominates).
+# Regenerates every figure of docs/paper-reproduction.md and docs/student-projects.md into
+# docs/figures/, one command per figure set, from the shipped presets (a few minutes in all;
+# the Fig. 5 long run dominates).
 # Usage: scripts/report.sh [--png]     (--png: a PNG beside each SVG; needs rsvg-convert)
 # SWARMLAB=path/to/swarmlab picks the binary; by default build/app/swarmlab, built if missing.
 set -euo pipefail
@@ -27,3 +28,8 @@ run fig5-short-equilibration --out "$results/short.json" "$@"
 run fig5-long-equilibration --out "$results/long.json" "$@"
 echo "== fig5-overlay" >&2                # Fig. 5: long (solid) and short (dashed) overlaid
 "$bin" report "$results/long.json" "$results/short.json" --plots "$figures/fig5-overlay" --quiet "$@"
+
+# docs/student-projects.md (the paper's Appendix B)
+run gravity-floor-bounce "$@"            # an attractive swarm bouncing on a floor under gravity
+run drag-damped-swarm "$@"               # mass-proportional drag: damped oscillators about the CM
+run drag-one-particle "$@"               # drag on one particle: v0 exp(-b t / m)

@@ -44,6 +44,14 @@ void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
       "%-14s %ld\n%-14s %.6g\n",
       "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift", s.energy_drift,
       "wall_hits", (long long)s.wall_hits, "steps", s.steps, "t_end", s.t_end);
+  // Appendix B: the energy books and the floor, when the preset has gravity, a floor or drag.
+  const swarm::EngineConfig& engine = run.plan().engine;
+  const bool forced = engine.forces.any() || engine.floor;
+  if (forced)
+    std::printf("%-14s %.10g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %lld\n", "work",
+                s.books.wall_work, "heat", s.books.wall_heat, "drag_loss", s.books.drag_loss,
+                "E_end-E0-books", s.E_end - s.E0 - s.books.net(), "floor_hits",
+                (long long)s.floor_hits);
   if (!run.stages().empty()) {
     std::printf("\n%6s %12s %12s %12s %12s %14s\n", "stage", "R", "V", "P", "T", "E");
     for (std::size_t i = 0; i < run.stages().size(); ++i) {
@@ -69,13 +77,17 @@ void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
     const bool walled = run.plan().engine.container_radius.has_value();
     std::printf("\n%12s", "t");
     if (walled) std::printf(" %12s %12s", "P", "T");
-    std::printf(" %14s %14s %14s\n", "KE", "PE", "E");
+    std::printf(" %14s %14s %14s", "KE", "PE", "E");
+    if (forced) std::printf(" %12s %12s", "cm_height", "size");
+    std::printf("\n");
     for (std::size_t r = 0; r < rows; ++r) {
       const swarm::Sample& x =
           samples[r * (samples.size() - 1) / std::max<std::size_t>(1, rows - 1)];
       std::printf("%12.5g", x.t);
       if (walled) std::printf(" %12.5g %12.5g", x.P, x.T);
-      std::printf(" %14.8g %14.8g %14.10g\n", x.KE, x.PE, x.E);
+      std::printf(" %14.8g %14.8g %14.10g", x.KE, x.PE, x.E);
+      if (forced) std::printf(" %12.5g %12.5g", x.cm_height, x.size);
+      std::printf("\n");
     }
   }
   for (const auto& track : runs.tracks()) {

@@ -24,7 +24,11 @@ json summary_json(const swarm::RunSummary& s) {
           {"energy_drift", s.energy_drift},
           {"wall_hits", s.wall_hits},
           {"steps", s.steps},
-          {"t_end", s.t_end}};
+          {"t_end", s.t_end},
+          {"work", s.books.wall_work},
+          {"heat", s.books.wall_heat},
+          {"drag_loss", s.books.drag_loss},
+          {"floor_hits", s.floor_hits}};
 }
 
 }  // namespace
@@ -43,7 +47,12 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
                        {"PE", x.PE},
                        {"E", x.E},
                        {"hits", x.hits},
-                       {"R", x.R}});
+                       {"R", x.R},
+                       {"work", x.books.wall_work},
+                       {"heat", x.books.wall_heat},
+                       {"drag_loss", x.books.drag_loss},
+                       {"cm_height", x.cm_height},
+                       {"size", x.size}});
   j["samples"] = samples;
   json stages = json::array();
   for (const swarm::Stage& x : run.stages())
@@ -77,10 +86,11 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
 std::string samples_csv(const swarm::Run& run) {
   std::ostringstream out;
   out.precision(17);
-  out << "t,P,T,KE,PE,E,hits,R\n";
+  out << "t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size\n";
   for (const swarm::Sample& x : run.samples())
     out << x.t << ',' << x.P << ',' << x.T << ',' << x.KE << ',' << x.PE << ',' << x.E << ','
-        << x.hits << ',' << x.R << '\n';
+        << x.hits << ',' << x.R << ',' << x.books.wall_work << ',' << x.books.wall_heat << ','
+        << x.books.drag_loss << ',' << x.cm_height << ',' << x.size << '\n';
   return out.str();
 }
 

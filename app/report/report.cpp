@@ -271,7 +271,9 @@ std::vector<NamedFigure> comparison_figures(const RunRecord& r, const TimeAxis& 
 
 bool has_drawable_orbits(const RunRecord& r) {
   const auto* list = std::get_if<std::vector<swarm::Particle>>(&r.preset.particles);
-  return list && list->size() <= kMaxOrbitsDrawn && !r.preset.container_radius && r.preset.J > 0;
+  // Gravity moves only the CM, so the orbits about it stay the paper's; drag and a floor do not.
+  return list && list->size() <= kMaxOrbitsDrawn && !r.preset.container_radius && r.preset.J > 0 &&
+         !r.preset.drag && !r.preset.floor;
 }
 
 /// Fig. 1 in motion: the exact orbits about the centre of mass over one period, projected on
@@ -310,6 +312,54 @@ std::vector<NamedFigure> orbit_figures(const RunRecord& r) {
           {"orbits-return", Figure{"One common period", r.preset.name, {distance}}}};
 }
 
+// [SECTION] Gravity, floor and drag (Appendix B)
+
+/// The floor project's read-outs: the CM's height (each bounce kicks it back up) and the
+/// swarm's size, the rms distance from the CM, over time.
+NamedFigure floor_figure(const RunRecord& r, const TimeAxis& time) {
+  const std::vector<double> t = time.of(r.samples);
+  Panel height{time.axis(), {"height of the CM", "length"}};
+  height.series = {series("CM height z", t, column(r.samples, [](auto& s) { return s.cm_height; }), blue)};
+  if (r.preset.floor) {
+    height.y.include_zero = r.preset.floor->z == 0;
+    height.series.push_back(series("floor", {t.front(), t.back()},
+                                   {r.preset.floor->z, r.preset.floor->z}, grey));
+    height.note = printed("floor at z = %g, restitution %g", r.preset.floor->z,
+                          r.preset.floor->restitution);
+  }
+  Panel size{time.axis(), {"swarm size", "length"}};
+  size.height = 0.6;
+  size.y.include_zero = true;
+  size.series = {series("rms distance from the CM", t, column(r.samples, [](auto& s) { return s.size; }), green)};
+  Figure f{"Centre-of-mass height and swarm size", r.preset.name, {height, size}, true};
+  return {"floor", f};
+}
+
+/// The energy books: what the walls, the floor and drag put in or took out since t = 0, and
+/// the balance E - E0 = work + heat - drag losses, whose residual should be rounding (exact
+/// and analytic maps) or the method's own error (numerical methods).
+NamedFigure energy_books_figure(const RunRecord& r, const TimeAxis& time) {
+  const std::vector<double> t = time.of(r.samples);
+  const double E0 = r.samples.front().E;
+  Panel books{time.axis(), {"energy since t = 0", "mass·length²/time²"}};
+  books.zero_line = true;
+  // E - E0 last and dashed: when the books balance it lies on top of their sum.
+  Series change = series("E − E₀", t, column(r.samples, [&](auto& s) { return s.E - E0; }), grey);
+  change.dashed = true;
+  books.series = {
+      series("work by walls and floor", t, column(r.samples, [](auto& s) { return s.books.wall_work; }), blue),
+      series("heat from the wall", t, column(r.samples, [](auto& s) { return s.books.wall_heat; }), orange),
+      series("− drag losses", t, column(r.samples, [](auto& s) { return -s.books.drag_loss; }), red),
+      change};
+  Panel residual{time.axis(), {"(E − E₀) − books", "mass·length²/time²"}};
+  residual.height = 0.45;
+  residual.zero_line = true;
+  residual.series = {series("", t, column(r.samples, [&](auto& s) { return s.E - E0 - s.books.net(); }), grey)};
+  residual.note = "the books balance when this stays at zero (up to the method's error)";
+  Figure f{"Energy books", r.preset.name, {books, residual}, true};
+  return {"energy-books", f};
+}
+
 }  // namespace
 
 std::vector<NamedFigure> run_figures(const RunRecord& r) {
@@ -330,6 +380,10 @@ std::vector<NamedFigure> run_figures(const RunRecord& r) {
     for (NamedFigure& f : comparison_figures(r, time)) out.push_back(std::move(f));
   if (has_drawable_orbits(r))
     for (NamedFigure& f : orbit_figures(r)) out.push_back(std::move(f));
+  if ((r.preset.floor || r.preset.gravity || r.preset.drag) && r.samples.size() >= 2)
+    out.push_back(floor_figure(r, time));
+  if ((r.preset.floor || r.preset.drag) && r.samples.size() >= 2)
+    out.push_back(energy_books_figure(r, time));
   return out;
 }
 

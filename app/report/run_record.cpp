@@ -21,6 +21,9 @@ swarm::RunSummary summary_from(const json& j) {
   s.energy_drift = number(j.at("energy_drift")), s.wall_hits = j.at("wall_hits"),
   s.steps = j.at("steps");
   s.t_end = number(j.at("t_end"));
+  s.books.wall_work = number(j.at("work")), s.books.wall_heat = number(j.at("heat"));
+  s.books.drag_loss = number(j.at("drag_loss"));
+  s.floor_hits = j.at("floor_hits");
   return s;
 }
 
@@ -47,10 +50,16 @@ RecordRead read_result_file(const std::string& path) {
     RunRecord r;
     r.preset = *parsed.preset;
     r.summary = summary_from(j.at("summary"));
-    for (const json& x : j.at("samples"))
-      r.samples.push_back({number(x.at("t")), number(x.at("P")), number(x.at("T")),
-                           number(x.at("KE")), number(x.at("PE")), number(x.at("E")), x.at("hits"),
-                           number(x.at("R"))});
+    for (const json& x : j.at("samples")) {
+      swarm::Sample sample;
+      sample.t = number(x.at("t")), sample.P = number(x.at("P")), sample.T = number(x.at("T"));
+      sample.KE = number(x.at("KE")), sample.PE = number(x.at("PE")), sample.E = number(x.at("E"));
+      sample.hits = x.at("hits"), sample.R = number(x.at("R"));
+      sample.books.wall_work = number(x.at("work")), sample.books.wall_heat = number(x.at("heat"));
+      sample.books.drag_loss = number(x.at("drag_loss"));
+      sample.cm_height = number(x.at("cm_height")), sample.size = number(x.at("size"));
+      r.samples.push_back(sample);
+    }
     for (const json& x : j.at("stages"))
       r.stages.push_back({number(x.at("R")), number(x.at("V")), number(x.at("P")),
                           number(x.at("T")), number(x.at("E")), x.at("hits")});

@@ -180,6 +180,8 @@ void App::layout_windows() {
       section("Scenario", true, draw_scenario_panel);
       section("System", true, draw_system_panel);
       section("Container", bool(s.preset.container_radius), draw_container_panel);
+      section("Gravity, floor, drag", s.preset.gravity || s.preset.floor || s.preset.drag,
+              draw_forces_panel);
       section("Simulation", true, draw_simulation_panel);
       section("View", false, draw_view_panel);
     }

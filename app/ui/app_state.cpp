@@ -106,6 +106,8 @@ void AppState::restart() {
   }
   scene_radius =
       float(preset.container_radius ? *preset.container_radius : std::max(extent * 1.15, 1e-3));
+  // A floor below the swarm is in the picture too.
+  if (preset.floor) scene_radius = std::max(scene_radius, float(1.2 * (cm.z() - preset.floor->z)));
   heaviest_mass = heaviest;
   // Spheres that would just about touch if the particles filled the scene evenly.
   const double n = double(s.particles.size());

@@ -9,6 +9,8 @@ namespace swarmlab {
 void draw_scenario_panel(AppState& state);
 void draw_system_panel(AppState& state);
 void draw_container_panel(AppState& state);
+/// Gravity, a floor and drag (Appendix B).
+void draw_forces_panel(AppState& state);
 void draw_simulation_panel(AppState& state);
 void draw_view_panel(AppState& state);
 /// The live plots (right-hand panel).

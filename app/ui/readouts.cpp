@@ -56,8 +56,8 @@ void draw_readouts(AppState& state) {
   const double k = swarm::stiffness(s);
   const swarm::Regime regime = swarm::regime_of(k);
   const double rate = swarm::omega_of(k);
-  const double KE = swarm::kinetic_energy(s);
-  const double E = KE + swarm::potential_energy_cm(s);
+  const swarm::EnergyParts energy = state.run->primary().energy_now();
+  const double E = energy.kinetic + energy.potential;  // with gravity's potential
   const double p = swarm::total_momentum(s).norm();
   const double L = swarm::angular_momentum_cm(s).norm();
 
@@ -90,8 +90,10 @@ void draw_readouts(AppState& state) {
   std::snprintf(value, sizeof value, "%.6g", E);
   row("E", value,
       "E = \u03a3 \u00bd m\u1d62 v\u1d62\u00b2 + \u00bd J M \u03a3 m\u1d62 "
-      "|r\u1d62 \u2212 R|\u00b2: kinetic plus the springs' potential energy (eq. 13). "
-      "Conserved by the exact solution and by elastic wall hits.");
+      "|r\u1d62 \u2212 R|\u00b2: kinetic plus the springs' potential energy (eq. 13), "
+      "and \u2212\u03a3 m\u1d62 g\u00b7r\u1d62 under gravity. "
+      "Conserved by the exact solution and by elastic wall hits; drag and an inelastic "
+      "floor take energy out (Gravity, floor, drag panel).");
   std::snprintf(value, sizeof value, "%+.2e",
                 swarm::relative_energy_change(state.run->primary().samples().front(), E));
   row("\u0394E/|E\u2080|", value,

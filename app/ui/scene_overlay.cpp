@@ -185,6 +185,41 @@ void draw_legend(AppState& state, ImDrawList* draw) {
                 IM_COL32(200, 205, 215, 255), text);
 }
 
+/// The floor z = h as a grid square about the centre of mass, out to the scene's radius.
+void draw_floor(const Painter& paint, double h, const swarm::Vec3& cm, float extent) {
+  const float z = float(h), x0 = float(cm.x()), y0 = float(cm.y());
+  constexpr int kLines = 8;
+  const ImU32 colour = IM_COL32(170, 150, 110, 120);
+  for (int k = -kLines; k <= kLines; ++k) {
+    const float o = extent * float(k) / kLines;
+    paint.line(Vec3f(x0 - extent, y0 + o, z), Vec3f(x0 + extent, y0 + o, z), colour, 1.0f);
+    paint.line(Vec3f(x0 + o, y0 - extent, z), Vec3f(x0 + o, y0 + extent, z), colour, 1.0f);
+  }
+}
+
+/// Gravity as an arrow from beside the centre of mass along g, a third of the scene long.
+void draw_gravity_arrow(const Painter& paint, const swarm::Vec3& g, const swarm::Vec3& cm,
+                        float extent, float font) {
+  if (g.norm() == 0) return;
+  const Vec3f dir = g.normalized().cast<float>();
+  const Vec3f side = dir.cross(std::abs(dir.z()) < 0.9f ? Vec3f::UnitZ() : Vec3f::UnitX()).normalized();
+  const Vec3f start = cm.cast<float>() + side * (0.8f * extent) - dir * (0.15f * extent);
+  const Vec3f end = start + dir * (0.35f * extent);
+  const ImU32 colour = IM_COL32(120, 230, 140, 230);
+  paint.line(start, end, colour, 2.5f);
+  const ScreenPoint a = paint.project(start), b = paint.project(end);
+  if (!a.visible || !b.visible) return;
+  const float dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+  if (len < 1) return;
+  const float ux = dx / len, uy = dy / len, head = 0.7f * font;
+  paint.draw->AddTriangleFilled(ImVec2(b.x + ux * head, b.y + uy * head),
+                                ImVec2(b.x - uy * head * 0.6f, b.y + ux * head * 0.6f),
+                                ImVec2(b.x + uy * head * 0.6f, b.y - ux * head * 0.6f), colour);
+  char label[48];
+  std::snprintf(label, sizeof label, "g = %.3g", g.norm());
+  paint.draw->AddText(ImVec2(a.x + 0.5f * font, a.y - 1.2f * font), colour, label);
+}
+
 }  // namespace
 
 void draw_scene_overlay(AppState& state) {
@@ -199,6 +234,11 @@ void draw_scene_overlay(AppState& state) {
   if (state.view.container)
     if (const auto R = state.run->primary().engine().container_radius()) draw_container(paint, *R);
   draw_springs(paint, s, state.view.springs);
+  if (state.preset.floor)
+    draw_floor(paint, state.preset.floor->z, swarm::cm_position(s), state.scene_radius);
+  if (state.preset.gravity)
+    draw_gravity_arrow(paint, *state.preset.gravity, swarm::cm_position(s), state.scene_radius,
+                       font);
 
   if (state.view.trails)
     for (const Trail& trail : state.run->trails()) {
@@ -215,7 +255,9 @@ void draw_scene_overlay(AppState& state) {
   // In a small system every orbit is drawn faintly: the closed ellipses with one common period
   // are the paper's first result.
   std::optional<swarm::OrbitsAhead> orbits;  // O(N) once, only when orbits are drawn
-  if (state.view.orbit) orbits.emplace(s);
+  // The orbit ahead is the isolated swarm's; gravity, a floor or drag bend it, so none is drawn.
+  const bool forced = state.preset.gravity || state.preset.floor || state.preset.drag;
+  if (state.view.orbit && !forced) orbits.emplace(s);
   if (orbits && s.particles.size() <= kSpringLimit)
     for (std::size_t i = 0; i < s.particles.size(); ++i)
       if (!state.selected || *state.selected != i)

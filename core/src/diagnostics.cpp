@@ -1,5 +1,7 @@
 #include "swarm/diagnostics.h"
 
+#include <cmath>
+
 namespace swarm {
 
 double kinetic_energy(const System& s) {
@@ -42,6 +44,13 @@ Vec3 total_momentum(const System& s) {
   Vec3 P = Vec3::Zero();
   for (const auto& p : s.particles) P += p.m * p.v;
   return P;
+}
+
+double rms_distance_from_cm(const System& s) {
+  const Vec3 R = cm_position(s);
+  double sum = 0;
+  for (const auto& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
+  return std::sqrt(sum / total_mass(s));
 }
 
 Vec3 angular_momentum_cm(const System& s) {

@@ -526,6 +526,9 @@ class FastEngine final : public Engine {
 // [SECTION] Factory
 
 bool fast_engine_applies(const EngineConfig& config) {
+  // Gravity, drag and a floor change every particle's orbit or add a second wall that the
+  // closed-form wall windows do not know: those run on the reference engine, O(N) a step.
+  if (config.forces.any() || config.floor) return false;
   return config.method == Method::analytic && config.collisions == CollisionMode::paper;
 }
 

@@ -175,10 +175,81 @@ SwarmSpec swarm_spec(const json& j) {
   return s;
 }
 
+// Gravity, a floor and drag (Appendix B).
+void parse_forces(const Fields& f, Preset& p) {
+  if (f.has("gravity")) {
+    p.gravity = vector3(f.at("gravity"), "gravity");
+    // The CM falls g t^2 / 2: keep that and its energy M |g| z far inside a double.
+    const double fall = 0.5 * p.gravity->norm() * p.duration * p.duration;
+    require(fall <= 1e100, "gravity",
+            "|g| duration^2 / 2 = " + format(fall) + " is the fall over the run: at most 1e100");
+  }
+  if (f.has("floor")) {
+    const Fields fl(f.at("floor"), "floor", {"z", "restitution"});
+    Floor floor;
+    floor.z = fl.number("z");
+    floor.restitution = fl.number("restitution", 1.0);
+    require(floor.restitution >= 0 && floor.restitution <= 1, fl.path("restitution"),
+            "must be in [0, 1] (1: elastic, 0: the particle stops falling)");
+    if (p.container_radius)
+      require(std::abs(floor.z) < *p.container_radius, fl.path("z"),
+              "must lie inside the container, -radius < z < radius (got z = " + format(floor.z) +
+                  ", container.radius = " + format(*p.container_radius) + ")");
+    p.floor = floor;
+  }
+  if (f.has("drag")) {
+    const Fields d(f.at("drag"), "drag", {"gamma", "b", "particles"});
+    require(d.has("gamma") != d.has("b"), "drag",
+            "give exactly one of \"gamma\" (on every particle, proportional to its mass) or "
+            "\"b\" with \"particles\" (on the listed particles)");
+    Drag drag;
+    if (d.has("gamma")) {
+      require(!d.has("particles"), d.path("particles"),
+              "goes with \"b\" (gamma acts on every particle)");
+      drag.gamma = d.number("gamma");
+      require(drag.gamma > 0, d.path("gamma"), "must be > 0");
+      require(drag.gamma * p.dt <= 100, d.path("gamma"),
+              "gamma * dt must be <= 100 (got " + format(drag.gamma * p.dt) +
+                  "): the drag would stop everything within a step");
+    } else {
+      drag.b = d.number("b");
+      require(drag.b > 0, d.path("b"), "must be > 0");
+      if (!d.has("particles"))
+        fail(d.path("particles"), "missing (the indices of the particles b acts on)");
+      const json& list = d.at("particles");
+      require(list.is_array() && !list.empty(), d.path("particles"),
+              "must be a non-empty list of particle indices");
+      std::set<std::int64_t> seen;
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = d.path("particles") + "[" + std::to_string(i) + "]";
+        require(list[i].is_number_integer(), path, "must be a particle index (0, 1, ...)");
+        const long long index = list[i].is_number_unsigned()
+                                    ? (long long)std::min<unsigned long long>(
+                                          list[i].get<unsigned long long>(), 1ull << 62)
+                                    : list[i].get<long long>();
+        require(index >= 0, path, "must be >= 0");
+        require(seen.insert(index).second, path, "lists particle " + std::to_string(index) + " twice");
+        drag.particles.push_back(std::size_t(index));
+      }
+      const auto analytic_needs = [](Method m) { return m == Method::analytic; };
+      require(!analytic_needs(p.method), "drag.b",
+              "drag on chosen particles breaks the centre-of-mass picture, so it needs a "
+              "numerical method (euler, euler-cromer, verlet or rk4), not \"analytic\"; or use "
+              "drag.gamma");
+      for (std::size_t i = 0; i < p.compare.size(); ++i)
+        require(!analytic_needs(p.compare[i]), "compare[" + std::to_string(i) + "]",
+                "\"analytic\" cannot run drag.b (drag on chosen particles needs a numerical "
+                "method)");
+    }
+    p.drag = drag;
+  }
+}
+
 Preset parse(const json& j) {
   const Fields f(j, "",
                  {"version", "name", "description", "J", "particles", "container", "method",
-                  "collisions", "dt", "duration", "expansion", "sample_every", "compare"});
+                  "collisions", "dt", "duration", "expansion", "sample_every", "compare",
+                  "gravity", "floor", "drag"});
   if (f.has("version"))
     require(f.at("version") == kPresetVersion, "version",
             "must be " + std::to_string(kPresetVersion) + " (the only preset version so far)");
@@ -264,7 +335,32 @@ Preset parse(const json& j) {
       p.compare.push_back(*other);
     }
   }
+  parse_forces(f, p);
   return p;
+}
+
+/// Gravity, floor and drag against the particles: everyone starts on or above the floor, and
+/// drag.particles name particles that exist.
+void check_forces_consistency(const Preset& p, long count) {
+  if (p.floor) {
+    if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
+      for (std::size_t i = 0; i < list->size(); ++i)
+        require((*list)[i].r.z() >= p.floor->z, "particles[" + std::to_string(i) + "].r",
+                "starts below the floor (z = " + format((*list)[i].r.z()) +
+                    " < floor.z = " + format(p.floor->z) + ")");
+    } else {
+      const auto& s = std::get<SwarmSpec>(p.particles);
+      require(p.floor->z <= -s.position_radius, "floor.z",
+              "must be <= -particles.position_radius (the swarm is generated in a ball about "
+              "the origin and must start above the floor)");
+    }
+  }
+  if (p.drag)
+    for (std::size_t i = 0; i < p.drag->particles.size(); ++i)
+      require(long(p.drag->particles[i]) < count,
+              "drag.particles[" + std::to_string(i) + "]",
+              "particle " + std::to_string(p.drag->particles[i]) + " does not exist (there are " +
+                  std::to_string(count) + ", numbered from 0)");
 }
 
 /// Rules that look at the particles and the rest of the preset together.
@@ -287,6 +383,7 @@ void check_consistency(const Preset& p) {
       require(s.position_radius <= *p.container_radius, "particles.position_radius",
               "must be <= container.radius (particles must start inside the container)");
   }
+  check_forces_consistency(p, count);
   for (Method m : p.compare)
     require(!is_pairwise(m) || count <= kMaxPairwiseParticles, "compare",
             "\"" + std::string(name_of(m)) + "\" sums over every pair: use at most " +
@@ -344,6 +441,14 @@ json to_json(const Preset& p) {
     json list = json::array();
     for (Method m : p.compare) list.push_back(std::string(name_of(m)));
     j["compare"] = list;
+  }
+  if (p.gravity) j["gravity"] = {p.gravity->x(), p.gravity->y(), p.gravity->z()};
+  if (p.floor) j["floor"] = {{"z", p.floor->z}, {"restitution", p.floor->restitution}};
+  if (p.drag) {
+    if (p.drag->mass_proportional())
+      j["drag"] = {{"gamma", p.drag->gamma}};
+    else
+      j["drag"] = {{"b", p.drag->b}, {"particles", p.drag->particles}};
   }
   return j;
 }
@@ -494,7 +599,12 @@ long step_count(const Preset& p) {
 
 RunPlan run_plan(const Preset& p) {
   RunPlan plan;
-  plan.engine = {p.method, p.collisions, p.container_radius};
+  plan.engine.method = p.method;
+  plan.engine.collisions = p.collisions;
+  plan.engine.container_radius = p.container_radius;
+  if (p.gravity) plan.engine.forces.gravity = *p.gravity;
+  plan.engine.forces.drag = p.drag;
+  plan.engine.floor = p.floor;
   plan.dt = p.dt;
   plan.steps = step_count(p);
   plan.sample_every = p.sample_every.value_or(std::max(1L, plan.steps / 2000));

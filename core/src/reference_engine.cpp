@@ -23,11 +23,11 @@ class ReferenceEngine final : public Engine {
 
   WallTally step(double dt) override {
     WallTally tally;
-    if (!config_.container_radius) {
-      swarm::step(config_.method, system_, dt, config_.threads);
+    if (!config_.container_radius && !config_.floor) {
+      move(system_, dt, tally);
     } else if (config_.collisions == CollisionMode::paper) {
       reflect_predicted_leavers(dt, tally);
-      swarm::step(config_.method, system_, dt, config_.threads);
+      move(system_, dt, tally);
     } else {
       step_with_exact_hits(dt, tally);
     }
@@ -41,58 +41,111 @@ class ReferenceEngine final : public Engine {
   const EngineConfig& config() const override { return config_; }
 
  private:
+  /// The trajectory map over dt: the method's own step, or under gravity and drag the same
+  /// step with them (the energy the drag takes goes into the tally's books).
+  void move(System& s, double dt, WallTally& tally) const {
+    if (!config_.forces.any())
+      swarm::step(config_.method, s, dt, config_.threads);
+    else
+      tally.books.drag_loss += step_with_forces(config_.method, s, dt, config_.threads, config_.forces);
+  }
+
   /// Appendix A: a particle whose position at t + dt would lie outside the wall, and that is
   /// moving outward now, is reflected now, at its position at t. The summed impulses reach
   /// the centre-of-mass velocity because the step recomputes it from the particles.
   void reflect_predicted_leavers(double dt, WallTally& tally) {
-    const double R2 = *config_.container_radius * *config_.container_radius;
     // The prediction is the method's own step, taken on a copy before anyone is reflected.
     System predicted = system_;
-    swarm::step(config_.method, predicted, dt, config_.threads);
-    for (std::size_t i = 0; i < system_.particles.size(); ++i) {
-      auto& p = system_.particles[i];
-      if (predicted.particles[i].r.squaredNorm() > R2 && moving_outward(p))
-        reflect_at_wall(p, tally);
+    if (config_.forces.any() && config_.method == Method::analytic) {
+      step_analytic_forced(predicted, dt, config_.forces);  // the same map, without booking
+    } else {
+      WallTally unused;
+      move(predicted, dt, unused);
     }
+    if (config_.container_radius) {
+      const double R2 = *config_.container_radius * *config_.container_radius;
+      for (std::size_t i = 0; i < system_.particles.size(); ++i) {
+        auto& p = system_.particles[i];
+        if (predicted.particles[i].r.squaredNorm() > R2 && moving_outward(p))
+          reflect_at_wall(p, tally);
+      }
+    }
+    // The floor is a second wall, judged on the same prediction (after the sphere's reflection,
+    // with the velocity the particle now has).
+    if (config_.floor)
+      for (std::size_t i = 0; i < system_.particles.size(); ++i) {
+        auto& p = system_.particles[i];
+        if (falling_through(*config_.floor, predicted.particles[i].r, p.v))
+          bounce_on_floor(p, *config_.floor, tally);
+      }
   }
 
-  /// Event by event: advance everyone to the earliest wall contact inside the step, reflect
-  /// that particle there, and repeat with the changed centre-of-mass motion.
+  /// Event by event: advance everyone to the earliest wall (or floor) contact inside the step,
+  /// reflect that particle there, and repeat with the changed centre-of-mass motion.
   void step_with_exact_hits(double dt, WallTally& tally) {
-    const double Rw = *config_.container_radius;
+    const std::optional<double> Rw = config_.container_radius;
+    const Floor* floor = config_.floor ? &*config_.floor : nullptr;
+    const bool forced = config_.forces.any();
+    const double gamma = config_.forces.drag ? config_.forces.drag->gamma : 0.0;
+    const Vec3 g = config_.forces.gravity;
+    auto outside = [&](const Vec3& r) {
+      return (Rw && r.norm() > *Rw) || (floor && r.z() < floor->z);
+    };
     double left = dt;
     for (;;) {
       const Vec3 R = cm_position(system_);
       const Vec3 V = cm_velocity(system_);
       const double k = stiffness(system_);
       auto position_after = [&](const Particle& p, double tau) {
+        if (forced) {
+          const ForcedFlow m = ForcedFlow::over(k, gamma, tau);
+          return Vec3(R + m.cm_v * V + m.cm_g * g + m.xc * (p.r - R) + m.xs * (p.v - V));
+        }
         const Flow f = Flow::over(k, tau);
         return Vec3(R + V * tau + f.c * (p.r - R) + f.s * (p.v - V));
       };
       double first = left;
       std::size_t who = system_.particles.size();
+      bool who_at_floor = false;  // whether the earliest contact is with the floor
       for (std::size_t i = 0; i < system_.particles.size(); ++i) {
         const Particle& p = system_.particles[i];
-        const bool outside_now = p.r.norm() >= Rw;
-        if (outside_now) {
-          if (moving_outward(p)) first = 0, who = i;
+        const bool at_wall = Rw && p.r.norm() >= *Rw;
+        const bool at_floor = floor && p.r.z() <= floor->z;
+        if (at_wall || at_floor) {
+          if (at_floor && p.v.z() < 0)
+            first = 0, who = i, who_at_floor = true;
+          else if (at_wall && moving_outward(p))
+            first = 0, who = i, who_at_floor = false;
           continue;
         }
-        if (position_after(p, left).norm() <= Rw) continue;  // grazing exits are missed
-        double lo = 0, hi = left;                            // inside at lo, outside at hi
+        if (!outside(position_after(p, left))) continue;  // grazing exits are missed
+        double lo = 0, hi = left;                          // inside at lo, outside at hi
         for (int it = 0; it < 64 && hi - lo > 0; ++it) {
           const double mid = 0.5 * (lo + hi);
-          (position_after(p, mid).norm() > Rw ? hi : lo) = mid;
+          (outside(position_after(p, mid)) ? hi : lo) = mid;
         }
-        if (hi < first) first = hi, who = i;
+        if (hi < first)
+          first = hi, who = i, who_at_floor = floor && position_after(p, hi).z() < floor->z;
       }
-      if (first > 0) step_analytic(system_, first);
+      if (first > 0) advance_exactly(first, tally);
       left -= first;
       if (who == system_.particles.size()) return;
       Particle& hit = system_.particles[who];
-      if (moving_outward(hit)) reflect_at_wall(hit, tally);
+      if (who_at_floor) {
+        if (hit.v.z() < 0) bounce_on_floor(hit, *floor, tally);
+      } else if (moving_outward(hit)) {
+        reflect_at_wall(hit, tally);
+      }
       if (left <= 0) return;
     }
+  }
+
+  /// The exact map over tau, with the forces when there are any.
+  void advance_exactly(double tau, WallTally& tally) {
+    if (config_.forces.any())
+      tally.books.drag_loss += step_with_forces(Method::analytic, system_, tau, 1, config_.forces);
+    else
+      step_analytic(system_, tau);
   }
 
   System system_;

@@ -7,6 +7,7 @@
 
 #include "advance_to_end.h"
 #include "swarm/diagnostics.h"
+#include "swarm/gravity.h"
 
 namespace swarm {
 
@@ -33,11 +34,18 @@ Run::Run(System initial, const RunPlan& plan)
 
 Run::Run(std::unique_ptr<Engine> engine, const RunPlan& plan)
     : engine_(std::move(engine)), plan_(plan) {
-  const System& s = engine_->system();
-  const EnergyParts energy = energy_parts(s);
+  const EnergyParts energy = energy_now();
   E0_ = energy.kinetic + energy.potential;
   energy_scale_ = energy.kinetic + std::abs(energy.potential);
   samples_.push_back(sample_now());
+}
+
+EnergyParts Run::energy_now() {
+  const System& s = engine_->system();
+  EnergyParts e = energy_parts(s);
+  const Vec3& g = plan_.engine.forces.gravity;
+  if (g != Vec3::Zero()) e.potential += gravity_potential_energy(s, g);
+  return e;
 }
 
 Sample Run::sample_now() {
@@ -48,11 +56,15 @@ Sample Run::sample_now() {
   out.P = w.P;
   out.T = w.T;
   out.hits = w.hits;
-  const EnergyParts energy = energy_parts(s);
+  const EnergyParts energy = energy_now();
   out.KE = energy.kinetic;
   out.PE = energy.potential;
   out.E = out.KE + out.PE;
   out.R = engine_->container_radius().value_or(0.0);
+  out.books = books_;
+  const Vec3 cm = cm_position(s);
+  out.cm_height = cm.z();
+  out.size = rms_distance_from_cm(s);
   sample_meter_.reset();
   return out;
 }
@@ -62,6 +74,8 @@ void Run::step_once() {
   const WallTally tally = engine_->step(plan_.dt);
   ++steps_done_;
   wall_hits_ += tally.hits;
+  floor_hits_ += tally.floor_hits;
+  books_.add(tally.books);
   sample_meter_.add(tally, plan_.dt, R);
 
   if (plan_.expansion) {
@@ -72,7 +86,8 @@ void Run::step_once() {
       stage_meter_.add(tally, plan_.dt, R);
     if (in_stage == per_stage - 1) {
       const WallReading w = stage_meter_.reading();
-      stages_.push_back({R, sphere_volume(R), w.P, w.T, total_energy(engine_->system()), w.hits});
+      const EnergyParts energy = energy_now();
+      stages_.push_back({R, sphere_volume(R), w.P, w.T, energy.kinetic + energy.potential, w.hits});
       stage_meter_.reset();
       if (long(stages_.size()) < e.stages) engine_->set_container_radius(R * e.factor);
     }
@@ -121,16 +136,19 @@ StageFits Run::fits() const {
 }
 
 RunSummary Run::summary() {
+  const EnergyParts energy = energy_now();
   const System& s = engine_->system();
   RunSummary out;
   out.M = total_mass(s);
   out.omega = std::sqrt(std::abs(s.J) * out.M);
   out.E0 = E0_;
-  out.E_end = total_energy(s);
+  out.E_end = energy.kinetic + energy.potential;
   out.energy_drift = relative_energy_change(E0_, out.E_end, energy_scale_);
   out.wall_hits = wall_hits_;
   out.steps = steps_done_;
   out.t_end = s.t;
+  out.books = books_;
+  out.floor_hits = floor_hits_;
   return out;
 }
 

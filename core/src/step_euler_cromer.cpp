@@ -1,10 +1,11 @@
+#include "swarm/external_forces.h"
 #include "swarm/integrators.h"
 
 namespace swarm {
 
-void step_euler_cromer(System& s, double dt, int threads) {
+void step_euler_cromer(System& s, double dt, int threads, const ExternalForces& f) {
   std::vector<Vec3> a;
-  pairwise_accelerations(s, a, threads);
+  accelerations(s, f, a, threads);
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
     auto& p = s.particles[i];
     p.v += a[i] * dt;
@@ -12,5 +13,7 @@ void step_euler_cromer(System& s, double dt, int threads) {
   }
   s.t += dt;
 }
+
+void step_euler_cromer(System& s, double dt, int threads) { step_euler_cromer(s, dt, threads, {}); }
 
 }  // namespace swarm

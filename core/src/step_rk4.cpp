@@ -1,8 +1,9 @@
+#include "swarm/external_forces.h"
 #include "swarm/integrators.h"
 
 namespace swarm {
 
-void step_rk4(System& s, double dt, int threads) {
+void step_rk4(System& s, double dt, int threads, const ExternalForces& f) {
   const std::size_t n = s.particles.size();
   const System start = s;
   std::vector<Vec3> a1, a2, a3, a4, v2(n), v3(n), v4(n);
@@ -16,12 +17,12 @@ void step_rk4(System& s, double dt, int threads) {
       mid.particles[i].v += dv[i] * h;
       v_out[i] = mid.particles[i].v;
     }
-    pairwise_accelerations(mid, a_out, threads);
+    accelerations(mid, f, a_out, threads);
   };
 
   std::vector<Vec3> v1(n);
   for (std::size_t i = 0; i < n; ++i) v1[i] = start.particles[i].v;
-  pairwise_accelerations(start, a1, threads);
+  accelerations(start, f, a1, threads);
   stage(v1, a1, 0.5 * dt, v2, a2);
   stage(v2, a2, 0.5 * dt, v3, a3);
   stage(v3, a3, dt, v4, a4);
@@ -31,5 +32,7 @@ void step_rk4(System& s, double dt, int threads) {
   }
   s.t += dt;
 }
+
+void step_rk4(System& s, double dt, int threads) { step_rk4(s, dt, threads, {}); }
 
 }  // namespace swarm

@@ -10,6 +10,7 @@ void WallTally::add(const WallTally& o) {
   hit_kinetic_energy += o.hit_kinetic_energy;
   wall_momentum += o.wall_momentum;
   books.add(o.books);
+  floor_hits += o.floor_hits;
 }
 
 void reflect_at_wall(Particle& p, WallTally& tally) { p.v += wall_reflection(p.m, p.r, p.v, tally); }

@@ -68,7 +68,7 @@ assert all(set(x) >= {"t", "P", "T", "KE", "PE", "E"} for x in d["samples"])
 assert len(d["final"]["particles"]) == 2 and abs(d["final"]["t"] - 2) < 1e-9
 assert "stages" in d
 PY
-  head -1 "$work/samples.csv" | grep -q '^t,P,T,KE,PE,E,hits,R$' && ok || bad "csv header"
+  head -1 "$work/samples.csv" | grep -q '^t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size$' && ok || bad "csv header"
   [ ! -s "$work/stdout" ] && ok || bad "--quiet printed to stdout"
 else
   bad "good run failed"
@@ -172,7 +172,7 @@ grep -q 'running \[#' "$work/stderr" && ok || bad "no progress bar on a long run
 
 # Hostile but well-formed presets: refused at validation, fast, naming the field that drives
 # the cost or the overflow.
-expect_error samples-fill '{"J":1,"particles":{"count":1,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1}' 'sample_every: 1e+09 samples need ~128 GB of memory (limit ~12 GB); raise sample_every'
+expect_error samples-fill '{"J":1,"particles":{"count":1,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1}' 'sample_every: 1e+09 samples need ~208 GB of memory (limit ~12 GB); raise sample_every'
 expect_error repulsive-700 '{"J": -1, "particles": [{"m": 1, "r": [0.5,0,0], "v": [0,0,0]}, {"m": 1, "r": [-0.5,0,0], "v": [0,0,0]}], "dt": 0.01, "duration": 494.97474683058323}' "duration: an isolated repulsive system's energies grow as exp(2 Omega t)"
 expect_error overflow-J '{"J": 1e308, "particles": [{"m": 1, "r": [0,0,0], "v": [0,0,0]}, {"m": 1, "r": [0.1,0,0], "v": [0,0,0]}], "dt": 0.1, "duration": 1}' 'J: J * M = inf must stay within +-1e300'
 expect_error overflow-mass '{"J": 1, "particles": [{"m": 1e308, "r": [0,0,0], "v": [0,0,0]}, {"m": 1e308, "r": [0,0,0], "v": [0,0,0]}], "dt": 0.1, "duration": 1}' 'particles: the total mass M = inf must stay <= 1e300'
@@ -180,6 +180,12 @@ expect_error overflow-r '{"J": 1, "particles": [{"m": 1, "r": [1e200,0,0], "v": 
 expect_error expansion-factor '{"J": 1, "particles": {"count": 10, "position_radius": 1, "velocity": {"speed": 1}}, "container": {"radius": 1}, "dt": 1e-3, "expansion": {"factor": 1e308, "stages": 1000, "tau": 1e-3}}' 'expansion.factor: the container would grow to R * factor^(stages - 1) = inf'
 expect_error tau-over-dt '{"J": 1, "particles": {"count": 10, "position_radius": 1, "velocity": {"speed": 1}}, "container": {"radius": 1}, "dt": 1e-300, "expansion": {"factor": 1.1, "stages": 1000000, "tau": 1e300}}' 'expansion.tau: tau / dt = inf steps per stage'
 expect_error months-of-work '{"J":1,"particles":{"count":10000000,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1000000}' 'duration: 1e+07 particles x 1e+09 steps = 1e+16 particle-steps (limit 4e+12)'
+# Gravity, a floor and drag (Appendix B): one message naming the field and the rule.
+two='"particles":[{"m":1,"r":[0,0,1],"v":[1,0,0]},{"m":2,"r":[0,0.5,2],"v":[0,0,0]}]'
+expect_error floor-restitution "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"floor\":{\"z\":0,\"restitution\":2}}" 'floor.restitution: must be in [0, 1]'
+expect_error floor-above "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"floor\":{\"z\":1.5}}" 'particles[0].r: starts below the floor (z = 1 < floor.z = 1.5)'
+expect_error drag-b-analytic "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"drag\":{\"b\":1,\"particles\":[0]}}" 'drag.b: drag on chosen particles breaks the centre-of-mass picture'
+expect_error gravity-short "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"gravity\":[0,-9.8]}" 'gravity: must be an array of 3 numbers [x, y, z]'
 expect_error duplicate-key "{$good, \"duration\": 1, \"J\": 2}" 'J: given twice (each key at most once)'
 expect_error trailing "{$good, \"duration\": 1} {}" 'preset: not valid JSON'
 

@@ -20,6 +20,8 @@ struct EnergyParts {
 };
 EnergyParts energy_parts(const System& s);
 Vec3 total_momentum(const System& s);
+/// The swarm's size: sqrt(sum m |r - R_cm|^2 / M), the mass-weighted rms distance from the CM.
+double rms_distance_from_cm(const System& s);
 /// L = sum m (r - R_cm) x (v - V_cm).
 Vec3 angular_momentum_cm(const System& s);
 

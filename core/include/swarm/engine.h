@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "swarm/collision_mode.h"
+#include "swarm/external_forces.h"
+#include "swarm/floor.h"
 #include "swarm/method.h"
 #include "swarm/system.h"
 #include "swarm/wall.h"
@@ -23,6 +25,10 @@ struct EngineConfig {
   /// Threads for the engine's work, 1 or 2 (more count as 2; the browser always uses 1).
   /// Results do not depend on it: sums are combined in a fixed order.
   int threads = default_threads();
+  /// Gravity and drag (Appendix B), and a floor beside the container: they run on the
+  /// reference engine (fast_engine_applies is false).
+  ExternalForces forces;
+  std::optional<Floor> floor;
 };
 
 class Engine {

@@ -11,6 +11,8 @@
 
 namespace swarm {
 
+struct ExternalForces;  // swarm/external_forces.h
+
 /// a_i = -J sum_k m_k (r_i - r_k), summed over every pair (eq. 1, no centre-of-mass shortcut).
 void pairwise_accelerations(const System& s, std::vector<Vec3>& a, int threads = 1);
 
@@ -25,6 +27,14 @@ void step_euler_cromer(System& s, double dt, int threads = 1);
 void step_verlet(System& s, double dt, int threads = 1);
 /// Classical fourth-order Runge-Kutta.
 void step_rk4(System& s, double dt, int threads = 1);
+
+/// The numerical methods under external forces (gravity, drag): the same steps with the
+/// forces added to the pairwise accelerations. Verlet's closing half kick treats the drag
+/// implicitly (trapezoidal), which keeps it second order.
+void step_euler(System& s, double dt, int threads, const ExternalForces& f);
+void step_euler_cromer(System& s, double dt, int threads, const ExternalForces& f);
+void step_verlet(System& s, double dt, int threads, const ExternalForces& f);
+void step_rk4(System& s, double dt, int threads, const ExternalForces& f);
 
 /// Dispatches to the step function of method m.
 void step(Method m, System& s, double dt, int threads = 1);

@@ -29,6 +29,10 @@ struct Preset {
   std::optional<ExpansionProtocol> expansion;
   std::optional<long> sample_every;  ///< none: about 2000 samples over the run
   std::vector<Method> compare;       ///< methods run side by side from the same start
+  // Appendix B: gravity, a floor and drag (swarm/gravity.h, floor.h, drag.h).
+  std::optional<Vec3> gravity;  ///< "gravity": [gx, gy, gz]
+  std::optional<Floor> floor;   ///< "floor": {"z": h, "restitution": e}
+  std::optional<Drag> drag;     ///< "drag": {"gamma": g} or {"b": b, "particles": [i, ...]}
 };
 
 /// Either a valid preset or one message naming the field and the rule it breaks,

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "swarm/diagnostics.h"
 #include "swarm/engine.h"
 #include "swarm/fit.h"
 #include "swarm/run_plan.h"
@@ -24,6 +25,11 @@ struct Sample {
   double KE = 0, PE = 0, E = 0;
   std::int64_t hits = 0;
   double R = 0;  ///< container radius, 0 when isolated
+  /// Energy from outside since t = 0 (walls, floor, drag): E - E0 = books.net() when the
+  /// books balance. PE and E include gravity's potential when there is gravity.
+  EnergyBooks books;
+  double cm_height = 0;  ///< z of the centre of mass (length)
+  double size = 0;       ///< rms distance from the CM, sqrt(sum m |r - R_cm|^2 / M) (length)
 };
 
 struct Stage {
@@ -43,6 +49,8 @@ struct RunSummary {
   std::int64_t wall_hits = 0;
   long steps = 0;
   double t_end = 0;
+  EnergyBooks books;             ///< energy from outside over the run: E_end - E0 = books.net()
+  std::int64_t floor_hits = 0;  ///< bounces on the floor
 };
 
 /// A run that can be advanced piecewise (the UI) or to the end (the CLI).
@@ -68,6 +76,9 @@ class Run {
   const std::vector<Stage>& stages() const { return stages_; }
   StageFits fits() const;
   RunSummary summary();
+  /// The kinetic and potential energy of the current state; the potential counts the springs
+  /// and, under gravity, -sum m g.r.
+  EnergyParts energy_now();
 
  private:
   void step_once();
@@ -78,6 +89,8 @@ class Run {
   RunPlan plan_;
   long steps_done_ = 0;
   std::int64_t wall_hits_ = 0;
+  std::int64_t floor_hits_ = 0;
+  EnergyBooks books_;  // accumulated since t = 0
   double E0_ = 0, energy_scale_ = 1;
   WallMeter sample_meter_, stage_meter_;
   std::vector<Sample> samples_;

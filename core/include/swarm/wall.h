@@ -15,6 +15,7 @@ struct WallTally {
   double hit_kinetic_energy = 0;      ///< sum of 1/2 m v^2 of the particles as they hit
   Vec3 wall_momentum = Vec3::Zero();  ///< momentum taken up by the wall: minus the system's change
   EnergyBooks books;                  ///< energy from outside in the step (walls, floor, drag)
+  std::int64_t floor_hits = 0;        ///< bounces on the floor (swarm/floor.h), not in hits
 
   void add(const WallTally& other);
 };
