@@ -1,6 +1,7 @@
 #include "screen_layout.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace swarmlab {
 namespace {
@@ -13,8 +14,11 @@ constexpr float kMinViewWidth = 30, kMinViewShare = 0.35f, kMinWideHeight = 30;
 /// Before the first frame has measured them.
 constexpr float kTransportGuess = 2.7f, kReadoutsGuess = 6;
 
+/// Whole pixels: neighbours share an edge, rounded alike, so they never overlap.
 ScreenRect rect(float x, float y, float width, float height) {
-  return {x, y, std::max(width, 0.0f), std::max(height, 0.0f)};
+  const float x0 = std::round(x), y0 = std::round(y);
+  return {x0, y0, std::max(std::round(x + width) - x0, 0.0f),
+          std::max(std::round(y + height) - y0, 0.0f)};
 }
 
 }  // namespace
@@ -64,9 +68,9 @@ ScreenLayout screen_layout(const ScreenLayoutInput& in) {
   out.kind = choose_layout(in);
 
   if (out.kind == LayoutKind::wide) {
-    // Each side panel keeps its width while the view keeps at least half the window.
+    // Each side panel keeps its width while the view keeps at least 40% of the window.
     float controls = in.controls ? kControlsWidth * f : 0, plots = in.plots ? kPlotsWidth * f : 0;
-    const float squeeze = std::min(1.0f, 0.5f * in.width / std::max(controls + plots, 1.0f));
+    const float squeeze = std::min(1.0f, 0.6f * in.width / std::max(controls + plots, 1.0f));
     controls *= squeeze, plots *= squeeze;
     if (in.controls) out.controls = rect(0, top, controls, bottom - top);
     if (in.plots) out.plots = rect(in.width - plots, top, plots, bottom - top);
