@@ -32,6 +32,7 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["layout"] = swarmlab::layout_name(s.layout.screen.kind);
   j["layout_mode"] = swarmlab::layout_mode_name(s.layout.mode);
   j["touch"] = s.layout.touch;
+  j["fingers"] = app.touch().fingers();
   j["ui_scale"] = s.layout.ui_scale;
   const swarmlab::ViewRect& v = s.layout.view;
   j["view"] = rect_json(v.x, v.y, v.width, v.height);

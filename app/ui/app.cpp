@@ -154,6 +154,15 @@ void record_panel(AppState& s, const char* name) {
   s.layout.panels.push_back({name, {pos.x, pos.y, size.x, size.y}, ImGui::GetScrollY()});
 }
 
+/// A finger dragging on the current window scrolls it (ImGui's own mouse-wheel routing was
+/// seen to drop a scroll after a pinch, so the window under the finger is scrolled here).
+void touch_scroll(const TouchFrame& t) {
+  if (!t.pointer || t.scroll_y == 0) return;
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  if (t.x < pos.x || t.y < pos.y || t.x >= pos.x + size.x || t.y >= pos.y + size.y) return;
+  ImGui::SetScrollY(std::clamp(ImGui::GetScrollY() + t.scroll_y, 0.0f, ImGui::GetScrollMaxY()));
+}
+
 /// The height the current window's content took, padding included.
 float content_height() {
   return ImGui::GetCursorPosY() - ImGui::GetStyle().ItemSpacing.y +
@@ -235,13 +244,19 @@ void App::layout_windows() {
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
   if (l.controls.shown()) {
     place(l.controls);
-    if (ImGui::Begin("Controls", &s.layout.controls, panel)) draw_controls(s);
+    if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
+      touch_scroll(touch_frame_);
+      draw_controls(s);
+    }
     record_panel(s, "Controls");
     ImGui::End();
   }
   if (l.plots.shown()) {
     place(l.plots);
-    if (ImGui::Begin("Plots", &s.layout.plots, panel)) draw_plots_panel(s);
+    if (ImGui::Begin("Plots", &s.layout.plots, panel)) {
+      touch_scroll(touch_frame_);
+      draw_plots_panel(s);
+    }
     record_panel(s, "Plots");
     ImGui::End();
   }
@@ -252,7 +267,10 @@ void App::layout_windows() {
       if (ImGui::BeginTabBar("drawer", ImGuiTabBarFlags_FittingPolicyScroll)) {
         auto tab = [&](const char* name, bool shown, void (*body)(AppState&)) {
           if (!shown || !ImGui::BeginTabItem(name)) return;
-          if (ImGui::BeginChild(name)) body(s);
+          if (ImGui::BeginChild(name)) {
+            touch_scroll(touch_frame_);
+            body(s);
+          }
           record_panel(s, name);
           ImGui::EndChild();
           ImGui::EndTabItem();

@@ -41,10 +41,7 @@ void apply_touch(App& app) {
   if (!app.state().layout.touch) return;
   ImGuiIO& io = ImGui::GetIO();
   io.MousePos = t.pointer ? ImVec2(t.x, t.y) : ImVec2(-FLT_MAX, -FLT_MAX);
-  io.MouseDown[0] = t.pointer && t.down;
-  // ImGui scrolls 5 lines of the font per wheel notch (imgui.cpp, 1.86).
-  const float font = io.Fonts->Fonts.empty() ? 16.0f : io.Fonts->Fonts[0]->FontSize;
-  io.MouseWheel -= t.scroll_y / (5 * font);
+  io.MouseDown[0] = t.pointer && t.down;  // the App scrolls the panel under a dragging finger
 }
 
 }  // namespace

@@ -39,6 +39,7 @@ class TouchGestures {
   TouchFrame frame(double now);
   /// Whether a finger is down or a tap's click is still being delivered.
   bool active() const { return count_ > 0 || click_ > 0; }
+  int fingers() const { return count_; }  ///< fingers down now
 
  private:
   struct Finger {

@@ -23,11 +23,12 @@ const overlap = (a, b) => a.x + 0.5 < b.x + b.width && b.x + 0.5 < a.x + a.width
                           a.y + 0.5 < b.y + b.height && b.y + 0.5 < a.y + a.height;
 const within = (p, r) => p.x >= r.x && p.x < r.x + r.width && p.y >= r.y && p.y < r.y + r.height;
 
-// Fingers through the DevTools protocol, one move a frame as a hand moves.
+// Fingers through the DevTools protocol, one move a frame as a hand moves. The first move
+// follows the touch at once: a finger resting on a panel for a third of a second presses
+// (a slider), and this machine may draw only a few frames a second.
 async function fingers(page, cdp, paths, steps = 5) {
   const at = (k) => paths.map(([x0, y0, x1, y1], id) => ({ x: x0 + (x1 - x0) * k / steps, y: y0 + (y1 - y0) * k / steps, id }));
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(0) });
-  await frames(page, 2);
   for (let k = 1; k <= steps; ++k) {
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(k) });
     await frames(page, 1);
