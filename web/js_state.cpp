@@ -4,13 +4,18 @@
 #include <emscripten.h>
 
 #include <nlohmann/json.hpp>
+#include <cstdio>
 #include <string>
 
 #include "web_app.h"
 
 namespace {
 
-std::string state_text;  // valid until the next call
+std::string state_text, position_text;  // valid until the next call
+
+nlohmann::json rect_json(float x, float y, float width, float height) {
+  return {{"x", x}, {"y", y}, {"width", width}, {"height", height}};
+}
 
 nlohmann::json app_state_json(swarmlab::App& app) {
   const swarmlab::AppState& s = app.state();
@@ -21,6 +26,23 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["t"] = s.run->time();
   j["speed"] = s.speed;
   j["selected"] = s.selected ? nlohmann::json(*s.selected) : nlohmann::json(nullptr);
+  // The camera, the layout and where everything is (CSS pixels of the canvas = ImGui's).
+  j["camera"] = {{"distance", s.camera.distance()}, {"yaw", s.camera.yaw()},
+                 {"pitch", s.camera.pitch()}};
+  j["layout"] = swarmlab::layout_name(s.layout.screen.kind);
+  j["layout_mode"] = swarmlab::layout_mode_name(s.layout.mode);
+  j["touch"] = s.layout.touch;
+  j["fingers"] = app.touch().fingers();
+  j["ui_scale"] = s.layout.ui_scale;
+  const swarmlab::ViewRect& v = s.layout.view;
+  j["view"] = rect_json(v.x, v.y, v.width, v.height);
+  j["panels"] = nlohmann::json::array();
+  for (const swarmlab::Layout::Panel& p : s.layout.panels) {
+    nlohmann::json panel = rect_json(p.rect.x, p.rect.y, p.rect.width, p.rect.height);
+    panel["name"] = p.name;
+    panel["scroll"] = p.scroll;
+    j["panels"].push_back(panel);
+  }
   return j;
 }
 
@@ -33,6 +55,25 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_state() {
   swarmlab::App* app = swarmlab::web_app();
   state_text = app ? app_state_json(*app).dump() : "{}";
   return state_text.c_str();
+}
+
+/// Where particle i was drawn this frame: "x y" in CSS pixels of the canvas, "" when it is
+/// behind the camera or outside the 3D view, "bad N" when there is no particle i (N particles).
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_screen_position(int i) {
+  swarmlab::App* app = swarmlab::web_app();
+  if (!app) return "bad 0";
+  const swarmlab::AppState& s = app->state();
+  const auto& particles = s.run->system().particles;
+  if (i < 0 || std::size_t(i) >= particles.size()) {
+    position_text = "bad " + std::to_string(particles.size());
+    return position_text.c_str();
+  }
+  const swarmlab::ScreenPoint p = s.camera.project(particles[std::size_t(i)].r.cast<float>(), s.layout.view);
+  if (!p.visible || !s.layout.view.contains(p.x, p.y)) return "";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.2f %.2f", p.x, p.y);
+  position_text = text;
+  return position_text.c_str();
 }
 
 }  // extern "C"

@@ -185,6 +185,28 @@
       var r = Module.ccall('swarmlab_button_rect', 'string', ['string'], [label]).split(' ').map(Number);
       return r.length === 4 ? { x: r[0], y: r[1], width: r[2], height: r[3] } : null;
     },
+    // Touch and layouts: where particle i is drawn ({x, y} CSS pixels, or null off the view),
+    // and set({playing, speed, layout, ui_scale, selected, ...}) (web/js_set.cpp's table).
+    screenPosition: function (i) {
+      check();
+      if (!Number.isInteger(i)) throw new Error('swarmlab.screenPosition(i): i must be an integer, not ' + JSON.stringify(i));
+      var p = Module.ccall('swarmlab_screen_position', 'string', ['number'], [i]);
+      if (p.indexOf('bad') === 0)
+        throw new Error('swarmlab.screenPosition(i): i must be a particle index from 0 to ' + (Number(p.slice(4)) - 1) + ', not ' + i);
+      if (!p) return null;
+      var xy = p.split(' ').map(Number);
+      return { x: xy[0], y: xy[1] };
+    },
+    set: function (settings) {
+      check();
+      if (settings === null || typeof settings !== 'object' || Array.isArray(settings))
+        throw new Error('swarmlab.set(): expects an object such as {playing: false}');
+      var error = withHeapText(JSON.stringify(settings), function (pointer) {
+        return Module.ccall('swarmlab_set', 'string', ['number'], [pointer]);
+      });
+      if (error) throw new Error(error);
+      return api.state();
+    },
     shipped: function () {
       check();
       return Module.ccall('swarmlab_shipped', 'string', [], []).split('\n').filter(Boolean).map(function (line) {
@@ -238,6 +260,7 @@
         callback(t);
         if (runtimeInitialized) {
           frames++;
+          (Module.swarmlabEachFrame || []).forEach(function (f) { f(); });
           if (api.firstFrameMs === null) {
             api.firstFrameMs = performance.now();
             if (Module.onFirstFrame) Module.onFirstFrame(api.firstFrameMs);

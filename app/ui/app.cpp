@@ -123,11 +123,63 @@ void App::advance_simulation(double seconds) {
   }
 }
 
+namespace {
+
+/// The controls, section by section (the wide layout's left panel, the drawer's first tab).
+void draw_controls(AppState& s) {
+  auto section = [&](const char* title, bool open_first, void (*body)(AppState&)) {
+    ImGui::SetNextItemOpen(open_first, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader(title)) {
+      ImGui::PushID(title);
+      body(s);
+      ImGui::PopID();
+      ImGui::Spacing();
+    }
+  };
+  section("Scenario", true, draw_scenario_panel);
+  section("System", true, draw_system_panel);
+  section("Container", bool(s.preset.container_radius), draw_container_panel);
+  section("Gravity, floor, drag", s.preset.gravity || s.preset.floor || s.preset.drag,
+          draw_forces_panel);
+  section("Simulation", true, draw_simulation_panel);
+  section("View", false, draw_view_panel);
+}
+
+/// Places the next window on r, and records it for swarmlab.state() once drawn.
+void place(const ScreenRect& r) {
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
+  ImGui::SetNextWindowSize(ImVec2(r.width, r.height));
+}
+
+void record_panel(AppState& s, const char* name) {
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  s.layout.panels.push_back({name, {pos.x, pos.y, size.x, size.y}, ImGui::GetScrollY()});
+}
+
+/// A finger dragging on the current window scrolls it (ImGui's own mouse-wheel routing was
+/// seen to drop a scroll after a pinch, so the window under the finger is scrolled here).
+void touch_scroll(const TouchFrame& t) {
+  if (!t.pointer || t.scroll_y == 0) return;
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  if (t.x < pos.x || t.y < pos.y || t.x >= pos.x + size.x || t.y >= pos.y + size.y) return;
+  ImGui::SetScrollY(std::clamp(ImGui::GetScrollY() + t.scroll_y, 0.0f, ImGui::GetScrollMaxY()));
+}
+
+/// The height the current window's content took, padding included.
+float content_height() {
+  return ImGui::GetCursorPosY() - ImGui::GetStyle().ItemSpacing.y +
+         ImGui::GetStyle().WindowPadding.y;
+}
+
+}  // namespace
+
 void App::layout_windows() {
   AppState& s = state_;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float font = ImGui::GetFontSize();
   float top = viewport->Pos.y;
+  s.layout.panels.clear();
+  set_text_field_state(&s);
 
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("Scenario")) {
@@ -146,81 +198,129 @@ void App::layout_windows() {
       ImGui::MenuItem("Plots", "2", &s.layout.plots);
       if (ImGui::MenuItem("Larger UI", "Ctrl +")) s.layout.step_ui_scale(+1);
       if (ImGui::MenuItem("Smaller UI", "Ctrl -")) s.layout.step_ui_scale(-1);
+      // The layout follows the window unless the user picks one.
+      if (ImGui::BeginMenu("Layout")) {
+        const char* labels[] = {"Automatic (from the window size)", "Wide: side panels",
+                                "Compact: view first, panels in a drawer"};
+        for (LayoutMode m : {LayoutMode::automatic, LayoutMode::wide, LayoutMode::compact})
+          if (ImGui::MenuItem(labels[int(m)], nullptr, s.layout.mode == m)) s.layout.mode = m;
+        ImGui::EndMenu();
+      }
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
     const std::string title = "Swarm Lab  \u2014  " + s.preset.name;
     const float w = ImGui::CalcTextSize(title.c_str()).x;
-    ImGui::SameLine(std::max(ImGui::GetCursorPosX() + font, 0.5f * (viewport->Size.x - w)));
-    ImGui::TextDisabled("%s", title.c_str());
+    // On a narrow screen the title would run into the menus: the page says what runs.
+    if (ImGui::GetCursorPosX() + font + w < viewport->Size.x) {
+      ImGui::SameLine(std::max(ImGui::GetCursorPosX() + font, 0.5f * (viewport->Size.x - w)));
+      ImGui::TextDisabled("%s", title.c_str());
+    }
     top += ImGui::GetWindowSize().y;
     ImGui::EndMainMenuBar();
   }
-  const float height = viewport->Size.y - (top - viewport->Pos.y);
-  const ImGuiWindowFlags panel =
-      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
-  float left = viewport->Pos.x, right = viewport->Pos.x + viewport->Size.x;
 
-  if (s.layout.controls) {
-    ImGui::SetNextWindowPos(ImVec2(left, top));
-    ImGui::SetNextWindowSize(ImVec2(std::min(22 * font, 0.3f * viewport->Size.x), height),
-                             s.layout.resize_panels ? ImGuiCond_Always : ImGuiCond_Appearing);
-    ImGui::SetNextWindowSizeConstraints(
-        ImVec2(std::min(15 * font, 0.2f * viewport->Size.x), height), ImVec2(40 * font, height));
-    if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
-      auto section = [&](const char* title, bool open_first, void (*body)(AppState&)) {
-        ImGui::SetNextItemOpen(open_first, ImGuiCond_Once);
-        if (ImGui::CollapsingHeader(title)) {
-          ImGui::PushID(title);
-          body(s);
-          ImGui::PopID();
-          ImGui::Spacing();
-        }
-      };
-      section("Scenario", true, draw_scenario_panel);
-      section("System", true, draw_system_panel);
-      section("Container", bool(s.preset.container_radius), draw_container_panel);
-      section("Gravity, floor, drag", s.preset.gravity || s.preset.floor || s.preset.drag,
-              draw_forces_panel);
-      section("Simulation", true, draw_simulation_panel);
-      section("View", false, draw_view_panel);
-    }
-    left += ImGui::GetWindowWidth();
-    ImGui::End();
-  }
-  if (s.layout.plots) {
-    ImGui::SetNextWindowPos(ImVec2(right, top), ImGuiCond_Always, ImVec2(1, 0));
-    ImGui::SetNextWindowSize(ImVec2(std::min(25 * font, 0.34f * viewport->Size.x), height),
-                             s.layout.resize_panels ? ImGuiCond_Always : ImGuiCond_Appearing);
-    ImGui::SetNextWindowSizeConstraints(
-        ImVec2(std::min(16 * font, 0.2f * viewport->Size.x), height), ImVec2(60 * font, height));
-    if (ImGui::Begin("Plots", &s.layout.plots, panel)) draw_plots_panel(s);
-    right -= ImGui::GetWindowWidth();
-    ImGui::End();
-  }
+  ScreenLayoutInput in;
+  in.width = viewport->Size.x, in.height = viewport->Size.y;
+  in.font = font;
+  in.menu_height = top - viewport->Pos.y;
+  in.mode = s.layout.mode;
+  in.controls = s.layout.controls, in.plots = s.layout.plots;
+  in.transport_height = s.layout.transport_height;
+  in.readouts_height = s.layout.readouts_height;
+  in.bottom_strip_height = s.layout.bottom_strip_height;
+  const ScreenLayout l = screen_layout(in);
+  s.layout.screen = l;
   s.layout.resize_panels = false;
-  s.layout.view = {left, top, std::max(right - left, 1.0f), std::max(height, 1.0f)};
+  s.layout.view = {l.view.x, l.view.y, std::max(l.view.width, 1.0f), std::max(l.view.height, 1.0f)};
 
-  // Over the 3D view: the transport bar along the top, the read-outs below it.
-  const ImGuiWindowFlags overlay = ImGuiWindowFlags_NoDecoration |
-                                   ImGuiWindowFlags_AlwaysAutoResize |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
-                                   ImGuiWindowFlags_NoFocusOnAppearing;
-  ImGui::SetNextWindowPos(ImVec2(left + 0.5f * font, top + 0.5f * font));
-  ImGui::SetNextWindowBgAlpha(0.75f);
-  if (ImGui::Begin("##transport", nullptr, overlay)) draw_transport_bar(s);
-  const float below = top + 0.5f * font + ImGui::GetWindowHeight() + 0.4f * font;
+  // Fingers need larger targets than a mouse: more padding in a touch or compact layout.
+  const bool roomy = s.layout.touch || l.kind != LayoutKind::wide;
+  if (roomy) {
+    // Taller, not wider: the particle table's cells need their width for digits.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(0.3f * font, 0.45f * font));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.45f * font));
+    ImGui::PushStyleVar(ImGuiStyleVar_ScrollbarSize, 1.1f * font);
+  }
+  const ImGuiWindowFlags panel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+  if (l.controls.shown()) {
+    place(l.controls);
+    if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
+      touch_scroll(touch_frame_);
+      draw_controls(s);
+    }
+    record_panel(s, "Controls");
+    ImGui::End();
+  }
+  if (l.plots.shown()) {
+    place(l.plots);
+    if (ImGui::Begin("Plots", &s.layout.plots, panel)) {
+      touch_scroll(touch_frame_);
+      draw_plots_panel(s);
+    }
+    record_panel(s, "Plots");
+    ImGui::End();
+  }
+  if (l.drawer.shown()) {
+    // Compact: one drawer beside or under the view, its parts as tabs, each scrolling alone.
+    place(l.drawer);
+    if (ImGui::Begin("##drawer", nullptr, panel | ImGuiWindowFlags_NoTitleBar)) {
+      if (ImGui::BeginTabBar("drawer", ImGuiTabBarFlags_FittingPolicyScroll)) {
+        auto tab = [&](const char* name, bool shown, void (*body)(AppState&)) {
+          if (!shown || !ImGui::BeginTabItem(name)) return;
+          if (ImGui::BeginChild(name)) {
+            touch_scroll(touch_frame_);
+            body(s);
+          }
+          record_panel(s, name);
+          ImGui::EndChild();
+          ImGui::EndTabItem();
+        };
+        tab("Controls", s.layout.controls, draw_controls);
+        tab("Plots", s.layout.plots, draw_plots_panel);
+        tab("Read-outs", true, draw_readouts);
+        ImGui::EndTabBar();
+      }
+    }
+    ImGui::End();
+  }
+
+  // Around the 3D view, never over it: the transport bar above, the read-outs below.
+  const ImGuiWindowFlags strip = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings |
+                                 ImGuiWindowFlags_NoFocusOnAppearing;
+  place(l.transport);
+  if (ImGui::Begin("##transport", nullptr, strip)) draw_transport_bar(s);
+  s.layout.transport_height = content_height();
+  record_panel(s, "Transport");
   ImGui::End();
-  ImGui::SetNextWindowPos(ImVec2(left + 0.5f * font, below));
-  ImGui::SetNextWindowBgAlpha(0.55f);
-  if (ImGui::Begin("##readouts", nullptr, overlay)) draw_readouts(s);
-  ImGui::End();
+  if (l.readouts.shown()) {
+    place(l.readouts);
+    if (ImGui::Begin("##readouts", nullptr, strip)) draw_readouts(s);
+    s.layout.readouts_height = content_height();
+    record_panel(s, "Read-outs");
+    ImGui::End();
+  }
+  if (roomy) ImGui::PopStyleVar(3);
+  set_text_field_state(nullptr);
+  s.layout.typed_text.reset();  // typed for a field that has closed since
   draw_help_window(s);
 }
 
 void App::handle_view_input() {
   const ImGuiIO& io = ImGui::GetIO();
   const ViewRect& view = state_.layout.view;
+  if (state_.layout.touch) {
+    // Fingers (touch_gestures.h): ImGui's mouse only ever sees them on the panels.
+    const TouchFrame& t = touch_frame_;
+    state_.camera.orbit(t.orbit_dx, t.orbit_dy);
+    state_.camera.zoom_by(t.zoom);
+    state_.camera.pan(t.pan_dx, t.pan_dy, view.height);
+    if (t.tap) pick_particle(t.tap_x, t.tap_y);
+    dragging_ = false;
+    return;
+  }
   const bool over_view = !io.WantCaptureMouse && view.contains(io.MousePos.x, io.MousePos.y);
   if (over_view && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     dragging_ = true;
@@ -240,7 +340,8 @@ void App::handle_view_input() {
 
 void App::pick_particle(float x, float y) {
   const swarm::System& s = state_.run->system();
-  const float reach = 0.9f * ImGui::GetFontSize();
+  // A fingertip covers more than a mouse pointer.
+  const float reach = (state_.layout.touch ? 1.6f : 0.9f) * ImGui::GetFontSize();
   float best = reach * reach;
   std::optional<std::size_t> picked;
   for (std::size_t i = 0; i < s.particles.size(); ++i) {
@@ -270,6 +371,13 @@ void App::update_camera() {
     s.camera.set_elevation(s.preset.container_radius ? 0.45f : 1.1f);
     s.framed_radius = s.scene_radius;
     s.reframe = false;
+    framed_aspect_ = s.layout.view.aspect();
+  }
+  // A new shape of the view (a phone turned, another layout, a resized window) frames the
+  // scene again in what is left of the window.
+  if (const float aspect = s.layout.view.aspect(); std::abs(aspect / framed_aspect_ - 1) > 0.2f) {
+    s.camera.frame(s.framed_radius, aspect);
+    framed_aspect_ = aspect;
   }
   // The camera backs away as an expansion grows the container, keeping the whole wall in view.
   if (const auto R = s.run->primary().engine().container_radius(); R && *R > s.framed_radius) {

@@ -9,6 +9,7 @@
 
 #include "app_state.h"
 #include "particle_renderer.h"
+#include "touch_gestures.h"
 
 namespace swarmlab {
 
@@ -22,6 +23,9 @@ class App {
   const std::string& error() const { return error_; }
   AppState& state() { return state_; }
   bool quit_requested() const { return quit_; }
+  /// The fingers (fed by the main loop) and what they did this frame.
+  TouchGestures& touch() { return touch_; }
+  void set_touch_frame(const TouchFrame& frame) { touch_frame_ = frame; }
 
   /// Between ImGui::NewFrame() and ImGui::Render(): runs the simulation for one frame that
   /// took real_seconds and builds the whole UI.
@@ -42,6 +46,9 @@ class App {
   std::vector<ParticleInstance> particles_, ghosts_;
   std::string error_;
   bool quit_ = false;
+  TouchGestures touch_;
+  TouchFrame touch_frame_;
+  float framed_aspect_ = 1;  ///< the view's width / height when the camera distance was set
   bool dragging_ = false;
   float drag_distance_ = 0;
 };

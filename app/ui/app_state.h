@@ -13,6 +13,7 @@
 #include "colour_map.h"
 #include "live_run.h"
 #include "preset_store.h"
+#include "screen_layout.h"
 
 namespace swarmlab {
 
@@ -46,6 +47,28 @@ struct Layout {
   float pending_ui_scale = 1.0f;  ///< applied between frames by the main loop
   bool resize_panels = false;     ///< fit the panels to the window again (after a new scale)
   ViewRect view;                  ///< the 3D view: the window minus the panels
+
+  // Screen layouts (screen_layout.h) and touch.
+  LayoutMode mode = LayoutMode::automatic;  ///< View > Layout, or swarmlab.set({layout})
+  ScreenLayout screen;                      ///< this frame's rectangles
+  /// Measured on the last frame: the transport bar's and the read-outs strip's height.
+  float transport_height = 0, readouts_height = 0;
+  float bottom_strip_height = 0;  ///< reserved under the view for strips of other features
+  bool touch = false;             ///< the last pointer was a finger: larger targets
+  struct Panel {
+    std::string name;
+    ScreenRect rect;
+    float scroll = 0;  ///< pixels scrolled down
+  };
+  std::vector<Panel> panels;  ///< every window drawn this frame, for swarmlab.state()
+  /// The number field being typed into this frame (input_double), for the browser's
+  /// on-screen keyboard: where it is and its text; typed_text is what came back from it.
+  struct TextField {
+    bool active = false;
+    ScreenRect rect;
+    std::string text;
+  } text_field;
+  std::optional<std::string> typed_text;
 
   /// One step larger (+1) or smaller (-1), within the limits (menu and Ctrl +/-).
   void step_ui_scale(int direction) {

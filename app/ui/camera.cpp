@@ -21,6 +21,18 @@ void OrbitCamera::zoom(float steps) {
   distance_ = std::clamp(distance_ * std::pow(0.88f, steps), 1e-4f, 1e7f);
 }
 
+void OrbitCamera::zoom_by(float factor) {
+  if (factor > 0) distance_ = std::clamp(distance_ / factor, 1e-4f, 1e7f);
+}
+
+void OrbitCamera::pan(float dx, float dy, float view_height) {
+  const Eigen::Matrix4f m = view();
+  const Eigen::Vector3f right = m.block<1, 3>(0, 0).transpose(), up = m.block<1, 3>(1, 0).transpose();
+  // World length of one pixel at the target's depth.
+  const float per_pixel = 2 * distance_ * std::tan(0.5f * fov_y_) / std::max(view_height, 1.0f);
+  target_ -= per_pixel * (dx * right - dy * up);
+}
+
 void OrbitCamera::set_elevation(float radians) { elevation_ = std::clamp(radians, -1.55f, 1.55f); }
 
 Eigen::Vector3f OrbitCamera::eye() const {

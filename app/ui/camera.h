@@ -32,6 +32,14 @@ class OrbitCamera {
   void scale_distance(float factor) { distance_ *= factor; }
   /// Moves closer (steps > 0) or farther, one wheel notch at a time.
   void zoom(float steps);
+  /// Moves closer by this factor (a pinch that spread the fingers by it).
+  void zoom_by(float factor);
+  /// Slides the target so the scene follows a two-finger drag of dx, dy pixels across a view
+  /// view_height pixels tall.
+  void pan(float dx, float dy, float view_height);
+  float distance() const { return distance_; }
+  float yaw() const { return azimuth_; }      ///< radians about z
+  float pitch() const { return elevation_; }  ///< radians above the x-y plane
   void set_target(const Eigen::Vector3f& target) { target_ = target; }
   /// Height of the eye above the x-y plane, radians (0: level, pi/2: looking straight down).
   void set_elevation(float radians);

@@ -4,14 +4,60 @@
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
 
+#include <cfloat>
+
 #include "fonts.h"
 #include "gl_api.h"
 
 namespace swarmlab {
+namespace {
+
+double seconds_since_start() {
+  static const auto start = std::chrono::steady_clock::now();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// A finger event to the app's gestures, in ImGui's window pixels.
+void feed_finger(App& app, const SDL_TouchFingerEvent& e) {
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  const float x = e.x * size.x, y = e.y * size.y;
+  Layout& layout = app.state().layout;
+  layout.touch = true;
+  const long id = long(e.fingerId);
+  if (e.type == SDL_FINGERDOWN)
+    app.touch().down(id, x, y, layout.view.contains(x, y) && !ImGui::IsAnyItemActive(),
+                     seconds_since_start());
+  else if (e.type == SDL_FINGERMOTION)
+    app.touch().move(id, x, y);
+  else
+    app.touch().up(id, x, y);
+}
+
+/// With fingers, ImGui's mouse is where a finger presses, clicks or scrolls a panel, and
+/// nowhere otherwise (no hover left behind, no tooltip stuck on the screen).
+void apply_touch(App& app) {
+  const TouchFrame t = app.touch().frame(seconds_since_start());
+  app.set_touch_frame(t);
+  if (!app.state().layout.touch) return;
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = t.pointer ? ImVec2(t.x, t.y) : ImVec2(-FLT_MAX, -FLT_MAX);
+  io.MouseDown[0] = t.pointer && t.down;  // the App scrolls the panel under a dragging finger
+}
+
+}  // namespace
 
 bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
+    if (event.type == SDL_FINGERDOWN || event.type == SDL_FINGERMOTION ||
+        event.type == SDL_FINGERUP) {
+      feed_finger(*f.app, event.tfinger);
+      continue;
+    }
+    // A real mouse (not one SDL made of a finger) brings the mouse back.
+    if ((event.type == SDL_MOUSEMOTION && event.motion.which != SDL_TOUCH_MOUSEID) ||
+        (event.type == SDL_MOUSEBUTTONDOWN && event.button.which != SDL_TOUCH_MOUSEID))
+      f.app->state().layout.touch = false;
     ImGui_ImplSDL2_ProcessEvent(&event);
     if (event.type == SDL_QUIT) f.running = false;
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&
@@ -36,6 +82,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplSDL2_NewFrame();
+  apply_touch(*f.app);
   ImGui::NewFrame();
   f.app->update(seconds);
   ImGui::Render();

@@ -230,7 +230,8 @@ void draw_compare_tab(AppState& state, float plot_height) {
 
 void draw_plots_panel(AppState& state) {
   const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare"};
-  if (!ImGui::BeginTabBar("plots")) return;
+  // Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
+  if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
   for (int i = 0; i < 4; ++i) {
     const ImGuiTabItemFlags flags = state.plots.tab == i ? ImGuiTabItemFlags_SetSelected : 0;
     if (!ImGui::BeginTabItem(tabs[i], nullptr, flags)) continue;

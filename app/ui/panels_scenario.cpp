@@ -37,11 +37,6 @@ void help_marker(const char* text) {
 
 bool committed() { return ImGui::IsItemDeactivatedAfterEdit(); }
 
-bool input_double(const char* label, double* value, const char* format) {
-  ImGui::InputDouble(label, value, 0, 0, format);
-  return committed();
-}
-
 void draw_scenario_panel(AppState& state) {
   ImGui::TextDisabled("Shipped presets");
   const float list_height = ImGui::GetTextLineHeightWithSpacing() *

@@ -56,9 +56,17 @@ void draw_table(AppState& state, ParticleList& list) {
       ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
   bool changed = false;
   std::optional<std::size_t> remove;
+  // Narrow side padding in the cells, and m as wide as "0.000": in a 350 px panel the digits
+  // need every pixel (m = 0.25 once showed as "0.2").
+  const float font = ImGui::GetFontSize();
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding,
+                      ImVec2(0.15f * font, ImGui::GetStyle().FramePadding.y));
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemInnerSpacing, ImVec2(0.15f * font, 0.15f * font));
+  ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(0.15f * font, 0.15f * font));
   if (ImGui::BeginTable("particles", 4, flags)) {
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
-    ImGui::TableSetupColumn("m", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("m", ImGuiTableColumnFlags_WidthFixed,
+                            ImGui::CalcTextSize("0.000").x + 0.4f * font);
     ImGui::TableSetupColumn("r (x, y, z)", ImGuiTableColumnFlags_WidthStretch, 2.5f);
     ImGui::TableSetupColumn("v (x, y, z)", ImGuiTableColumnFlags_WidthStretch, 2.5f);
     ImGui::TableHeadersRow();
@@ -87,6 +95,7 @@ void draw_table(AppState& state, ParticleList& list) {
     }
     ImGui::EndTable();
   }
+  ImGui::PopStyleVar(3);
   if (remove && list.size() > 1) {
     list.erase(list.begin() + std::ptrdiff_t(*remove));
     changed = true;

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -13,8 +14,8 @@
 namespace swarmlab {
 namespace {
 
+/// One name and value: two cells of the table, which wraps to its next row by itself.
 void row(const char* name, const char* value, const char* equation) {
-  ImGui::TableNextRow();
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(name);
   bool hovered = ImGui::IsItemHovered();
@@ -63,7 +64,9 @@ void draw_readouts(AppState& state) {
 
   char value[96];
   const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
-  if (!ImGui::BeginTable("readouts", 2, flags)) return;
+  // As many name-value pairs across as the width holds: a strip under the view is short.
+  const int pairs = std::clamp(int(ImGui::GetContentRegionAvail().x / (14 * ImGui::GetFontSize())), 1, 6);
+  if (!ImGui::BeginTable("readouts", 2 * pairs, flags)) return;
   std::snprintf(value, sizeof value, "%zu", s.particles.size());
   row("N", value, "Number of particles.");
   std::snprintf(value, sizeof value, "%.5g", M);

@@ -10,6 +10,9 @@ namespace swarmlab {
 
 SdlWindow open_window(const char* title, int width, int height, std::string& error) {
   SdlWindow w;
+  // Fingers reach the app as finger events only (touch_gestures.h), not also as a mouse: a
+  // tap must select, not spin the camera.
+  SDL_SetHint(SDL_HINT_TOUCH_MOUSE_EVENTS, "0");
   if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_TIMER) != 0) {
     error = std::string("cannot start SDL: ") + SDL_GetError();
     return w;

@@ -77,7 +77,8 @@ void handle_shortcuts(AppState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;
   for (const Shortcut& s : kShortcuts)
-    if (s.ctrl == io.KeyCtrl && ImGui::IsKeyPressed(s.scancode, s.scancode != SDL_SCANCODE_S))
+    // No key repeat for a step or a UI scale: a slow frame once turned one Ctrl - into two.
+    if (s.ctrl == io.KeyCtrl && ImGui::IsKeyPressed(s.scancode, !s.ctrl && s.scancode != SDL_SCANCODE_S))
       s.run(state);
 }
 

@@ -1,0 +1,174 @@
+// Touch and screen layouts of the browser app (issue 12), in headless Chromium with touch
+// emulation: a tap selects a particle, a tap on empty space deselects without turning the
+// camera, one finger orbits, two fingers pinch to zoom, a finger drags a panel's content
+// without editing what it started on; swarmlab.set() refuses what it does not know; and at
+// the six classroom screen sizes (and 1280x720 at UI scale 1.5) every panel lies inside the
+// canvas, none over another or over the 3D view, with a screenshot of each in build/web-test/.
+// Run through tests/web/run.sh; the last line is "N passed, M failed".
+import * as harness from './harness.mjs';
+
+import { join } from 'node:path';
+
+const { check, openApp, launchBrowser, runSuite, outDir, pageErrors, consoleErrors } = harness;
+
+const api = (page, fn, arg) => page.evaluate(fn, arg);
+const appState = (page) => api(page, () => window.swarmlab.state());
+async function frames(page, n) {
+  const f0 = await api(page, () => window.swarmlab.frames());
+  await page.waitForFunction((t) => window.swarmlab.frames() >= t, f0 + n, { timeout: 20_000, polling: 20 });
+}
+
+const inside = (r, W, H) => r.x >= -0.5 && r.y >= -0.5 && r.x + r.width <= W + 0.5 && r.y + r.height <= H + 0.5;
+const overlap = (a, b) => a.x + 0.5 < b.x + b.width && b.x + 0.5 < a.x + a.width &&
+                          a.y + 0.5 < b.y + b.height && b.y + 0.5 < a.y + a.height;
+const within = (p, r) => p.x >= r.x && p.x < r.x + r.width && p.y >= r.y && p.y < r.y + r.height;
+
+// Fingers through the DevTools protocol, one move a frame as a hand moves. The first move
+// follows the touch at once: a finger resting on a panel for a third of a second presses
+// (a slider), and this machine may draw only a few frames a second.
+async function fingers(page, cdp, paths, steps = 5) {
+  const at = (k) => paths.map(([x0, y0, x1, y1], id) => ({ x: x0 + (x1 - x0) * k / steps, y: y0 + (y1 - y0) * k / steps, id }));
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(0) });
+  for (let k = 1; k <= steps; ++k) {
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(k) });
+    await frames(page, 1);
+  }
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await frames(page, 3);
+}
+
+async function gestures(page, context) {
+  await api(page, () => window.swarmlab.set({ playing: false }));
+  await frames(page, 3);
+  let s = await appState(page);
+  check('state() has the camera, layout, UI scale, view and panels',
+        typeof s.camera?.distance === 'number' && typeof s.camera.yaw === 'number' && typeof s.camera.pitch === 'number' &&
+        typeof s.layout === 'string' && s.ui_scale === 1 && s.view?.width > 0 && Array.isArray(s.panels) && s.panels.length >= 2,
+        `layout ${s.layout}, view ${JSON.stringify(s.view)}, panels ${s.panels.map((p) => p.name).join(', ')}`);
+  check('a 1024x768 tablet gets the compact landscape layout', s.layout === 'landscape', s.layout);
+
+  // A tap on a particle selects it and leaves the camera where it was.
+  const p0 = await api(page, () => window.swarmlab.screenPosition(0));
+  const yaw0 = s.camera.yaw;
+  await page.touchscreen.tap(p0.x, p0.y);
+  await frames(page, 4);
+  s = await appState(page);
+  check('a tap on a particle selects it', s.selected === 0, `tapped (${p0.x.toFixed(0)}, ${p0.y.toFixed(0)}), selected ${s.selected}`);
+  check('the tap did not turn the camera', s.camera.yaw === yaw0, `yaw ${yaw0} -> ${s.camera.yaw}`);
+
+  // A tap on empty space (a corner of the view, far from every particle) deselects, no spin.
+  const count = (await api(page, () => JSON.parse(window.swarmlab.preset()))).particles?.masses?.length ?? 4;
+  const positions = await api(page, (n) => Array.from({ length: n }, (_, i) => window.swarmlab.screenPosition(i)), count);
+  const empty = { x: s.view.x + 25, y: s.view.y + s.view.height - 25 };
+  const far = positions.every((p) => !p || Math.hypot(p.x - empty.x, p.y - empty.y) > 80);
+  await page.touchscreen.tap(empty.x, empty.y);
+  await frames(page, 4);
+  s = await appState(page);
+  check('a tap on empty space deselects', far && s.selected === null, `selected ${s.selected}, far from particles: ${far}`);
+  check('... without turning the camera', s.camera.yaw === yaw0, `yaw ${yaw0} -> ${s.camera.yaw}`);
+
+  const cdp = await context.newCDPSession(page);
+  const cx = s.view.x + s.view.width / 2, cy = s.view.y + s.view.height / 2;
+  // One finger dragged across the view orbits.
+  await fingers(page, cdp, [[cx - 80, cy, cx + 80, cy]]);
+  let t = await appState(page);
+  check('one finger dragged on the view orbits (yaw changes)', Math.abs(t.camera.yaw - yaw0) > 0.3,
+        `yaw ${yaw0.toFixed(3)} -> ${t.camera.yaw.toFixed(3)}`);
+  check('... and selects nothing', t.selected === null);
+
+  // Two fingers spreading apart zoom in; pinching them together zooms out.
+  const d0 = t.camera.distance, yaw1 = t.camera.yaw;
+  await fingers(page, cdp, [[cx - 40, cy, cx - 120, cy], [cx + 40, cy, cx + 120, cy]]);
+  t = await appState(page);
+  check('two fingers spread apart zoom in (distance / 3)', Math.abs(t.camera.distance / d0 - 1 / 3) < 0.05,
+        `distance ${d0.toFixed(3)} -> ${t.camera.distance.toFixed(3)}`);
+  check('... without orbiting', t.camera.yaw === yaw1);
+  const d1 = t.camera.distance;
+  await fingers(page, cdp, [[cx - 120, cy, cx - 40, cy], [cx + 120, cy, cx + 40, cy]]);
+  t = await appState(page);
+  check('a pinch zooms out again', Math.abs(t.camera.distance / d1 - 3) < 0.15, `distance ${d1.toFixed(3)} -> ${t.camera.distance.toFixed(3)}`);
+
+  // A finger dragged up the controls scrolls them, and presses nothing it started on.
+  const controls = t.panels.find((p) => p.name === 'Controls');
+  if (check('the controls are a panel of the drawer', !!controls, JSON.stringify(t.panels.map((p) => p.name)))) {
+    const x = controls.x + controls.width / 2, y0 = controls.y + controls.height * 0.75;
+    await fingers(page, cdp, [[x, y0, x, y0 - controls.height * 0.5]], 6);
+    t = await appState(page);
+    const after = t.panels.find((p) => p.name === 'Controls');
+    const field = await api(page, () => { const e = document.getElementById('swarmlab-number'); return e && !e.hidden; });
+    check('a finger dragged on the controls scrolls them', after && after.scroll > 0.3 * controls.height * 0.5,
+          `scroll ${controls.scroll} -> ${after && after.scroll.toFixed(1)} px`);
+    check('... without editing anything (no field open, preset unchanged)', !field && t.edited === false && t.name === s.name,
+          `field open: ${field}, edited: ${t.edited}`);
+  }
+  await cdp.detach();
+
+  // swarmlab.set(): each key changes what it names; anything else throws naming it.
+  const errors = await api(page, () => ['{"bogus": 1}', '{"speed": -2}', '{"layout": "tiny"}', '{"playing": "yes"}', '{"ui_scale": 9}']
+    .map((j) => { try { window.swarmlab.set(JSON.parse(j)); return null; } catch (e) { return e.message; } }));
+  check('set() refuses an unknown key, naming it', /bogus/.test(errors[0] || ''), errors[0]);
+  check('set() refuses bad values, naming the key', /speed/.test(errors[1] || '') && /layout/.test(errors[2] || '') &&
+        /playing/.test(errors[3] || '') && /ui_scale/.test(errors[4] || ''), errors.slice(1).join(' | '));
+  await api(page, () => window.swarmlab.set({ speed: 2, playing: true, selected: 1 }));
+  await frames(page, 2);
+  t = await appState(page);
+  check('set() changes speed, playing and selected', t.speed === 2 && t.playing === true && t.selected === 1,
+        `speed ${t.speed}, playing ${t.playing}, selected ${t.selected}`);
+  await api(page, () => window.swarmlab.set({ playing: false, selected: null }));
+}
+
+// Every panel inside the canvas, none over another or over the view; the particles drawn in
+// the view, none under the read-outs.
+async function checkLayout(page, W, H, label, expect) {
+  await page.setViewportSize({ width: W, height: H });
+  await frames(page, 4);
+  const s = await appState(page);
+  const parts = [...s.panels, { name: 'view', ...s.view }];
+  const outside = parts.filter((p) => !inside(p, W, H)).map((p) => p.name);
+  const clashes = [];
+  for (let i = 0; i < parts.length; ++i)
+    for (let j = i + 1; j < parts.length; ++j)
+      if (overlap(parts[i], parts[j])) clashes.push(`${parts[i].name}/${parts[j].name}`);
+  check(`${label}: layout ${expect}`, s.layout === expect, s.layout);
+  check(`${label}: every panel and the view inside the canvas`, outside.length === 0, outside.join(', ') ||
+        parts.map((p) => `${p.name} ${Math.round(p.x)},${Math.round(p.y)} ${Math.round(p.width)}x${Math.round(p.height)}`).join('; '));
+  check(`${label}: no panel over another or over the view`, clashes.length === 0, clashes.join(', '));
+  check(`${label}: the view keeps room (>= 40% of the width, 1/3 of the height)`,
+        s.view.width >= 0.4 * W && s.view.height >= H / 3, `${Math.round(s.view.width)}x${Math.round(s.view.height)}`);
+  const positions = await api(page, () => [0, 1, 2, 3].map((i) => window.swarmlab.screenPosition(i)));
+  const readouts = s.panels.find((p) => p.name === 'Read-outs');
+  const shown = positions.filter(Boolean);
+  check(`${label}: every particle drawn in the view, none under the read-outs`,
+        shown.length === 4 && shown.every((p) => within(p, s.view) && !(readouts && within(p, readouts))),
+        `${shown.length} of 4 on screen`);
+  await page.screenshot({ path: join(outDir, `touch-${label}.png`) });
+  console.log(`      screenshot -> build/web-test/touch-${label}.png`);
+  return s;
+}
+
+async function main(url) {
+  const context = await launchBrowser({ width: 1024, height: 768, hasTouch: true, isMobile: true });
+  const blank = context.pages()[0];
+  const { page, started, error } = await openApp(url, 'touch');
+  if (blank) await blank.close();
+  if (!check('the app starts on a touch tablet', started, error || '')) return;
+  await gestures(page, context);
+
+  const sizes = [[390, 844, 'portrait'], [844, 390, 'landscape'], [1024, 768, 'landscape'],
+                 [1366, 768, 'wide'], [1280, 720, 'wide'], [1920, 1080, 'wide']];
+  for (const [W, H, kind] of sizes) await checkLayout(page, W, H, `${W}x${H}`, kind);
+  // A projector at UI scale 1.5: compact, and the view still the larger part of the window.
+  await api(page, () => window.swarmlab.set({ ui_scale: 1.5 }));
+  await frames(page, 4);
+  const big = await checkLayout(page, 1280, 720, '1280x720-scale1.5', 'landscape');
+  check('UI scale 1.5 applied', big.ui_scale === 1.5, String(big.ui_scale));
+  check('1280x720 at UI scale 1.5: the view keeps half the width', big.view.width >= 640, `${Math.round(big.view.width)} px`);
+  await api(page, () => window.swarmlab.set({ ui_scale: 1, layout: 'compact' }));
+  await frames(page, 4);
+  check('set({layout: "compact"}) overrides the wide layout at 1280x720', (await appState(page)).layout === 'landscape');
+
+  check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
+  check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
+}
+
+runSuite('touch_e2e', 140_000, main);

@@ -1,0 +1,91 @@
+// swarmlab.set({...}): changes what it names, for course pages and tests. One table of keys,
+// each with its check and its change; a feature adds its row. Every key is checked before any
+// is changed, so a bad call changes nothing.
+
+#include <emscripten.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "web_app.h"
+
+namespace {
+
+using nlohmann::json;
+using swarmlab::AppState;
+
+struct Key {
+  const char* name;
+  const char* rule;                  ///< what a good value is, for the error message
+  bool (*valid)(const AppState&, const json&);
+  void (*apply)(AppState&, const json&);
+};
+
+bool number_in(const json& v, double lo, double hi) {
+  return v.is_number() && v.get<double>() >= lo && v.get<double>() <= hi;
+}
+
+const Key kKeys[] = {
+    {"playing", "must be true or false", [](const AppState&, const json& v) { return v.is_boolean(); },
+     [](AppState& s, const json& v) { s.playing = v.get<bool>(); }},
+    {"speed", "must be a number in [0.001, 10000] (simulated time per second)",
+     [](const AppState&, const json& v) { return number_in(v, 1e-3, 1e4); },
+     [](AppState& s, const json& v) { s.speed = v.get<double>(); }},
+    {"layout", "must be \"auto\", \"wide\" or \"compact\"",
+     [](const AppState&, const json& v) {
+       swarmlab::LayoutMode m;
+       return v.is_string() && swarmlab::parse_layout_mode(v.get<std::string>(), m);
+     },
+     [](AppState& s, const json& v) { swarmlab::parse_layout_mode(v.get<std::string>(), s.layout.mode); }},
+    {"ui_scale", "must be a number in [0.75, 2.5]",
+     [](const AppState&, const json& v) {
+       return number_in(v, swarmlab::Layout::kMinUiScale, swarmlab::Layout::kMaxUiScale);
+     },
+     [](AppState& s, const json& v) { s.layout.pending_ui_scale = v.get<float>(); }},
+    {"selected", "must be a particle index (an integer from 0 to N - 1) or null",
+     [](const AppState& s, const json& v) {
+       return v.is_null() || (v.is_number_integer() && v.get<long long>() >= 0 &&
+                              v.get<long long>() < (long long)(s.run->system().particles.size()));
+     },
+     [](AppState& s, const json& v) {
+       if (v.is_null()) s.selected.reset();
+       else s.selected = v.get<std::size_t>();
+       s.update_followed();
+     }},
+};
+
+std::string set_error;
+
+std::string apply_settings(AppState& state, const std::string& text) {
+  const json j = json::parse(text, nullptr, false);
+  if (!j.is_object()) return "swarmlab.set(): expects an object such as {playing: false}";
+  for (const auto& [name, value] : j.items()) {
+    const Key* key = nullptr;
+    for (const Key& k : kKeys)
+      if (name == k.name) key = &k;
+    if (!key) {
+      std::string known;
+      for (const Key& k : kKeys) known += std::string(known.empty() ? "" : ", ") + k.name;
+      return "swarmlab.set(): unknown key \"" + name + "\" (known: " + known + ")";
+    }
+    if (!key->valid(state, value))
+      return "swarmlab.set(): " + name + ": " + key->rule + ", not " + value.dump();
+  }
+  for (const auto& [name, value] : j.items())
+    for (const Key& k : kKeys)
+      if (name == k.name) k.apply(state, value);
+  return {};
+}
+
+}  // namespace
+
+extern "C" {
+
+/// Applies a JSON object of settings; "" on success, else the message naming the bad key.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_set(const char* settings) {
+  swarmlab::App* app = swarmlab::web_app();
+  set_error = app ? apply_settings(app->state(), settings) : "the app has not started";
+  return set_error.c_str();
+}
+
+}  // extern "C"
