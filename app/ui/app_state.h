@@ -63,7 +63,7 @@ struct FrameStats {
 };
 
 /// Which part of the controls an edit came from, to show a refusal next to it.
-enum class Section { none, scenario, system, container, simulation };
+enum class Section { none, scenario, system, container, simulation, walls };
 
 struct AppState {
   std::unique_ptr<PresetStore> store;

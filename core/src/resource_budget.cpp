@@ -20,6 +20,20 @@ constexpr double kSampleBytes = 2 * 64;            // a Sample, with a vector's 
 constexpr double kComparisonSampleBytes = 2 * 24;  // a ComparisonSample, likewise
 constexpr double kOutputBytesPerSample = 2000;     // JSON tree and text, CSV, figures
 
+// [Appendix B walls and contacts] A moving or hot wall runs on the reference engine, which
+// steps (and, for the prediction, copies) every particle in every step; hard spheres also sort
+// them into cells and test their neighbours. Costs per particle-step relative to the fast
+// engine's in a container, from bench/ (BM_HardSpheres, BM_ThermalWall against BM_Container).
+constexpr double kReferenceWallCost = 10;
+constexpr double kHardSphereCost = 40;
+constexpr double kCellGridBytesPerParticle = 32;  // cell, slot and two cell starts
+
+double particle_step_weight(const Preset& p) {
+  if (p.sphere_radius) return kHardSphereCost;
+  if (!p.wall_moves.empty() || p.wall_temperature) return kReferenceWallCost;
+  return 1;
+}
+
 double force_evaluations_per_step(Method m) {
   switch (m) {
     case Method::analytic:
@@ -83,13 +97,14 @@ ResourceEstimate estimate_resources(const Preset& p, bool with_output_files) {
   e.samples = std::floor(e.steps / double(plan.sample_every)) + 2;
 
   e.particle_bytes = e.particles * (kInitialBytesPerParticle + e.runs * kEngineBytesPerParticle);
+  if (p.sphere_radius) e.particle_bytes += e.particles * e.runs * kCellGridBytesPerParticle;
   e.sample_bytes =
       e.samples * (e.runs * kSampleBytes + double(p.compare.size()) * kComparisonSampleBytes);
   if (with_output_files)
     e.output_bytes =
         e.particles * kOutputBytesPerParticle + e.samples * e.runs * kOutputBytesPerSample;
 
-  e.particle_steps = e.particles * e.steps * e.runs;
+  e.particle_steps = e.particles * e.steps * e.runs * particle_step_weight(p);
   const double pairs = e.particles * (e.particles - 1) / 2;
   double evaluations = force_evaluations_per_step(p.method);
   for (Method m : p.compare) evaluations += force_evaluations_per_step(m);
@@ -128,9 +143,15 @@ std::string resource_error(const Preset& p, const ResourceLimits& limits, bool w
            " particles with the pairwise methods need " + amount(e.pair_evaluations) +
            " pair forces (limit " + amount(limits.pair_evaluations) +
            "); shorten the run, raise dt or use fewer particles";
+  const double weight = particle_step_weight(p);
+  const std::string weighted =
+      weight == 1 ? ""
+                  : " (x" + amount(weight) +
+                        (p.sphere_radius ? ": hard-sphere contacts" : ": a moving or hot wall") +
+                        " cost that much more per particle-step)";
   if (e.particle_steps > limits.particle_steps)
     return run_field + ": " + amount(e.particles) + " particles x " + amount(e.steps) + " steps" +
-           side_by_side + " = " + amount(e.particle_steps) + " particle-steps (limit " +
+           side_by_side + weighted + " = " + amount(e.particle_steps) + " particle-steps (limit " +
            amount(limits.particle_steps) + "); shorten the run, raise dt or use fewer particles";
   return {};
 }

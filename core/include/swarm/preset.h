@@ -29,6 +29,12 @@ struct Preset {
   std::optional<ExpansionProtocol> expansion;
   std::optional<long> sample_every;  ///< none: about 2000 samples over the run
   std::vector<Method> compare;       ///< methods run side by side from the same start
+
+  // Appendix B walls and contacts: "container": {"moves": [...]} or {"wall_temperature": Tw},
+  // and "hard_spheres": {"radius": a} (swarm/wall_motion.h, thermal_wall.h, hard_spheres.h).
+  std::vector<WallMove> wall_moves;
+  std::optional<double> wall_temperature;
+  std::optional<double> sphere_radius;
 };
 
 /// Either a valid preset or one message naming the field and the rule it breaks,
