@@ -27,3 +27,8 @@ run fig5-short-equilibration --out "$results/short.json" "$@"
 run fig5-long-equilibration --out "$results/long.json" "$@"
 echo "== fig5-overlay" >&2                # Fig. 5: long (solid) and short (dashed) overlaid
 "$bin" report "$results/long.json" "$results/short.json" --plots "$figures/fig5-overlay" --quiet "$@"
+
+# Appendix B walls and contacts (docs/student-projects-walls.md)
+run moving-wall-cycle "$@"               # P-V loop of a compress-expand cycle, energy books
+run hot-wall "$@"                        # a cold gas warmed by a wall at Tw
+run hard-spheres-gas "$@"                # hard spheres: energy, P and T

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "plotting/decimate.h"
+#include "walls_figures.h"
 #include "swarm/analytic.h"
 #include "swarm/fit.h"
 
@@ -330,6 +331,7 @@ std::vector<NamedFigure> run_figures(const RunRecord& r) {
     for (NamedFigure& f : comparison_figures(r, time)) out.push_back(std::move(f));
   if (has_drawable_orbits(r))
     for (NamedFigure& f : orbit_figures(r)) out.push_back(std::move(f));
+  if (auto pv = pv_loop_figure(r)) out.push_back(std::move(*pv));
   return out;
 }
 
