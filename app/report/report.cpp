@@ -332,6 +332,7 @@ std::vector<NamedFigure> run_figures(const RunRecord& r) {
   if (has_drawable_orbits(r))
     for (NamedFigure& f : orbit_figures(r)) out.push_back(std::move(f));
   if (auto pv = pv_loop_figure(r)) out.push_back(std::move(*pv));
+  if (auto speeds = speed_histogram_figure(r)) out.push_back(std::move(*speeds));
   return out;
 }
 

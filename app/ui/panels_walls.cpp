@@ -122,12 +122,12 @@ void draw_walls_panel(AppState& state) {
   if (p.wall_moves.empty() && !p.wall_temperature && !p.sphere_radius) return;
   ImGui::Separator();
   const swarm::System& s = state.run->system();
-  const double T = swarm::kinetic_temperature(s);
-  ImGui::Text("gas temperature T = %.4g", T);
+  const swarm::SpeedCheck speeds = swarm::check_speeds(s);
+  ImGui::Text("gas temperature T = %.4g", speeds.T);
   if (p.wall_temperature) ImGui::Text("wall temperature Tw = %.4g", *p.wall_temperature);
-  if (T > 0 && s.particles.size() >= 20) {
-    const double D = swarm::maxwell_ks_distance(swarm::scaled_speeds(s, T));
-    ImGui::Text("speeds vs Maxwell: KS sqrt(N) D = %.3g", std::sqrt(double(s.particles.size())) * D);
+  if (speeds.T > 0 && speeds.n >= 20) {
+    ImGui::Text("speeds vs Maxwell: KS sqrt(N) D = %.3g",
+                std::sqrt(double(speeds.n)) * speeds.ks_distance);
     help_marker(
         "The Kolmogorov-Smirnov distance between the particles' speeds and the Maxwell "
         "distribution at T, times sqrt(N). Below about 1.4 the speeds are as Maxwellian as "

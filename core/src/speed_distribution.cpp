@@ -57,4 +57,15 @@ SpeedHistogram speed_histogram(const std::vector<double>& scaled, int bins, doub
   return h;
 }
 
+SpeedCheck check_speeds(const System& s, int bins) {
+  SpeedCheck c;
+  c.T = kinetic_temperature(s);
+  c.n = s.particles.size();
+  if (c.T <= 0 || c.n == 0) return c;
+  const std::vector<double> scaled = scaled_speeds(s, c.T);
+  c.histogram = speed_histogram(scaled, bins);
+  c.ks_distance = maxwell_ks_distance(scaled);
+  return c;
+}
+
 }  // namespace swarm

@@ -36,4 +36,14 @@ struct SpeedHistogram {
 };
 SpeedHistogram speed_histogram(const std::vector<double>& scaled, int bins, double x_max = 4);
 
+/// A system's speeds against the Maxwellian at its kinetic temperature: T, the KS distance
+/// and the histogram, for the figures and the app's read-out.
+struct SpeedCheck {
+  double T = 0;
+  std::size_t n = 0;
+  double ks_distance = 0;  ///< sqrt(n) ks_distance < 1.63: Maxwellian at the 1 % level
+  SpeedHistogram histogram;
+};
+SpeedCheck check_speeds(const System& s, int bins = 40);
+
 }  // namespace swarm
