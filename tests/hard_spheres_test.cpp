@@ -12,6 +12,7 @@
 #include "swarm/hard_spheres.h"
 #include "swarm/initial_conditions.h"
 #include "swarm/speed_distribution.h"
+#include "swarm/state_hash.h"
 
 using namespace swarm;
 
@@ -181,4 +182,21 @@ TEST_CASE("Hard spheres: an attractive swarm thermalises faster after an expansi
   CAPTURE(without);
   CHECK(with < 1.63);
   CHECK(without > 2 * with);
+}
+
+TEST_CASE("a hard-sphere run in a moving container ends in the pinned state (native == wasm)") {
+  double h = 0;
+  System s = lattice_gas(300, 0.9, 1.0, 9, &h);
+  s.J = 0.3 / 300;
+  EngineConfig config;
+  config.container_radius = 1.0;
+  config.sphere_radius = 0.04;
+  config.wall_moves = {{0.8, 0.2}, {1.0, 0.2}};
+  auto engine = make_engine(s, config);
+  std::int64_t hits = 0;
+  for (int i = 0; i < 2000; ++i) hits += engine->step(1e-3).hits;
+  CHECK(hits > 50);
+  const std::uint64_t hash = state_hash(engine->system());
+  INFO("hash ", hash);
+  CHECK(hash == 0x94a71824eaf7f82eULL);
 }
