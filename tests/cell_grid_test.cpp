@@ -33,6 +33,6 @@ TEST_CASE("CellGrid: every pair closer than the cell side is visited exactly onc
     CHECK(long(visited.size()) == visits);  // no pair twice
     for (const auto& pair : close) CHECK(visited.count(pair) == 1);
     CHECK(!close.empty());
-    CHECK(grid.cells_per_side() <= 12);  // (2 N)^(1/3) + 1
+    CHECK(grid.cells_per_side() <= 12);  // the smallest c with c^3 >= 2 N = 1,400
   }
 }

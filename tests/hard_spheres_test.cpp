@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "portable_math.h"
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"
 #include "swarm/hard_spheres.h"
@@ -29,7 +30,8 @@ System lattice_gas(long n, double room, double speed, std::uint64_t seed, double
   spec.seed = seed;
   System s = generate_swarm(spec);
   const double volume = 4.0 / 3.0 * M_PI * room * room * room;
-  double h = std::cbrt(volume / double(n));
+  // The core's own cube root (exp and log), so that the start is the same bits in wasm.
+  double h = portable::exp(portable::log(volume / double(n)) / 3);
   std::vector<Vec3> sites;
   while (long(sites.size()) < n) {
     sites.clear();
@@ -198,5 +200,5 @@ TEST_CASE("a hard-sphere run in a moving container ends in the pinned state (nat
   CHECK(hits > 50);
   const std::uint64_t hash = state_hash(engine->system());
   INFO("hash ", hash);
-  CHECK(hash == 0x94a71824eaf7f82eULL);
+  CHECK(hash == 0x20a06b8948153f61ULL);
 }

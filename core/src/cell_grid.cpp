@@ -11,8 +11,10 @@ void CellGrid::build(const std::vector<Particle>& particles, double min_side) {
   if (N > 0) lo = hi = particles[0].r;
   for (const Particle& p : particles) lo = lo.cwiseMin(p.r), hi = hi.cwiseMax(p.r);
   const double extent = (hi - lo).maxCoeff();
-  // No more cells per side than (2 N)^(1/3) + 1, whatever the extent.
-  const double cap = std::floor(std::cbrt(2.0 * double(N))) + 1;
+  // No more cells per side than the smallest c with c^3 >= 2 N, whatever the extent (counted,
+  // not std::cbrt, whose last bit differs between C libraries and would change the cells).
+  double cap = 1;
+  while (cap * cap * cap < 2.0 * double(N)) cap += 1;
   n_ = int(std::clamp(std::floor(extent / min_side), 1.0, cap));
   const double side = std::max(extent / n_, min_side);
   const std::size_t cells = std::size_t(n_) * n_ * n_;
