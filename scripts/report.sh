@@ -29,7 +29,11 @@ run fig5-long-equilibration --out "$results/long.json" "$@"
 echo "== fig5-overlay" >&2                # Fig. 5: long (solid) and short (dashed) overlaid
 "$bin" report "$results/long.json" "$results/short.json" --plots "$figures/fig5-overlay" --quiet "$@"
 
-# docs/student-projects.md (the paper's Appendix B)
+# docs/student-projects.md (the paper's Appendix B): gravity, a floor, drag
 run gravity-floor-bounce "$@"            # an attractive swarm bouncing on a floor under gravity
 run drag-damped-swarm "$@"               # mass-proportional drag: damped oscillators about the CM
 run drag-one-particle "$@"               # drag on one particle: v0 exp(-b t / m)
+# Appendix B walls and contacts (docs/student-projects.md)
+run moving-wall-cycle "$@"               # P-V loop of a compress-expand cycle, energy books
+run hot-wall "$@"                        # a cold gas warmed by a wall at Tw
+run hard-spheres-gas "$@"                # hard spheres: energy, P and T

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "plotting/decimate.h"
+#include "walls_figures.h"
 #include "swarm/analytic.h"
 #include "swarm/fit.h"
 
@@ -384,6 +385,8 @@ std::vector<NamedFigure> run_figures(const RunRecord& r) {
     out.push_back(floor_figure(r, time));
   if ((r.preset.floor || r.preset.drag) && r.samples.size() >= 2)
     out.push_back(energy_books_figure(r, time));
+  if (auto pv = pv_loop_figure(r)) out.push_back(std::move(*pv));
+  if (auto speeds = speed_histogram_figure(r)) out.push_back(std::move(*speeds));
   return out;
 }
 

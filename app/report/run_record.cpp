@@ -27,14 +27,18 @@ swarm::RunSummary summary_from(const json& j) {
   return s;
 }
 
+/// The speeds are worth a figure where something drives them towards the Maxwellian.
+bool checks_speeds(const swarm::Preset& p) { return p.wall_temperature || p.sphere_radius; }
+
 }  // namespace
 
 RunRecord record_of(const swarm::Preset& preset, swarm::SideBySide& runs) {
   swarm::Run& run = runs.primary();
-  RunRecord r{preset, run.summary(), run.samples(), run.stages(), {}};
+  RunRecord r{preset, run.summary(), run.samples(), run.stages(), {}, {}};
   for (const auto& track : runs.tracks())
     r.comparisons.push_back({std::string(swarm::name_of(track.method)),
                              track.run->summary().energy_drift, track.samples});
+  if (checks_speeds(preset)) r.final_speeds = swarm::check_speeds(run.engine().system());
   return r;
 }
 
@@ -71,6 +75,15 @@ RecordRead read_result_file(const std::string& path) {
               {number(x.at("t")), number(x.at("E")), number(x.at("position_error"))});
         r.comparisons.push_back(std::move(track));
       }
+    if (checks_speeds(r.preset) && j.contains("final")) {
+      swarm::System final_state;
+      for (const json& x : j.at("final").at("particles"))
+        final_state.particles.push_back(
+            {number(x.at("m")),
+             {number(x.at("r")[0]), number(x.at("r")[1]), number(x.at("r")[2])},
+             {number(x.at("v")[0]), number(x.at("v")[1]), number(x.at("v")[2])}});
+      r.final_speeds = swarm::check_speeds(final_state);
+    }
     return {std::move(r), {}};
   } catch (const json::exception& e) {
     return {std::nullopt,

@@ -2,11 +2,13 @@
 // Everything a report draws from one run, whether the run just finished in this process or
 // was saved earlier as RESULT.json (so that two saved runs can be overlaid without re-running).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "swarm/preset.h"
 #include "swarm/side_by_side.h"
+#include "swarm/speed_distribution.h"
 
 namespace swarmlab::report {
 
@@ -22,6 +24,8 @@ struct RunRecord {
   std::vector<swarm::Sample> samples;
   std::vector<swarm::Stage> stages;
   std::vector<ComparisonTrack> comparisons;  ///< measured against preset.method
+  /// With a hot wall or hard spheres: the final speeds against the Maxwellian.
+  std::optional<swarm::SpeedCheck> final_speeds;
 };
 
 RunRecord record_of(const swarm::Preset& preset, swarm::SideBySide& runs);

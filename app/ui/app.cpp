@@ -141,6 +141,9 @@ void draw_controls(AppState& s) {
   section("Container", bool(s.preset.container_radius), draw_container_panel);
   section("Gravity, floor, drag", s.preset.gravity || s.preset.floor || s.preset.drag,
           draw_forces_panel);
+  section("Walls and spheres",
+          !s.preset.wall_moves.empty() || s.preset.wall_temperature || s.preset.sphere_radius,
+          draw_walls_panel);
   section("Simulation", true, draw_simulation_panel);
   section("View", false, draw_view_panel);
 }
@@ -401,8 +404,11 @@ void App::build_particles() {
     lo = std::min(lo, q);
     hi = std::max(hi, q);
     // Spheres of one density: the radius goes as the cube root of the mass.
-    particles_[i] = {float(p.r.x()), float(p.r.y()), float(p.r.z()),
-                     base * float(std::cbrt(p.m * inverse_heaviest)), s.colour_scale.colour(q)};
+    // Hard spheres are drawn at their true radius, so contacts look like contacts.
+    const float radius = s.preset.sphere_radius ? float(*s.preset.sphere_radius)
+                                                : base * float(std::cbrt(p.m * inverse_heaviest));
+    particles_[i] = {float(p.r.x()), float(p.r.y()), float(p.r.z()), radius,
+                     s.colour_scale.colour(q)};
   }
   s.colour_scale.follow(lo, hi);
 

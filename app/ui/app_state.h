@@ -86,7 +86,7 @@ struct FrameStats {
 };
 
 /// Which part of the controls an edit came from, to show a refusal next to it.
-enum class Section { none, scenario, system, container, simulation, forces };
+enum class Section { none, scenario, system, container, simulation, forces, walls };
 
 struct AppState {
   std::unique_ptr<PresetStore> store;

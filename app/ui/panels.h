@@ -11,6 +11,8 @@ void draw_system_panel(AppState& state);
 void draw_container_panel(AppState& state);
 /// Gravity, a floor and drag (Appendix B).
 void draw_forces_panel(AppState& state);
+/// Appendix B: a moving or hot wall, and particles as hard spheres.
+void draw_walls_panel(AppState& state);
 void draw_simulation_panel(AppState& state);
 void draw_view_panel(AppState& state);
 /// The live plots (right-hand panel).

@@ -9,6 +9,7 @@
 
 #include "swarm/orbit_ahead.h"
 #include "swarm/regime.h"
+#include "swarm/speed_distribution.h"
 
 namespace swarmlab {
 namespace {
@@ -51,12 +52,24 @@ ImU32 with_alpha(ImU32 colour, float alpha) {
   return (colour & ~IM_COL32_A_MASK) | (ImU32(a) << IM_COL32_A_SHIFT);
 }
 
+/// A hot wall's colour: red when it is hotter than the gas, blue when colder, white when the
+/// two agree; the ratio Tw / T sets how far (fully saturated at a factor of 4).
+ImU32 wall_temperature_colour(double Tw, double T_gas) {
+  const double x = T_gas > 0 ? std::clamp(std::log(Tw / T_gas) / std::log(4.0), -1.0, 1.0) : 1.0;
+  const auto mix = [x](int neutral, int hot, int cold) {
+    return int(neutral + (x > 0 ? x * (hot - neutral) : -x * (cold - neutral)));
+  };
+  return IM_COL32(mix(235, 255, 70), mix(235, 70, 140), mix(235, 40, 255), 0);
+}
+
 /// Latitude and longitude circles; the far half fainter than the near half, plus the outline,
 /// so that the sphere reads as glass around the swarm.
-void draw_container(const Painter& paint, double radius) {
+/// `rgb` tints the glass: pale blue for a plain wall, a hot wall's colour for its temperature.
+void draw_container(const Painter& paint, double radius, ImU32 rgb = IM_COL32(150, 195, 240, 0)) {
   const float R = float(radius);
   const Vec3f eye = paint.camera.eye();
-  const ImU32 near_colour = IM_COL32(150, 195, 240, 110), far_colour = IM_COL32(150, 195, 240, 40);
+  auto alpha = [rgb](int a) { return (rgb & ~IM_COL32_A_MASK) | (ImU32(a) << IM_COL32_A_SHIFT); };
+  const ImU32 near_colour = alpha(110), far_colour = alpha(40);
   constexpr int kSegments = 72;
   auto circle_segments = [&](auto point_at) {
     for (int k = 0; k < kSegments; ++k) {
@@ -92,9 +105,8 @@ void draw_container(const Painter& paint, double radius) {
     }
     std::vector<ImVec2> screen;
     for (const Vec3f& p : outline) screen.push_back(paint.at(paint.project(p)));
-    paint.draw->AddConvexPolyFilled(screen.data(), int(screen.size()) - 1,
-                                    IM_COL32(120, 170, 230, 14));
-    paint.path(outline, IM_COL32(160, 205, 250, 230), 2.0f);
+    paint.draw->AddConvexPolyFilled(screen.data(), int(screen.size()) - 1, alpha(14));
+    paint.path(outline, alpha(230), 2.0f);
   }
 }
 
@@ -232,7 +244,12 @@ void draw_scene_overlay(AppState& state) {
   const float font = ImGui::GetFontSize();
 
   if (state.view.container)
-    if (const auto R = state.run->primary().engine().container_radius()) draw_container(paint, *R);
+    if (const auto R = state.run->primary().engine().container_radius()) {
+      if (const auto Tw = state.preset.wall_temperature)
+        draw_container(paint, *R, wall_temperature_colour(*Tw, swarm::kinetic_temperature(s)));
+      else
+        draw_container(paint, *R);
+    }
   draw_springs(paint, s, state.view.springs);
   if (state.preset.floor)
     draw_floor(paint, state.preset.floor->z, swarm::cm_position(s), state.scene_radius);

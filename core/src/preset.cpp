@@ -245,11 +245,87 @@ void parse_forces(const Fields& f, Preset& p) {
   }
 }
 
+// [Appendix B walls and contacts] ---------------------------------------------------------
+
+constexpr std::size_t kMaxWallMoves = 1000;
+/// Wall radii, speeds and temperatures stay far inside a double's range (the energies a
+/// moving or hot wall gives are of order M u^2 and N Tw).
+constexpr double kLargestWallNumber = 1e100;
+
+/// container.moves and container.wall_temperature.
+void parse_wall_model(const Fields& c, Preset& p) {
+  if (c.has("moves")) {
+    const json& list = c.at("moves");
+    if (!list.is_array() || list.empty())
+      fail("container.moves", "must be a list of {\"to\": radius, \"speed\": u}, at least one");
+    require(list.size() <= kMaxWallMoves, "container.moves",
+            "must hold at most " + std::to_string(kMaxWallMoves) + " moves");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const Fields m(list[i], "container.moves[" + std::to_string(i) + "]", {"to", "speed"});
+      WallMove w;
+      w.to = m.number("to");
+      require(w.to > 0 && w.to <= kLargestWallNumber, m.path("to"), "must be in (0, 1e100]");
+      w.speed = m.number("speed");
+      require(w.speed > 0 && w.speed <= kLargestWallNumber, m.path("speed"),
+              "must be in (0, 1e100] (the wall's radial speed, length per time)");
+      p.wall_moves.push_back(w);
+    }
+  }
+  if (c.has("wall_temperature")) {
+    require(!c.has("moves"), "container.wall_temperature",
+            "a wall either moves (moves) or is held at a temperature (wall_temperature), "
+            "not both");
+    p.wall_temperature = c.number("wall_temperature");
+    require(*p.wall_temperature > 0 && *p.wall_temperature <= kLargestWallNumber,
+            "container.wall_temperature", "must be in (0, 1e100] (energy units, k_B = 1)");
+  }
+}
+
+/// The rules that tie the Appendix B keys to the rest of the preset.
+void check_walls_and_contacts(const Preset& p, long count) {
+  const bool appendix_b = !p.wall_moves.empty() || p.wall_temperature || p.sphere_radius;
+  if (p.collisions == CollisionMode::exact)
+    require(!appendix_b, "collisions",
+            "\"exact\" solves contact times with a fixed elastic wall only: moving and hot "
+            "walls and hard spheres use \"paper\"");
+  if (!p.wall_moves.empty())
+    require(!p.expansion, "expansion",
+            "the wall already moves (container.moves): give moves or an expansion, not both");
+  if (!p.sphere_radius) return;
+  const double a = *p.sphere_radius;
+  if (!p.container_radius) return;
+  double smallest = *p.container_radius;
+  for (std::size_t i = 0; i < p.wall_moves.size(); ++i) {
+    require(p.wall_moves[i].to > 2 * a, "container.moves[" + std::to_string(i) + "].to",
+            "must be > 2 * hard_spheres.radius (a sphere must fit inside)");
+    smallest = std::min(smallest, p.wall_moves[i].to);
+  }
+  require(*p.container_radius > 2 * a, "hard_spheres.radius",
+          "must be < container.radius / 2 (a sphere must fit inside)");
+  const double reach = *p.container_radius - a;  // the centres' room
+  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
+    for (std::size_t i = 0; i < list->size(); ++i)
+      require((*list)[i].r.norm() <= reach, "particles[" + std::to_string(i) + "].r",
+              "a sphere's centre must start within container.radius - hard_spheres.radius = " +
+                  format(reach));
+  } else {
+    require(std::get<SwarmSpec>(p.particles).position_radius <= reach,
+            "particles.position_radius",
+            "must be <= container.radius - hard_spheres.radius = " + format(reach) +
+                " (the spheres must start inside)");
+  }
+  // Random starts overlap; beyond about half of the volume the centres can hardly move.
+  const double fraction = double(count) * std::pow(a / (smallest - a), 3);
+  require(fraction <= 0.5, "hard_spheres.radius",
+          "the spheres would fill " + format(fraction) +
+              " of the volume their centres can reach (at most 0.5)");
+}
+
 Preset parse(const json& j) {
   const Fields f(j, "",
                  {"version", "name", "description", "J", "particles", "container", "method",
                   "collisions", "dt", "duration", "expansion", "sample_every", "compare",
-                  "gravity", "floor", "drag"});
+                  "gravity", "floor", "drag", "hard_spheres"});
   if (f.has("version"))
     require(f.at("version") == kPresetVersion, "version",
             "must be " + std::to_string(kPresetVersion) + " (the only preset version so far)");
@@ -268,9 +344,15 @@ Preset parse(const json& j) {
     fail("particles", "must be a list of particles or a generator object");
 
   if (f.has("container")) {
-    const Fields c(f.at("container"), "container", {"radius"});
+    const Fields c(f.at("container"), "container", {"radius", "moves", "wall_temperature"});
     p.container_radius = c.number("radius");
     require(*p.container_radius > 0, "container.radius", "must be > 0");
+    parse_wall_model(c, p);
+  }
+  if (f.has("hard_spheres")) {
+    const Fields h(f.at("hard_spheres"), "hard_spheres", {"radius"});
+    p.sphere_radius = h.number("radius");
+    require(*p.sphere_radius > 0, h.path("radius"), "must be > 0");
   }
 
   const std::string method = f.text("method", "analytic");
@@ -384,6 +466,7 @@ void check_consistency(const Preset& p) {
               "must be <= container.radius (particles must start inside the container)");
   }
   check_forces_consistency(p, count);
+  check_walls_and_contacts(p, count);
   for (Method m : p.compare)
     require(!is_pairwise(m) || count <= kMaxPairwiseParticles, "compare",
             "\"" + std::string(name_of(m)) + "\" sums over every pair: use at most " +
@@ -425,6 +508,14 @@ json to_json(const Preset& p) {
     j["particles"] = g;
   }
   j["container"] = p.container_radius ? json{{"radius", *p.container_radius}} : json(nullptr);
+  if (p.container_radius && !p.wall_moves.empty()) {
+    json moves = json::array();
+    for (const WallMove& m : p.wall_moves) moves.push_back({{"to", m.to}, {"speed", m.speed}});
+    j["container"]["moves"] = moves;
+  }
+  if (p.container_radius && p.wall_temperature)
+    j["container"]["wall_temperature"] = *p.wall_temperature;
+  if (p.sphere_radius) j["hard_spheres"] = {{"radius", *p.sphere_radius}};
   j["method"] = std::string(name_of(p.method));
   j["collisions"] = std::string(name_of(p.collisions));
   j["dt"] = p.dt;
@@ -605,6 +696,9 @@ RunPlan run_plan(const Preset& p) {
   if (p.gravity) plan.engine.forces.gravity = *p.gravity;
   plan.engine.forces.drag = p.drag;
   plan.engine.floor = p.floor;
+  plan.engine.wall_moves = p.wall_moves;
+  plan.engine.wall_temperature = p.wall_temperature;
+  plan.engine.sphere_radius = p.sphere_radius;
   plan.dt = p.dt;
   plan.steps = step_count(p);
   plan.sample_every = p.sample_every.value_or(std::max(1L, plan.steps / 2000));

@@ -3,8 +3,10 @@
 
 #include "swarm/engine.h"
 #include "swarm/flow.h"
+#include "swarm/hard_spheres.h"
 #include "swarm/integrators.h"
 #include "swarm/regime.h"
+#include "swarm/thermal_wall.h"
 
 namespace swarm {
 namespace {
@@ -19,6 +21,14 @@ class ReferenceEngine final : public Engine {
       : system_(std::move(initial)), config_(config) {
     if (config.collisions == CollisionMode::exact && config.method != Method::analytic)
       throw std::invalid_argument("exact collisions need the analytic method");
+    const bool appendix_b =
+        !config.wall_moves.empty() || config.wall_temperature || config.sphere_radius;
+    if (config.collisions == CollisionMode::exact && appendix_b)
+      throw std::invalid_argument(
+          "moving and thermal walls and hard spheres need paper collisions");
+    if (!config.wall_moves.empty() && config.container_radius)
+      path_.emplace(*config.container_radius, config.wall_moves);
+    if (config.sphere_radius) spheres_.emplace(*config.sphere_radius);
   }
 
   WallTally step(double dt) override {
@@ -31,12 +41,17 @@ class ReferenceEngine final : public Engine {
     } else {
       step_with_exact_hits(dt, tally);
     }
+    if (spheres_) spheres_->collide(system_.particles);
+    ++steps_;
     return tally;
   }
 
   const System& system() override { return system_; }
   double time() const override { return system_.t; }
-  void set_container_radius(std::optional<double> R) override { config_.container_radius = R; }
+  void set_container_radius(std::optional<double> R) override {
+    config_.container_radius = R;
+    path_.reset();
+  }
   std::optional<double> container_radius() const override { return config_.container_radius; }
   const EngineConfig& config() const override { return config_; }
 
@@ -53,6 +68,10 @@ class ReferenceEngine final : public Engine {
   /// Appendix A: a particle whose position at t + dt would lie outside the wall, and that is
   /// moving outward now, is reflected now, at its position at t. The summed impulses reach
   /// the centre-of-mass velocity because the step recomputes it from the particles.
+  ///
+  /// A moving wall is checked at its radius at t + dt and moves at its mean velocity u over
+  /// the step; a particle leaves when it moves outward relative to the wall. A hard sphere
+  /// reaches the wall when its centre is at R - a.
   void reflect_predicted_leavers(double dt, WallTally& tally) {
     // The prediction is the method's own step, taken on a copy before anyone is reflected.
     System predicted = system_;
@@ -63,12 +82,23 @@ class ReferenceEngine final : public Engine {
       move(predicted, dt, unused);
     }
     if (config_.container_radius) {
-      const double R2 = *config_.container_radius * *config_.container_radius;
+      const double R_next = path_ ? path_->radius_at(system_.t + dt) : *config_.container_radius;
+      const double u = path_ ? (R_next - *config_.container_radius) / dt : 0;
+      const double reach = R_next - config_.sphere_radius.value_or(0.0);
+      const double R2 = reach * reach;
       for (std::size_t i = 0; i < system_.particles.size(); ++i) {
         auto& p = system_.particles[i];
-        if (predicted.particles[i].r.squaredNorm() > R2 && moving_outward(p))
+        if (!(predicted.particles[i].r.squaredNorm() > R2)) continue;
+        if (config_.wall_temperature) {
+          if (moving_outward(p))
+            reemit_from_thermal_wall(p, *config_.wall_temperature, {steps_, i}, tally);
+        } else if (path_) {
+          if (p.v.dot(p.r.normalized()) > u) reflect_off_moving_wall(p, u, tally);
+        } else if (moving_outward(p)) {
           reflect_at_wall(p, tally);
+        }
       }
+      if (path_) config_.container_radius = R_next;
     }
     // The floor is a second wall, judged on the same prediction (after the sphere's reflection,
     // with the velocity the particle now has).
@@ -150,6 +180,9 @@ class ReferenceEngine final : public Engine {
 
   System system_;
   EngineConfig config_;
+  std::optional<WallPath> path_;        ///< a moving wall's radius over time
+  std::optional<HardSpheres> spheres_;  ///< contacts between the particles
+  std::uint64_t steps_ = 0;             ///< steps taken: the thermal wall's draws are keyed on it
 };
 
 }  // namespace

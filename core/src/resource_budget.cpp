@@ -29,6 +29,29 @@ bool off_the_fast_engine(const Preset& p) {
   return forces && p.method == Method::analytic;
 }
 
+// [Appendix B walls and contacts] A moving or hot wall runs on the reference engine, which
+// steps (and, for the prediction, copies) every particle in every step; hard spheres also sort
+// them into cells and test their neighbours. Costs per particle-step relative to the fast
+// engine's in a container (1.85 ns), from bench/walls_bench.cpp: the reference engine ~21 ns,
+// hard spheres ~290 ns per particle-step (N = 40,000).
+constexpr double kReferenceWallCost = 10;
+constexpr double kHardSphereCost = 150;
+constexpr double kCellGridBytesPerParticle = 32;  // cell, slot and two cell starts
+
+double particle_step_weight(const Preset& p) {
+  if (p.sphere_radius) return kHardSphereCost;
+  if (off_the_fast_engine(p)) return kReferenceParticleStepCost;
+  if (!p.wall_moves.empty() || p.wall_temperature) return kReferenceWallCost;
+  return 1;
+}
+
+/// Why a particle-step of p costs particle_step_weight(p) times the fast engine's.
+const char* particle_step_weight_reason(const Preset& p) {
+  if (p.sphere_radius) return "hard-sphere contacts";
+  if (off_the_fast_engine(p)) return "gravity, a floor or drag: the reference engine";
+  return "a moving or hot wall";
+}
+
 double force_evaluations_per_step(Method m) {
   switch (m) {
     case Method::analytic:
@@ -92,14 +115,14 @@ ResourceEstimate estimate_resources(const Preset& p, bool with_output_files) {
   e.samples = std::floor(e.steps / double(plan.sample_every)) + 2;
 
   e.particle_bytes = e.particles * (kInitialBytesPerParticle + e.runs * kEngineBytesPerParticle);
+  if (p.sphere_radius) e.particle_bytes += e.particles * e.runs * kCellGridBytesPerParticle;
   e.sample_bytes =
       e.samples * (e.runs * kSampleBytes + double(p.compare.size()) * kComparisonSampleBytes);
   if (with_output_files)
     e.output_bytes =
         e.particles * kOutputBytesPerParticle + e.samples * e.runs * kOutputBytesPerSample;
 
-  e.particle_steps =
-      e.particles * e.steps * e.runs * (off_the_fast_engine(p) ? kReferenceParticleStepCost : 1);
+  e.particle_steps = e.particles * e.steps * e.runs * particle_step_weight(p);
   const double pairs = e.particles * (e.particles - 1) / 2;
   double evaluations = force_evaluations_per_step(p.method);
   for (Method m : p.compare) evaluations += force_evaluations_per_step(m);
@@ -138,13 +161,15 @@ std::string resource_error(const Preset& p, const ResourceLimits& limits, bool w
            " particles with the pairwise methods need " + amount(e.pair_evaluations) +
            " pair forces (limit " + amount(limits.pair_evaluations) +
            "); shorten the run, raise dt or use fewer particles";
+  const double weight = particle_step_weight(p);
+  const std::string weighted =
+      weight == 1 ? ""
+                  : " (x" + amount(weight) +
+                        ": " + particle_step_weight_reason(p) +
+                        " cost that much more per particle-step)";
   if (e.particle_steps > limits.particle_steps)
     return run_field + ": " + amount(e.particles) + " particles x " + amount(e.steps) + " steps" +
-           side_by_side +
-           (off_the_fast_engine(p) ? " x " + amount(kReferenceParticleStepCost) +
-                                         " (gravity, a floor or drag: the reference engine)"
-                                   : std::string()) +
-           " = " + amount(e.particle_steps) + " particle-steps (limit " +
+           side_by_side + weighted + " = " + amount(e.particle_steps) + " particle-steps (limit " +
            amount(limits.particle_steps) + "); shorten the run, raise dt or use fewer particles";
   return {};
 }

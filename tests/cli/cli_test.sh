@@ -38,6 +38,10 @@ expect_error dt "{\"J\": 1, \"particles\": [{\"m\": 1, \"r\": [0,0,0], \"v\": [0
 expect_error outside "{$good, \"duration\": 1, \"container\": {\"radius\": 0.4}}" 'particles[0].r: starts outside the container'
 expect_error method "{$good, \"duration\": 1, \"method\": \"leapfrog\"}" 'method: unknown method "leapfrog"'
 expect_error huge "{$good, \"duration\": 1e300}" 'duration: must give between 1 and 1e9 steps'
+# Appendix B walls and contacts
+expect_error wall-speed "{$good, \"duration\": 1, \"container\": {\"radius\": 1, \"moves\": [{\"to\": 0.8, \"speed\": 0}]}}" 'container.moves[0].speed: must be in (0, 1e100]'
+expect_error hot-and-moving "{$good, \"duration\": 1, \"container\": {\"radius\": 1, \"wall_temperature\": 1, \"moves\": [{\"to\": 0.8, \"speed\": 1}]}}" 'container.wall_temperature: a wall either moves'
+expect_error sphere-too-big "{$good, \"duration\": 1, \"container\": {\"radius\": 1}, \"hard_spheres\": {\"radius\": 0.6}}" 'hard_spheres.radius: must be < container.radius / 2'
 
 # A missing file is one clear message too.
 "$bin" run "$work/nope.json" 2>"$work/stderr" && bad "missing file: exit 0" || {

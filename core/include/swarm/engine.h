@@ -11,6 +11,7 @@
 #include "swarm/method.h"
 #include "swarm/system.h"
 #include "swarm/wall.h"
+#include "swarm/wall_motion.h"
 
 namespace swarm {
 
@@ -29,6 +30,12 @@ struct EngineConfig {
   /// reference engine (fast_engine_applies is false).
   ExternalForces forces;
   std::optional<Floor> floor;
+
+  // Walls that move or are hot, and particles that are hard spheres (Appendix B; paper
+  // collisions only): swarm/wall_motion.h, swarm/thermal_wall.h, swarm/hard_spheres.h.
+  std::vector<WallMove> wall_moves;        ///< the wall's path from container_radius at t = 0
+  std::optional<double> wall_temperature;  ///< a thermal wall at this T (energy units, k_B = 1)
+  std::optional<double> sphere_radius;     ///< hard spheres of this radius (length)
 };
 
 class Engine {
@@ -40,7 +47,7 @@ class Engine {
   virtual const System& system() = 0;
   virtual double time() const = 0;
   /// Moves the wall discontinuously (the expansion protocol). No particle is touched, so no
-  /// work is done on the system.
+  /// work is done on the system. A wall that was moving (EngineConfig::wall_moves) stops.
   virtual void set_container_radius(std::optional<double> R) = 0;
   virtual std::optional<double> container_radius() const = 0;
   virtual const EngineConfig& config() const = 0;

@@ -33,6 +33,12 @@ struct Preset {
   std::optional<Vec3> gravity;  ///< "gravity": [gx, gy, gz]
   std::optional<Floor> floor;   ///< "floor": {"z": h, "restitution": e}
   std::optional<Drag> drag;     ///< "drag": {"gamma": g} or {"b": b, "particles": [i, ...]}
+
+  // Appendix B walls and contacts: "container": {"moves": [...]} or {"wall_temperature": Tw},
+  // and "hard_spheres": {"radius": a} (swarm/wall_motion.h, thermal_wall.h, hard_spheres.h).
+  std::vector<WallMove> wall_moves;
+  std::optional<double> wall_temperature;
+  std::optional<double> sphere_radius;
 };
 
 /// Either a valid preset or one message naming the field and the rule it breaks,

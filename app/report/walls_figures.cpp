@@ -1,0 +1,91 @@
+#include "walls_figures.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "swarm/run.h"
+#include "swarm/thermometry.h"
+#include "swarm/wall.h"
+
+namespace swarmlab::report {
+
+std::optional<NamedFigure> pv_loop_figure(const RunRecord& r) {
+  if (r.preset.wall_moves.empty() || r.samples.size() < 3) return std::nullopt;
+  // Each sample's P is over a few steps and a few hits: the loop is drawn with the running
+  // wall average over 3 % of the run (swarm::windowed_wall_averages), at the sample's volume.
+  const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(r.samples);
+  const double half_window = 0.015 * (r.samples.back().t - r.samples.front().t);
+  const std::vector<swarm::WallReading> running =
+      swarm::windowed_wall_averages(intervals, half_window, half_window);
+  // Split where the wall is innermost: the way in and the way out in their own colours.
+  std::size_t innermost = 0;
+  for (std::size_t i = 0; i < running.size(); ++i)
+    if (r.samples[i + 1].R < r.samples[innermost + 1].R) innermost = i;
+  Series in, out;
+  in.name = "squeezing: the wall moving in";
+  in.colour = 0;
+  out.name = "letting out: the wall moving out";
+  out.colour = 1;
+  for (std::size_t i = 0; i < running.size(); ++i) {
+    Series& branch = i <= innermost ? in : out;
+    branch.x.push_back(swarm::sphere_volume(r.samples[i + 1].R));
+    branch.y.push_back(running[i].P);
+  }
+  if (innermost + 1 < running.size()) {  // join the branches
+    out.x.insert(out.x.begin(), in.x.back());
+    out.y.insert(out.y.begin(), in.y.back());
+  }
+  Panel p{{"volume V", "length³"}, {"pressure P", "momentum / (length² time)"}};
+  p.y.include_zero = true;
+  p.series.push_back(in);
+  if (!out.x.empty()) p.series.push_back(out);
+  // A free gas (J = 0) moved slowly follows the adiabat P V^(5/3) = P0 V0^(5/3), with P0 the
+  // ideal-gas pressure 2 KE0 / (3 V0) of its start.
+  if (r.preset.J == 0) {
+    const double V0 = swarm::sphere_volume(r.samples.front().R);
+    const double P0 = 2 * r.samples.front().KE / (3 * V0);
+    Series adiabat;
+    adiabat.name = "adiabat P V^(5/3) = const (a slow, reversible move)";
+    adiabat.colour = 7;
+    adiabat.dashed = true;
+    std::vector<double> volumes = in.x;
+    volumes.insert(volumes.end(), out.x.begin(), out.x.end());
+    for (double V : volumes) {
+      adiabat.x.push_back(V);
+      adiabat.y.push_back(P0 * std::pow(V0 / V, 5.0 / 3.0));
+    }
+    p.series.push_back(adiabat);
+    p.note = "running means over 3% of the run; the gas ends warmer than it began";
+  }
+  return NamedFigure{"pv-loop", Figure{"P-V loop of a moving wall", r.preset.name, {p}}};
+}
+
+std::optional<NamedFigure> speed_histogram_figure(const RunRecord& r) {
+  if (!r.final_speeds || r.final_speeds->n == 0 || r.final_speeds->T <= 0) return std::nullopt;
+  const swarm::SpeedCheck& c = *r.final_speeds;
+  const swarm::SpeedHistogram& h = c.histogram;
+  const double width = h.x_max / double(h.density.size());
+  Series measured, maxwell;
+  measured.name = "the particles at the end";
+  measured.mark = Mark::line_and_points;
+  measured.colour = 0;
+  maxwell.name = "Maxwell distribution at their T";
+  maxwell.colour = 3;
+  maxwell.dashed = true;
+  for (std::size_t b = 0; b < h.density.size(); ++b) {
+    const double x = (double(b) + 0.5) * width;
+    measured.x.push_back(x), measured.y.push_back(h.density[b]);
+    maxwell.x.push_back(x), maxwell.y.push_back(h.maxwell[b]);
+  }
+  Panel p{{"speed v √(m/T)", ""}, {"probability density", ""}};
+  p.y.include_zero = true;
+  p.series = {measured, maxwell};
+  char note[200];
+  std::snprintf(note, sizeof note,
+                "T = %.4g, N = %zu; Kolmogorov-Smirnov √N D = %.3g (< 1.63: Maxwellian at 1 %%)",
+                c.T, c.n, std::sqrt(double(c.n)) * c.ks_distance);
+  p.note = note;
+  return NamedFigure{"speeds", Figure{"Speeds at the end against the Maxwellian", r.preset.name, {p}}};
+}
+
+}  // namespace swarmlab::report
