@@ -39,6 +39,9 @@ class ReferenceEngine final : public Engine {
   void set_container_radius(std::optional<double> R) override { config_.container_radius = R; }
   std::optional<double> container_radius() const override { return config_.container_radius; }
   const EngineConfig& config() const override { return config_; }
+  std::unique_ptr<Engine> clone() const override {
+    return std::make_unique<ReferenceEngine>(*this);
+  }
 
  private:
   /// Appendix A: a particle whose position at t + dt would lie outside the wall, and that is
