@@ -10,6 +10,7 @@
 #include "panels.h"
 #include "scene_overlay.h"
 #include "shortcuts.h"
+#include "timeline_strip.h"
 #include "swarm/system.h"
 
 namespace swarmlab {
@@ -22,6 +23,9 @@ constexpr const char* kFirstPreset = "fig1-four-masses.json";
 /// rather than the window freezing.
 constexpr double kStepBudgetMs = 20;
 constexpr double kFixedFrameSeconds = 1.0 / 60;
+/// A fast-forward or seek steps for this long in a frame: as fast as the machine allows while
+/// the window still answers (about 20 frames a second).
+constexpr double kTravelBudgetMs = 40;
 
 double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -90,6 +94,10 @@ void App::update(double real_seconds) {
 
 void App::advance_simulation(double seconds) {
   AppState& s = state_;
+  if (s.travel.active()) {  // a seek or fast-forward, a frame's budget at a time
+    continue_travel(s, kTravelBudgetMs);
+    return;
+  }
   long steps = 0;
   double wanted = 0;
   if (s.step_once) {
@@ -197,7 +205,10 @@ void App::layout_windows() {
     ImGui::End();
   }
   s.layout.resize_panels = false;
-  s.layout.view = {left, top, std::max(right - left, 1.0f), std::max(height, 1.0f)};
+  // The timeline strip (timeline_strip.cpp) takes the bottom of the view.
+  const float strip = timeline_strip_height();
+  s.layout.view = {left, top, std::max(right - left, 1.0f), std::max(height - strip, 1.0f)};
+  draw_timeline_strip(s, left, top + s.layout.view.height, s.layout.view.width, strip);
 
   // Over the 3D view: the transport bar along the top, the read-outs below it.
   const ImGuiWindowFlags overlay = ImGuiWindowFlags_NoDecoration |
