@@ -110,8 +110,6 @@ void draw_transport_bar(AppState& state) {
   if (ImGui::Button("Step")) state.step_once = true, state.playing = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("S: one step of dt");
   ImGui::SameLine();
-  draw_time_buttons(state);
-  ImGui::SameLine();
   if (ImGui::Button("Reset")) state.restart();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("R: back to t = 0");
   ImGui::SameLine();
@@ -122,6 +120,8 @@ void draw_transport_bar(AppState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
 
+  draw_time_buttons(state);
+  ImGui::SameLine();
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
   const double rate = swarm::omega_of(k);
