@@ -13,6 +13,7 @@
 
 using namespace swarm;
 using testing::crowded_swarm;
+using testing::shipped_preset;
 
 namespace {
 
@@ -94,15 +95,6 @@ RunPlan plan_for(Method method, std::optional<double> R, double dt, long steps) 
   plan.sample_every = 50;
   plan.stages_by_hand = true;
   return plan;
-}
-
-Preset shipped_preset(const std::string& name) {
-  std::ifstream in(std::string(SWARM_PRESET_DIR) + "/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  const PresetParse parsed = parse_preset(text.str());
-  REQUIRE_MESSAGE(parsed.preset, parsed.error);
-  return *parsed.preset;
 }
 
 }  // namespace
