@@ -4,6 +4,7 @@
 // taken to the same time; state().t_reached; the End key fast-forwards with progress shown
 // in state().fast_forward, and finishes at the run's end. Frames are counted, not
 // milliseconds: the machine may be loaded.
+import { join } from 'node:path';
 import * as harness from './harness.mjs';
 
 const { check, shipped, openApp, launchBrowser, runSuite, pageErrors, consoleErrors } = harness;
@@ -30,7 +31,8 @@ async function main(url) {
   const at125 = await api(() => window.swarmlab.positions());
   await api(() => window.swarmlab.seek(6.0));
   const again6 = await api(() => window.swarmlab.positions());
-  check('seek back then forward lands on identical positions', tBack === 1.25 && same(at6, again6));
+  check('seek(1.25) back returns the time reached', Math.abs(tBack - 1.25) < 1e-9, `t = ${tBack}`);
+  check('seek back then forward lands on identical positions', same(at6, again6));
   const s = await api(() => window.swarmlab.state());
   check('state().t_reached is the furthest time computed', Math.abs(s.t_reached - 6.0) < 1e-9 && s.t === tForward && !s.playing,
         `t_reached ${s.t_reached}, t ${s.t}, playing ${s.playing}`);
@@ -75,7 +77,10 @@ async function main(url) {
   let sawProgress = null, endState = null;
   for (let i = 0; i < 2000; i++) {
     const st = await api(() => window.swarmlab.state());
-    if (st.fast_forward && st.fast_forward.progress > 0 && st.fast_forward.progress < 1) sawProgress = sawProgress ?? st.fast_forward.progress;
+    if (st.fast_forward && st.fast_forward.progress > 0 && st.fast_forward.progress < 1 && sawProgress === null) {
+      sawProgress = st.fast_forward.progress;
+      await page.screenshot({ path: join(harness.outDir, 'time-fast-forward.png') });
+    }
     if (!st.fast_forward && st.t > 0) { endState = st; break; }
     await framesPass(1);
   }
