@@ -62,8 +62,9 @@ long Timeline::seek(long target) {
 }
 
 long Timeline::step_of(double t) const {
+  // Clamped as a double: long is 32 bits in wasm.
   const double steps = std::round((t - t0_) / dt_);
-  return std::clamp(steps > 0 ? long(std::min(steps, 1e15)) : 0L, 0L, end_step());
+  return steps > 0 ? long(std::min(steps, double(end_step()))) : 0L;
 }
 
 void Timeline::apply(const TimelineAction& a) {
