@@ -16,17 +16,9 @@
 using namespace swarm;
 using doctest::Approx;
 using testing::crowded_swarm;
+using testing::shipped_preset;
 
 namespace {
-
-Preset shipped_preset(const std::string& name) {
-  std::ifstream in(std::string(SWARM_PRESET_DIR) + "/" + name);
-  std::stringstream text;
-  text << in.rdbuf();
-  const PresetParse parsed = parse_preset(text.str());
-  REQUIRE_MESSAGE(parsed.preset, parsed.error);
-  return *parsed.preset;
-}
 
 double max_state_difference(const System& a, const System& b) {
   double worst = 0;

@@ -15,6 +15,7 @@
 #include "swarm/diagnostics.h"
 #include "swarm/engine.h"
 #include "swarm/initial_conditions.h"
+#include "swarm/preset.h"
 #include "swarm/system.h"
 
 namespace swarm::testing {
@@ -93,6 +94,16 @@ inline std::vector<std::pair<std::string, std::string>> shipped_preset_texts() {
     presets.emplace_back(entry.path().filename().string(), text.str());
   }
   return presets;
+}
+
+/// A shipped preset (assets/presets/NAME), parsed; the test stops if it does not validate.
+inline Preset shipped_preset(const std::string& name) {
+  std::ifstream in(std::string(SWARM_PRESET_DIR) + "/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  const PresetParse parsed = parse_preset(text.str());
+  REQUIRE_MESSAGE(parsed.preset, parsed.error);
+  return *parsed.preset;
 }
 
 /// Steps `engine`, started from s, 5,000 times (dt = 1e-3) and checks that the momentum the

@@ -43,6 +43,11 @@ nlohmann::json app_state_json(swarmlab::App& app) {
     panel["scroll"] = p.scroll;
     j["panels"].push_back(panel);
   }
+  // Time (web/js_time.cpp): the furthest time computed, and a fast-forward under way.
+  j["t_reached"] = double(s.run->timeline().reached()) * s.preset.dt;
+  j["fast_forward"] = s.travel.active() && s.travel.kind != swarmlab::TimeTravel::Kind::seek
+                          ? nlohmann::json{{"progress", s.travel.progress(s.run->step())}}
+                          : nlohmann::json(nullptr);
   return j;
 }
 

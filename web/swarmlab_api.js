@@ -4,6 +4,8 @@
 //   swarmlab.time()        the simulated time of the running preset (a number)
 //   swarmlab.state()       what the app shows and runs: { name, edited, playing, t, speed,
 //                          selected, ... } (web/README.md lists every field)
+//   swarmlab.seek(t)       moves the run to time t, back or forward; returns the time reached
+//   swarmlab.positions()   lab positions [[x, y, z], ...] of the first 10,000 particles
 //   swarmlab.preset()      the running preset, every edit included, as a JSON string
 //   swarmlab.load(json)    opens a preset (a JSON string, or an object); returns true, or, if
 //                          it fails validation or is larger than SwarmlabLink.maxPresetBytes
@@ -136,6 +138,12 @@
     frames: function () { return frames; },
     time: function () { check(); return Module.ccall('swarmlab_time', 'number', [], []); },
     state: function () { check(); return JSON.parse(Module.ccall('swarmlab_state', 'string', [], [])); },
+    seek: function (t) {
+      check();
+      if (typeof t !== 'number' || !isFinite(t)) throw new Error('swarmlab.seek(t): t must be a finite number');
+      return Module.ccall('swarmlab_seek', 'number', ['number'], [t]);
+    },
+    positions: function () { check(); return JSON.parse(Module.ccall('swarmlab_positions', 'string', [], [])); },
     preset: function () { check(); return presetText(2); },
     load: function (json) {
       check();

@@ -10,6 +10,7 @@
 #include "panels.h"
 #include "scene_overlay.h"
 #include "shortcuts.h"
+#include "timeline_strip.h"
 #include "swarm/system.h"
 
 namespace swarmlab {
@@ -22,6 +23,9 @@ constexpr const char* kFirstPreset = "fig1-four-masses.json";
 /// rather than the window freezing.
 constexpr double kStepBudgetMs = 20;
 constexpr double kFixedFrameSeconds = 1.0 / 60;
+/// A fast-forward or seek steps for this long in a frame: as fast as the machine allows while
+/// the window still answers (about 20 frames a second).
+constexpr double kTravelBudgetMs = 40;
 
 double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -90,6 +94,10 @@ void App::update(double real_seconds) {
 
 void App::advance_simulation(double seconds) {
   AppState& s = state_;
+  if (s.travel.active()) {  // a seek or fast-forward, a frame's budget at a time
+    continue_travel(s, kTravelBudgetMs);
+    return;
+  }
   long steps = 0;
   double wanted = 0;
   if (s.step_once) {
@@ -231,11 +239,14 @@ void App::layout_windows() {
   in.controls = s.layout.controls, in.plots = s.layout.plots;
   in.transport_height = s.layout.transport_height;
   in.readouts_height = s.layout.readouts_height;
-  in.bottom_strip_height = s.layout.bottom_strip_height;
+  in.bottom_strip_height = s.layout.bottom_strip_height = timeline_strip_height();
   const ScreenLayout l = screen_layout(in);
   s.layout.screen = l;
   s.layout.resize_panels = false;
   s.layout.view = {l.view.x, l.view.y, std::max(l.view.width, 1.0f), std::max(l.view.height, 1.0f)};
+  // The timeline strip (timeline_strip.cpp) under the view.
+  draw_timeline_strip(s, l.bottom_strip.x, l.bottom_strip.y, l.bottom_strip.width,
+                      l.bottom_strip.height);
 
   // Fingers need larger targets than a mouse: more padding in a touch or compact layout.
   const bool roomy = s.layout.touch || l.kind != LayoutKind::wide;

@@ -93,6 +93,7 @@ void AppState::revert_draft() {
 void AppState::restart() {
   run = std::make_unique<LiveRun>(preset);
   step_debt = 0;
+  travel = {};
   colour_scale = ColourScale{};
   const swarm::System& s = run->system();
   if (selected && *selected >= s.particles.size()) selected.reset();

@@ -14,6 +14,7 @@
 #include "live_run.h"
 #include "preset_store.h"
 #include "screen_layout.h"
+#include "time_travel.h"
 
 namespace swarmlab {
 
@@ -111,6 +112,7 @@ struct AppState {
   double speed = 1;        ///< simulated time per second of wall time
   double step_debt = 0;    ///< fractional steps carried to the next frame
   bool step_once = false;  ///< single step requested while paused
+  TimeTravel travel;       ///< a seek or fast-forward under way (time_travel.h)
   /// Frames run with a fixed wall-clock step and no time budget (--frames, screenshots), so
   /// that the picture does not depend on the machine's speed.
   bool fixed_frame_time = false;

@@ -10,11 +10,29 @@ namespace {
 
 constexpr std::size_t kTrailPoints = 600;
 
+/// The preset's plan, with stages by hand: "Expand now" ends a stage averaged like the
+/// protocol's.
+swarm::RunPlan plan_of(const swarm::Preset& preset) {
+  swarm::RunPlan plan = swarm::run_plan(preset);
+  plan.stages_by_hand = true;
+  return plan;
+}
+
+/// The timeline's snapshots may take this much memory: less in the browser (school
+/// Chromebooks).
+swarm::TimelineLimits limits_here() {
+  swarm::TimelineLimits limits;
+#ifdef __EMSCRIPTEN__
+  limits.snapshot_bytes = 96e6;
+#endif
+  return limits;
+}
+
 }  // namespace
 
 LiveRun::LiveRun(const swarm::Preset& preset)
     : preset_(preset),
-      runs_(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare) {
+      timeline_(swarm::initial_system(preset), plan_of(preset), preset.compare, limits_here()) {
   static long runs_made = 0;
   id_ = ++runs_made;
   // About 150 trail points per period (or per the same time when J <= 0).
@@ -26,11 +44,19 @@ LiveRun::LiveRun(const swarm::Preset& preset)
 long LiveRun::advance(long steps) {
   long taken = 0;
   // One step at a time, so that the trails get their points between steps.
-  while (taken < steps && runs_.advance(1) == 1) {
+  while (taken < steps && timeline_.advance(1) == 1) {
     if (++steps_since_trail_point_ >= trail_stride_) record_trails();
     ++taken;
   }
   return taken;
+}
+
+void LiveRun::jump_towards(long target) {
+  const long before = timeline_.step();
+  timeline_.jump_towards(target);
+  if (timeline_.step() == before) return;
+  for (Trail& trail : trails_) trail.points.clear();
+  record_trails();
 }
 
 void LiveRun::follow(const std::vector<std::size_t>& particles) {

@@ -109,8 +109,10 @@ void draw_container_panel(AppState& state) {
     const std::string label = "Expand now (R x " + std::to_string(factor).substr(0, 5) + ")";
     if (ImGui::Button(label.c_str())) state.run->expand_container(factor);
     help_marker(
-        "Grows the wall of the running system at once, outside the protocol. Reset "
-        "returns to the preset's radius.");
+        "Grows the wall of the running system at once (E). Outside the protocol's stages "
+        "(a fixed container, or after the last stage) it also ends a stage by hand, "
+        "averaged like the protocol's and plotted under Expansion: P-V point by point. "
+        "Reset returns to the preset's radius.");
   }
 }
 

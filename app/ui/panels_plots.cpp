@@ -132,10 +132,11 @@ void draw_energy_tab(AppState& state, float plot_height) {
 }
 
 void draw_expansion_tab(AppState& state, float plot_height) {
-  if (!state.preset.expansion) {
+  if (!state.preset.expansion && state.run->primary().stages().empty()) {
     ImGui::TextWrapped(
-        "This preset has no expansion. Under Container, switch on a container "
-        "and the stepwise expansion to measure P and T stage by stage.");
+        "No stages yet. With a container, each Expand now (E) ends a stage, averaged like "
+        "the protocol's, and plots it here; or under Container switch on the stepwise "
+        "expansion.");
     return;
   }
   ImGui::Checkbox("log-log axes", &state.plots.log_log);

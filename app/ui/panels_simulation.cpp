@@ -8,6 +8,7 @@
 #include <string>
 
 #include "panels.h"
+#include "timeline_strip.h"
 #include "swarm/regime.h"
 
 namespace swarmlab {
@@ -98,9 +99,13 @@ void draw_simulation_panel(AppState& state) {
 
 void draw_transport_bar(AppState& state) {
   const float font = ImGui::GetFontSize();
-  if (ImGui::Button(state.playing ? "\u2016 Pause" : "\u25b6 Play", ImVec2(5.5f * font, 0)))
-    state.playing = !state.playing;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space");
+  const bool at_end = !state.playing && state.run->finished();
+  if (ImGui::Button(state.playing ? "\u2016 Pause" : at_end ? "\u25b6 Continue" : "\u25b6 Play",
+                    ImVec2(6.5f * font, 0)))
+    play_or_continue(state);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(at_end ? "Space: the run is over; continue it for another run length"
+                             : "Space");
   ImGui::SameLine();
   if (ImGui::Button("Step")) state.step_once = true, state.playing = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("S: one step of dt");
@@ -115,6 +120,8 @@ void draw_transport_bar(AppState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
 
+  draw_time_buttons(state);
+  ImGui::SameLine();
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
   const double rate = swarm::omega_of(k);
@@ -131,6 +138,7 @@ void draw_transport_bar(AppState& state) {
   if (state.run->finished()) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "end of run");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Continue (Space) runs on for as long again.");
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "(%.0f%% of the speed)",

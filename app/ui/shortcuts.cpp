@@ -22,8 +22,8 @@ E next(E value, int count) {
 }
 
 const Shortcut kShortcuts[] = {
-    {SDL_SCANCODE_SPACE, false, "Space", "play / pause",
-     [](AppState& s) { s.playing = !s.playing; }},
+    {SDL_SCANCODE_SPACE, false, "Space", "play / pause (at the end: continue the run)",
+     [](AppState& s) { play_or_continue(s); }},
     {SDL_SCANCODE_S, false, "S", "one step (pauses)",
      [](AppState& s) { s.step_once = true, s.playing = false; }},
     {SDL_SCANCODE_R, false, "R", "reset to t = 0", [](AppState& s) { s.restart(); }},
@@ -54,11 +54,21 @@ const Shortcut kShortcuts[] = {
        s.run->expand_container(s.preset.expansion ? s.preset.expansion->factor : 1.1);
      }},
     {SDL_SCANCODE_HOME, false, "Home", "reframe the camera", [](AppState& s) { s.reframe = true; }},
-    {SDL_SCANCODE_ESCAPE, false, "Esc", "deselect the particle",
+    {SDL_SCANCODE_ESCAPE, false, "Esc", "stop a fast-forward, else deselect the particle",
      [](AppState& s) {
+       if (s.travel.active()) return cancel_travel(s);
        s.selected.reset();
        s.update_followed();
      }},
+    // Time (time_travel.h): back and forth over the run so far, fast-forward.
+    {SDL_SCANCODE_B, false, "B", "one step back", [](AppState& s) { step_back(s, false); }},
+    {SDL_SCANCODE_LEFT, false, "Left / Right", "back / on by 1/100 of a period",
+     [](AppState& s) { step_back(s, true); }},
+    {SDL_SCANCODE_RIGHT, false, nullptr, nullptr, [](AppState& s) { step_forward_coarse(s); }},
+    {SDL_SCANCODE_N, false, "N", "fast-forward to the end of this stage",
+     [](AppState& s) { fast_forward_to_stage_end(s); }},
+    {SDL_SCANCODE_END, false, "End", "fast-forward to the end of the run",
+     [](AppState& s) { fast_forward_to_run_end(s); }},
     {SDL_SCANCODE_1, false, "1", "show / hide the controls",
      [](AppState& s) { s.layout.controls ^= true; }},
     {SDL_SCANCODE_2, false, "2", "show / hide the plots",
@@ -104,6 +114,7 @@ void draw_help_window(AppState& state) {
     }
     const char* mouse[][2] = {{"drag", "orbit the camera"},
                               {"wheel", "zoom"},
+                              {"drag the timeline", "back or on to any time reached"},
                               {"click", "select a particle (trail, orbit ahead)"},
                               {"Ctrl+click", "type a value into a slider"},
                               {"hover", "equations behind the read-outs, values on the plots"}};

@@ -18,6 +18,7 @@ bool collide_spheres(Particle& p, Particle& q) {
 
 HardSpheres::HardSpheres(double radius) : radius_(radius), grid_(std::make_unique<CellGrid>()) {}
 HardSpheres::~HardSpheres() = default;
+HardSpheres::HardSpheres(const HardSpheres& other) : HardSpheres(other.radius_) {}
 HardSpheres::HardSpheres(HardSpheres&&) noexcept = default;
 HardSpheres& HardSpheres::operator=(HardSpheres&&) noexcept = default;
 

@@ -54,6 +54,9 @@ class ReferenceEngine final : public Engine {
   }
   std::optional<double> container_radius() const override { return config_.container_radius; }
   const EngineConfig& config() const override { return config_; }
+  std::unique_ptr<Engine> clone() const override {
+    return std::make_unique<ReferenceEngine>(*this);
+  }
 
  private:
   /// The trajectory map over dt: the method's own step, or under gravity and drag the same

@@ -38,6 +38,10 @@ Run::Run(std::unique_ptr<Engine> engine, const RunPlan& plan)
   E0_ = energy.kinetic + energy.potential;
   energy_scale_ = energy.kinetic + std::abs(energy.potential);
   samples_.push_back(sample_now());
+  if (plan_.expansion)
+    protocol_steps_ = plan_.expansion->stages * steps_per_stage(*plan_.expansion, plan_.dt);
+  else
+    open_stage_by_hand();
 }
 
 EnergyParts Run::energy_now() {
@@ -47,6 +51,48 @@ EnergyParts Run::energy_now() {
   if (g != Vec3::Zero()) e.potential += gravity_potential_energy(s, g);
   return e;
 }
+
+Run::Run(const Run& other)
+    : engine_(other.engine_->clone()),
+      plan_(other.plan_),
+      steps_done_(other.steps_done_),
+      wall_hits_(other.wall_hits_),
+      floor_hits_(other.floor_hits_),
+      books_(other.books_),
+      E0_(other.E0_),
+      energy_scale_(other.energy_scale_),
+      sample_meter_(other.sample_meter_),
+      stage_meter_(other.stage_meter_),
+      samples_(other.samples_),
+      stages_(other.stages_),
+      failure_(other.failure_),
+      protocol_steps_(other.protocol_steps_),
+      hand_stage_start_(other.hand_stage_start_),
+      hand_tallies_(other.hand_tallies_) {}
+
+void Run::open_stage_by_hand() {
+  if (!plan_.stages_by_hand || !engine_->container_radius()) return;
+  hand_stage_start_ = steps_done_;
+  hand_tallies_.clear();
+}
+
+void Run::expand_now(double factor) {
+  const std::optional<double> R = engine_->container_radius();
+  if (!R) return;
+  if (stage_by_hand_open() && steps_done_ > hand_stage_start_) {
+    // The protocol's window: the steps of the stage from index lround(f * length) on.
+    const double f = plan_.expansion ? plan_.expansion->thermalize_fraction
+                                     : ExpansionProtocol{}.thermalize_fraction;
+    const long length = steps_done_ - hand_stage_start_;
+    const WallReading w = hand_tallies_.reading(std::lround(f * double(length)), plan_.dt, *R);
+    stages_.push_back(
+        {*R, sphere_volume(*R), w.P, w.T, total_energy(engine_->system()), w.hits, true});
+  }
+  engine_->set_container_radius(*R * factor);
+  if (stage_by_hand_open()) open_stage_by_hand();
+}
+
+void Run::extend(long steps) { plan_.steps += std::max(0L, steps); }
 
 Sample Run::sample_now() {
   const System& s = engine_->system();
@@ -78,7 +124,8 @@ void Run::step_once() {
   books_.add(tally.books);
   sample_meter_.add(tally, plan_.dt, R);
 
-  if (plan_.expansion) {
+  if (stage_by_hand_open()) hand_tallies_.push(tally);
+  if (plan_.expansion && steps_done_ <= protocol_steps_) {
     const ExpansionProtocol& e = *plan_.expansion;
     const long per_stage = steps_per_stage(e, plan_.dt);
     const long in_stage = (steps_done_ - 1) % per_stage;  // index of the step just taken
@@ -91,6 +138,7 @@ void Run::step_once() {
       stage_meter_.reset();
       if (long(stages_.size()) < e.stages) engine_->set_container_radius(R * e.factor);
     }
+    if (steps_done_ == protocol_steps_) open_stage_by_hand();
   }
   if (steps_done_ % plan_.sample_every == 0 || steps_done_ == plan_.steps) {
     samples_.push_back(sample_now());

@@ -34,6 +34,15 @@ SideBySide::SideBySide(const System& initial, const RunPlan& plan,
   record();
 }
 
+SideBySide::SideBySide(const SideBySide& other)
+    : primary_(std::make_unique<Run>(*other.primary_)), errors_(other.errors_) {
+  if (other.exact_ == other.primary_.get()) exact_ = primary_.get();
+  for (const Track& track : other.tracks_) {
+    tracks_.push_back({track.method, std::make_unique<Run>(*track.run), track.samples});
+    if (other.exact_ == track.run.get()) exact_ = tracks_.back().run.get();
+  }
+}
+
 void SideBySide::record() {
   const System& reference = primary_->engine().system();
   for (Track& track : tracks_) {
@@ -55,12 +64,13 @@ void SideBySide::record() {
 }
 
 void SideBySide::scale_container(double factor) {
-  auto grow = [factor](Run& run) {
-    if (const auto R = run.engine().container_radius())
-      run.engine().set_container_radius(*R * factor);
-  };
-  grow(*primary_);
-  for (Track& track : tracks_) grow(*track.run);
+  primary_->expand_now(factor);
+  for (Track& track : tracks_) track.run->expand_now(factor);
+}
+
+void SideBySide::extend(long steps) {
+  primary_->extend(steps);
+  for (Track& track : tracks_) track.run->extend(steps);
 }
 
 long SideBySide::advance(long n) {

@@ -19,7 +19,9 @@ class TwoLaneWorker {
  public:
   /// threads: 2 to use a worker thread (where the platform has threads), 1 not to.
   explicit TwoLaneWorker(int threads) : threads_(threads) {}
-  TwoLaneWorker(const TwoLaneWorker&) = delete;
+  /// A copy (of a cloned engine) is a new worker with the same thread count: the thread is
+  /// the copy's own, started when first needed.
+  TwoLaneWorker(const TwoLaneWorker& other) : threads_(other.threads_) {}
   TwoLaneWorker& operator=(const TwoLaneWorker&) = delete;
   ~TwoLaneWorker();
 

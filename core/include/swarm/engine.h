@@ -51,6 +51,9 @@ class Engine {
   virtual void set_container_radius(std::optional<double> R) = 0;
   virtual std::optional<double> container_radius() const = 0;
   virtual const EngineConfig& config() const = 0;
+  /// An independent copy that steps on exactly as this engine would, to the last bit: the
+  /// timeline's snapshots (swarm/timeline.h) are clones.
+  virtual std::unique_ptr<Engine> clone() const = 0;
 };
 
 /// The straightforward engine: Appendix A with the chosen method as the trajectory map.

@@ -29,6 +29,8 @@ class HardSpheres {
  public:
   explicit HardSpheres(double radius);
   ~HardSpheres();
+  /// A copy (a timeline snapshot) starts with empty storage: the grid is rebuilt every step.
+  HardSpheres(const HardSpheres& other);
   HardSpheres(HardSpheres&&) noexcept;
   HardSpheres& operator=(HardSpheres&&) noexcept;
 

@@ -16,6 +16,7 @@
 #include "swarm/fit.h"
 #include "swarm/run_plan.h"
 #include "swarm/thermometry.h"
+#include "swarm/wall_tally_log.h"
 
 namespace swarm {
 
@@ -37,6 +38,7 @@ struct Stage {
   double P = 0, T = 0;    ///< averaged over the last (1 - thermalize_fraction) of the stage
   double E = 0;           ///< total energy at the end of the stage
   std::int64_t hits = 0;  ///< wall hits in the averaging window
+  bool by_hand = false;   ///< ended by "Expand now" rather than by the protocol
 };
 
 struct StageFits {
@@ -58,6 +60,9 @@ class Run {
  public:
   Run(System initial, const RunPlan& plan);
   Run(std::unique_ptr<Engine> engine, const RunPlan& plan);
+  /// An independent copy (its engine cloned) that carries on exactly as this run would.
+  Run(const Run& other);
+  Run& operator=(const Run&) = delete;
 
   /// Advances up to n steps; returns how many were taken.
   long advance(long n);
@@ -69,6 +74,20 @@ class Run {
   /// e.g. "step 412 (t = 0.412): E is not finite (nan)".
   const std::string& failure() const { return failure_; }
   long steps_done() const { return steps_done_; }
+
+  /// Grows the container by `factor` now ("Expand now"); no particle is touched, so no work
+  /// is done. Within a protocol's stages that is all. Outside them, with
+  /// plan().stages_by_hand, it also ends the stage by hand that began at the last expansion
+  /// (or at the start, or at the protocol's end) and begins the next: the stage is averaged
+  /// like a protocol's, over its last (1 - thermalize_fraction) (the protocol's fraction, or
+  /// ExpansionProtocol's default), and appended to stages() with by_hand set.
+  void expand_now(double factor);
+  /// Lengthens the run by `steps` (a finished run that continues). The protocol's stages
+  /// stay as they were; the time after them is a stage by hand.
+  void extend(long steps);
+  /// Whether a stage by hand is under way (see expand_now), and the step it began at.
+  bool stage_by_hand_open() const { return hand_stage_start_ >= 0; }
+  long stage_by_hand_start() const { return hand_stage_start_; }
 
   Engine& engine() { return *engine_; }
   const RunPlan& plan() const { return plan_; }
@@ -84,6 +103,7 @@ class Run {
   void step_once();
   Sample sample_now();
   void check_finite(const Sample& s);
+  void open_stage_by_hand();
 
   std::unique_ptr<Engine> engine_;
   RunPlan plan_;
@@ -96,6 +116,9 @@ class Run {
   std::vector<Sample> samples_;
   std::vector<Stage> stages_;
   std::string failure_;
+  long protocol_steps_ = 0;      // the steps of the protocol's stages (0 without one)
+  long hand_stage_start_ = -1;   // where the open stage by hand began; -1: none open
+  WallTallyLog hand_tallies_;    // the steps of the open stage by hand
 };
 
 /// Relative change (E_end - E0) / |E0|, or over KE0 + |PE0| when E0 is zero.

@@ -23,6 +23,10 @@ struct RunPlan {
   long steps = 1000;  ///< for expansions: stages * steps_per_stage
   long sample_every = 1;
   std::optional<ExpansionProtocol> expansion;
+  /// Outside a protocol's stages, keep every step's wall tally (24 bytes a step) so that
+  /// Run::expand_now can close a stage by hand averaged like a protocol's. The UI's runs do;
+  /// the CLI's have no hand to expand them.
+  bool stages_by_hand = false;
 };
 
 /// Steps per expansion stage: round(tau / dt).

@@ -34,6 +34,9 @@ class SideBySide {
   };
 
   SideBySide(const System& initial, const RunPlan& plan, const std::vector<Method>& compared);
+  /// An independent copy (every run cloned) that carries on exactly as this one would.
+  SideBySide(const SideBySide& other);
+  SideBySide& operator=(const SideBySide&) = delete;
 
   /// Advances every run by up to n steps; returns the steps taken.
   long advance(long n);
@@ -57,9 +60,11 @@ class SideBySide {
   /// primary's samples; empty when no analytic method runs.
   const std::vector<ErrorFromExact>& errors_from_exact() const { return errors_; }
 
-  /// Grows every run's container by `factor` at once. No particle is touched, so no work is
-  /// done.
+  /// Grows every run's container by `factor` at once (Run::expand_now, which may also end a
+  /// stage by hand). No particle is touched, so no work is done.
   void scale_container(double factor);
+  /// Lengthens every run by `steps` (Run::extend).
+  void extend(long steps);
 
  private:
   void record();

@@ -1,0 +1,42 @@
+#pragma once
+// Moving the run in time from the window: seeks (the timeline strip, step back, the JS API)
+// and fast-forwards ("to the end of this stage", "to the end of the run"), carried out a
+// frame's time budget at a time so that the window never freezes. The core's swarm::Timeline
+// does the work: it re-simulates from its snapshots, so every state is the first pass's.
+
+namespace swarmlab {
+
+struct AppState;
+
+/// A move of the run to a target step, under way over several frames.
+struct TimeTravel {
+  enum class Kind { none, seek, to_stage_end, to_run_end };
+  Kind kind = Kind::none;
+  long from = 0;    ///< the step it started from (after the jump to a snapshot)
+  long target = 0;  ///< the step it goes to
+  long chunk = 1;   ///< steps between looks at the clock, doubled or halved to fit the budget
+
+  bool active() const { return kind != Kind::none; }
+  /// How much of the way is done, 0 to 1.
+  double progress(long step) const {
+    return target == from ? 1.0 : double(step - from) / double(target - from);
+  }
+};
+
+/// Starts moving to `target` (clamped to the run's steps); play pauses.
+void travel_to(AppState& state, TimeTravel::Kind kind, long target);
+/// One step back (and, with coarse, 1/100 of a period or of the run's length).
+void step_back(AppState& state, bool coarse);
+/// 1/100 of a period forward.
+void step_forward_coarse(AppState& state);
+void fast_forward_to_stage_end(AppState& state);
+void fast_forward_to_run_end(AppState& state);
+void cancel_travel(AppState& state);
+/// Carries the travel under way on for about budget_ms; ends it at its target.
+void continue_travel(AppState& state, double budget_ms);
+/// Play / pause; a finished run continues by another run length rather than doing nothing.
+void play_or_continue(AppState& state);
+/// Moves the run to time t at once (the JS API); returns the time reached.
+double seek_now(AppState& state, double t);
+
+}  // namespace swarmlab
