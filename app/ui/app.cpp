@@ -79,6 +79,7 @@ void App::update(double real_seconds) {
   ++stats.frames;
   handle_shortcuts(state_);
   advance_simulation(state_.fixed_frame_time ? kFixedFrameSeconds : real_seconds);
+  update_instruments(state_);
   layout_windows();
   handle_view_input();
   update_camera();
@@ -213,6 +214,7 @@ void App::layout_windows() {
   ImGui::SetNextWindowBgAlpha(0.55f);
   if (ImGui::Begin("##readouts", nullptr, overlay)) draw_readouts(s);
   ImGui::End();
+  draw_instruments_window(s);
   draw_help_window(s);
 }
 

@@ -17,6 +17,12 @@ void draw_plots_panel(AppState& state);
 void draw_readouts(AppState& state);
 /// Play, pause, step, reset, speed and the clock, over the top of the 3D view.
 void draw_transport_bar(AppState& state);
+/// The stopwatch, the period meter and the selected particle's card, over the bottom left of
+/// the 3D view (instruments_panel.cpp, particle_card.cpp).
+void draw_instruments_window(AppState& state);
+void draw_particle_card(AppState& state);
+/// The selected particle's x(t) about the centre of mass, a plot tab (particle_plot.cpp).
+void draw_particle_tab(AppState& state, float plot_height);
 
 // Helpers shared by the panels.
 
