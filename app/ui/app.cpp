@@ -213,8 +213,11 @@ void App::layout_windows() {
   ImGui::SetNextWindowPos(ImVec2(left + 0.5f * font, below));
   ImGui::SetNextWindowBgAlpha(0.55f);
   if (ImGui::Begin("##readouts", nullptr, overlay)) draw_readouts(s);
+  const ImVec2 readouts_min = ImGui::GetWindowPos();
+  const ImVec2 readouts_max(readouts_min.x + ImGui::GetWindowWidth(),
+                            readouts_min.y + ImGui::GetWindowHeight());
   ImGui::End();
-  draw_instruments_window(s);
+  draw_instruments_window(s, readouts_min.y, readouts_max.y, readouts_max.x);
   draw_help_window(s);
 }
 

@@ -17,9 +17,10 @@ void draw_plots_panel(AppState& state);
 void draw_readouts(AppState& state);
 /// Play, pause, step, reset, speed and the clock, over the top of the 3D view.
 void draw_transport_bar(AppState& state);
-/// The stopwatch, the period meter and the selected particle's card, over the bottom left of
-/// the 3D view (instruments_panel.cpp, particle_card.cpp).
-void draw_instruments_window(AppState& state);
+/// The stopwatch, the period meter and the selected particle's card over the 3D view, below
+/// the read-outs (drawn from y = top to bottom, up to x = right), or beside them at the view's
+/// right edge when they do not fit there (instruments_panel.cpp, particle_card.cpp).
+void draw_instruments_window(AppState& state, float top, float bottom, float right);
 void draw_particle_card(AppState& state);
 /// The selected particle's x(t) about the centre of mass, a plot tab (particle_plot.cpp).
 void draw_particle_tab(AppState& state, float plot_height);
