@@ -22,6 +22,11 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "Run this many frames, then exit (0: run until closed)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--screenshot", screenshot, "After the last frame, save the window as PNG");
+  int select = 0;
+  app.add_option("--select", select,
+                 "Select particle N (numbered from 1, as in the particle table): its card and "
+                 "x(t) plot")
+      ->check(CLI::PositiveNumber);
 
   swarmlab::RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a preset headless and report the results");
@@ -61,7 +66,7 @@ int main(int argc, char** argv) {
   if (*bench_cmd) return swarmlab::bench_command(bench);
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
-  return swarmlab::run_desktop({window_preset, frames, screenshot});
+  return swarmlab::run_desktop({window_preset, frames, screenshot, select});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

@@ -99,3 +99,43 @@ TEST_CASE("the wall average of intervals equals one meter over all of their step
   check_reading(wall_average(intervals, 0, intervals.size()), expected.P, expected.T,
                 expected.hits);
 }
+
+TEST_CASE("wall_estimate: P and T over a trailing window with batch-means standard errors") {
+  // Eight intervals of unit length with made-up readings; the window of the last 6 holds
+  // intervals 2..7, cut into 3 sub-windows of two intervals each.
+  std::vector<WallInterval> intervals;
+  const double P[8] = {9, 9, 1.0, 2.0, 4.0, 3.0, 2.5, 1.5};
+  const double T[8] = {9, 9, 0.5, 0.7, 0.6, 0.0, 0.9, 0.8};
+  const std::int64_t hits[8] = {5, 5, 2, 3, 1, 0, 4, 2};
+  for (int i = 0; i < 8; ++i) intervals.push_back({double(i + 1), 1.0, {P[i], T[i], hits[i]}});
+
+  const WallEstimate e = wall_estimate(intervals, 6.0, 3);
+  CHECK(e.intervals == 6);
+  CHECK(e.blocks == 3);
+  CHECK(e.window == Approx(6.0));
+  // By hand: P is the time-weighted mean, T the hit-weighted mean.
+  CHECK(e.mean.P == Approx((1.0 + 2.0 + 4.0 + 3.0 + 2.5 + 1.5) / 6));
+  CHECK(e.mean.T == Approx((0.5 * 2 + 0.7 * 3 + 0.6 * 1 + 0.9 * 4 + 0.8 * 2) / 12));
+  CHECK(e.mean.hits == 12);
+  // Sub-window values: P 1.5, 3.5, 2.0; T (1 + 2.1) / 5 = 0.62, 0.6 (the hitless interval
+  // adds nothing), (3.6 + 1.6) / 6.
+  const double bp[3] = {1.5, 3.5, 2.0}, bt[3] = {3.1 / 5, 0.6, 5.2 / 6};
+  auto stderr_of = [](const double* v) {
+    const double mean = (v[0] + v[1] + v[2]) / 3;
+    double s = 0;
+    for (int i = 0; i < 3; ++i) s += (v[i] - mean) * (v[i] - mean);
+    return std::sqrt(s / 2 / 3);
+  };
+  REQUIRE(e.P_stderr.has_value());
+  REQUIRE(e.T_stderr.has_value());
+  CHECK(*e.P_stderr == Approx(stderr_of(bp)));
+  CHECK(*e.T_stderr == Approx(stderr_of(bt)));
+
+  // The whole run when the window is 0; no uncertainty from a single interval.
+  CHECK(wall_estimate(intervals, 0, 4).intervals == 8);
+  const WallEstimate one = wall_estimate(intervals, 0.5, 8);
+  CHECK(one.intervals == 1);
+  CHECK(!one.P_stderr.has_value());
+  CHECK(one.mean.P == Approx(1.5));
+  CHECK(wall_estimate({}, 1.0).intervals == 0);
+}

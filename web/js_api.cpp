@@ -3,6 +3,7 @@
 
 #include <emscripten.h>
 
+#include <optional>
 #include <string>
 
 #include "storage_controls.h"
@@ -92,6 +93,28 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_download() {
   swarmlab::App* app = swarmlab::web_app();
   download_name = app ? swarmlab::download_preset(app->state()) : std::string();
   return download_name.c_str();
+}
+
+/// Selects particle `index` (< 0: none), as a click on it does. Returns -1 on success, and
+/// the number of particles, for the message, when there is no such particle.
+EMSCRIPTEN_KEEPALIVE double swarmlab_select(double index) {
+  swarmlab::App* app = swarmlab::web_app();
+  if (!app) return 0;
+  const auto chosen = index < 0 ? std::nullopt : std::optional<std::size_t>(std::size_t(index));
+  if (swarmlab::select_particle(app->state(), chosen)) return -1;
+  return double(app->state().run->system().particles.size());
+}
+
+/// The stopwatch's buttons: 0 start, 1 stop, 2 lap, 3 reset, at the simulated clock's reading.
+EMSCRIPTEN_KEEPALIVE void swarmlab_stopwatch(int action) {
+  swarmlab::App* app = swarmlab::web_app();
+  if (!app) return;
+  swarm::Stopwatch& w = app->state().instruments.stopwatch;
+  const double t = app->state().run->time();
+  if (action == 0) w.start(t);
+  if (action == 1) w.stop(t);
+  if (action == 2) w.lap(t);
+  if (action == 3) w.reset();
 }
 
 /// Where the scenario panel's button `label` was drawn: "x y width height" in CSS pixels, or

@@ -48,6 +48,15 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["fast_forward"] = s.travel.active() && s.travel.kind != swarmlab::TimeTravel::Kind::seek
                           ? nlohmann::json{{"progress", s.travel.progress(s.run->step())}}
                           : nlohmann::json(nullptr);
+  // The instruments: P and T as the read-outs show them (null without a container or before
+  // the first sample; T also before the first wall hit), the stopwatch, the measured period.
+  const swarmlab::Instruments& in = s.instruments;
+  const bool wall = s.preset.container_radius && in.wall.intervals > 0;
+  j["P"] = wall ? nlohmann::json(in.wall.mean.P) : nlohmann::json(nullptr);
+  j["T"] = wall && in.wall.mean.hits > 0 ? nlohmann::json(in.wall.mean.T) : nlohmann::json(nullptr);
+  j["stopwatch"] = {{"running", in.stopwatch.running()}, {"elapsed", in.stopwatch.elapsed()}};
+  const auto period = in.track ? in.track->meter.period() : std::nullopt;
+  j["measured_period"] = period ? nlohmann::json(*period) : nlohmann::json(nullptr);
   return j;
 }
 

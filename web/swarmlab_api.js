@@ -19,6 +19,10 @@
 //   swarmlab.openFile()    the Open preset... button: a file picker, then as load()
 //   swarmlab.download()    the Download preset button; returns the file name
 //   swarmlab.shipped()     the preset list: [{ id: file name, name }]
+//   swarmlab.select(i)     selects particle i (0-based; null: none) as a click does, opening its
+//                          card and period meter; throws Error naming i when out of range
+//   swarmlab.stopwatch(action) the stopwatch's buttons: 'start', 'stop', 'lap' or 'reset';
+//                          returns state().stopwatch
 //   swarmlab.buttonRect(label) where the scenario panel's button 'Open preset…', 'Download
 //                          preset' or 'Copy link' is drawn: { x, y, width, height } in CSS
 //                          pixels of the canvas, or null (for tests that click like a person)
@@ -214,6 +218,25 @@
       });
       if (error) throw new Error(error);
       return api.state();
+    },
+    select: function (i) {
+      check();
+      if (i !== null && !(Number.isInteger(i) && i >= 0)) {
+        throw new Error('swarmlab.select(): ' + JSON.stringify(i) + ' is not a particle index (an integer >= 0, or null)');
+      }
+      var count = Module.ccall('swarmlab_select', 'number', ['number'], [i === null ? -1 : i]);
+      if (count >= 0) {
+        throw new Error('swarmlab.select(): particle ' + i + ' is out of range (the system has ' + count +
+                        ' particles: 0 to ' + (count - 1) + ')');
+      }
+      return i;
+    },
+    stopwatch: function (action) {
+      check();
+      var code = ['start', 'stop', 'lap', 'reset'].indexOf(action);
+      if (code < 0) throw new Error('swarmlab.stopwatch(): ' + JSON.stringify(action) + ' is not start, stop, lap or reset');
+      Module.ccall('swarmlab_stopwatch', null, ['number'], [code]);
+      return api.state().stopwatch;
     },
     shipped: function () {
       check();

@@ -61,6 +61,18 @@ int run_desktop(const DesktopOptions& options) {
     close_window(f.window);
     return 1;
   }
+  if (options.select > 0) {
+    // Selected as by a click, with its x(t) plot open (the instruments' screenshot).
+    const std::size_t n = f.app->state().run->system().particles.size();
+    if (!select_particle(f.app->state(), std::size_t(options.select - 1))) {
+      std::fprintf(stderr, "error: --select: must be in [1, %zu] (the preset has %zu particles)\n",
+                   n, n);
+      f.app.reset();
+      close_window(f.window);
+      return 1;
+    }
+    f.app->state().plots.tab = 4;
+  }
 
   // The first frames build fonts and buffers; the timing summary leaves them out.
   constexpr int kWarmUp = 5;
@@ -93,6 +105,9 @@ int run_desktop(const DesktopOptions& options) {
         "which stepping %.2f ms, particle colours and sizes %.2f ms)\n",
         options.frames, f.app->state().run->system().particles.size(), timed_ms / n,
         timed_cpu_ms / n, stats.simulation_ms, stats.scene_ms);
+    if (const auto& track = f.app->state().instruments.track; track && track->meter.period())
+      std::printf("swarmlab: particle %zu: measured period %.6g, formula %.6g\n",
+                  track->particle + 1, *track->meter.period(), *track->meter.formula_period());
     if (!options.screenshot_path.empty()) {
       if (screenshot_error.empty()) {
         std::printf("swarmlab: screenshot written to %s\n", options.screenshot_path.c_str());

@@ -83,6 +83,7 @@ void App::update(double real_seconds) {
   ++stats.frames;
   handle_shortcuts(state_);
   advance_simulation(state_.fixed_frame_time ? kFixedFrameSeconds : real_seconds);
+  update_instruments(state_);
   layout_windows();
   handle_view_input();
   update_camera();
@@ -294,6 +295,7 @@ void App::layout_windows() {
         tab("Controls", s.layout.controls, draw_controls);
         tab("Plots", s.layout.plots, draw_plots_panel);
         tab("Read-outs", true, draw_readouts);
+        tab("Instruments", true, draw_instruments);
         ImGui::EndTabBar();
       }
     }
@@ -316,6 +318,9 @@ void App::layout_windows() {
     record_panel(s, "Read-outs");
     ImGui::End();
   }
+  // The instruments over the view's top left corner in the wide layout (collapsible); a tab of
+  // the drawer in a compact one.
+  if (l.kind == LayoutKind::wide) draw_instruments_window(s, l.view.y, l.view.y, l.view.x);
   if (roomy) ImGui::PopStyleVar(3);
   set_text_field_state(nullptr);
   s.layout.typed_text.reset();  // typed for a field that has closed since

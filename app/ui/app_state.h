@@ -11,6 +11,7 @@
 
 #include "camera.h"
 #include "colour_map.h"
+#include "instruments.h"
 #include "live_run.h"
 #include "preset_store.h"
 #include "screen_layout.h"
@@ -129,6 +130,8 @@ struct AppState {
   PlotOptions plots;
   Layout layout;
   FrameStats stats;
+  /// Stopwatch, period meter, P and T (update_instruments feeds them every frame).
+  Instruments instruments;
 
   /// Opens a valid preset: it becomes origin, preset and draft; the run restarts.
   void open(const swarm::Preset& p, std::string location);

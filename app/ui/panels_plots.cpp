@@ -9,6 +9,7 @@
 
 #include "panels.h"
 #include "plot_widget.h"
+#include "swarm/regime.h"
 
 namespace swarmlab {
 namespace {
@@ -111,6 +112,10 @@ void draw_wall_tab(AppState& state, float plot_height) {
 
 void draw_energy_tab(AppState& state, float plot_height) {
   series.update(*state.run, state.plots.average_window);
+  // Timing the energy plot's swings gives half the period, a trap worth naming.
+  if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
+    ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.4f, 1.0f),
+                       "KE and PE swing at 2ω: one swing is half a period.");
   const std::vector<double>& t_all = series.t_all;
   PlotSpec e;
   e.title = "KE, PE and E";
@@ -230,16 +235,16 @@ void draw_compare_tab(AppState& state, float plot_height) {
 }  // namespace
 
 void draw_plots_panel(AppState& state) {
-  const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare"};
+  const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare", "Particle"};
   // Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
   if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
-  for (int i = 0; i < 4; ++i) {
+  for (int i = 0; i < 5; ++i) {
     const ImGuiTabItemFlags flags = state.plots.tab == i ? ImGuiTabItemFlags_SetSelected : 0;
     if (!ImGui::BeginTabItem(tabs[i], nullptr, flags)) continue;
-    const float options = i == 0 ? 2.6f : i == 2 ? 1.4f : 0.0f;
+    const float options = i == 0 ? 2.6f : i == 2 ? 1.4f : i == 1 ? 1.0f : i == 4 ? 3.0f : 0.0f;
     const float available =
         ImGui::GetContentRegionAvail().y - options * ImGui::GetFrameHeightWithSpacing();
-    const int plots = i == 2 ? 3 : 2;
+    const int plots = i == 2 ? 3 : i == 4 ? 1 : 2;
     const float height = std::max(8 * ImGui::GetFontSize(),
                                   available / float(plots) - ImGui::GetStyle().ItemSpacing.y);
     switch (i) {
@@ -254,6 +259,9 @@ void draw_plots_panel(AppState& state) {
         break;
       case 3:
         draw_compare_tab(state, height);
+        break;
+      case 4:
+        draw_particle_tab(state, height);
         break;
     }
     ImGui::EndTabItem();

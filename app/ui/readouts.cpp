@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "panels.h"
 #include "swarm/diagnostics.h"
@@ -45,6 +47,41 @@ double hit_rate(LiveRun& run, double window) {
     start = (s + 1)->t;
   }
   return now > start ? double(hits) / (now - start) : 0;
+}
+
+/// "1.234 ± 0.05", or the value alone without an uncertainty.
+void format_estimate(char* out, std::size_t size, double v, const std::optional<double>& error) {
+  if (error)
+    std::snprintf(out, size, "%.4g ± %.2g", v, *error);
+  else
+    std::snprintf(out, size, "%.4g", v);
+}
+
+/// P and T over the plots' averaging window, with standard errors from its sub-windows.
+void wall_rows(const swarm::WallEstimate& w) {
+  char value[96], window[160];
+  std::snprintf(window, sizeof window,
+                " over the last %.4g of time (%d samples; the plots' 'average over', 0: the "
+                "whole run). ±: standard error of the %d sub-windows' values.",
+                w.window, w.intervals, w.blocks);
+  if (w.intervals == 0) {
+    row("P", "waiting for samples", "Wall pressure, once the first samples arrive.");
+    return;
+  }
+  format_estimate(value, sizeof value, w.mean.P, w.P_stderr);
+  row("P", value, (std::string("P = Σ |Δpᵣ| / (4π R² t)") + window).c_str());
+  if (w.mean.hits > 0)
+    format_estimate(value, sizeof value, w.mean.T, w.T_stderr);
+  else
+    std::snprintf(value, sizeof value, "no wall hits yet");
+  row("T", value,
+      (std::string("T = half the mean kinetic energy of the particles hitting the wall "
+                   "(k_B = 1)") + window).c_str());
+  std::snprintf(value, sizeof value, "last %.4g of time, %d parts", w.window, w.blocks);
+  row("P, T over", value,
+      "The averaging window of P and T: the plots' 'average over' (Wall P, T tab), or the "
+      "whole run when it is 0. \u00b1 is the standard error of the means of its parts (batch "
+      "means); parts shorter than about a period understate it.");
 }
 
 }  // namespace
@@ -115,6 +152,7 @@ void draw_readouts(AppState& state) {
   if (const auto R = state.run->primary().engine().container_radius()) {
     std::snprintf(value, sizeof value, "%.4g   V = %.4g", *R, swarm::sphere_volume(*R));
     row("R", value, "Container radius and volume V = 4/3 \u03c0 R\u00b3.");
+    wall_rows(state.instruments.wall);
     std::snprintf(value, sizeof value, "%.4g", hit_rate(*state.run, state.plots.average_window));
     row("hits/time", value,
         "Wall hits per unit of simulated time, over the plots' averaging "

@@ -1,6 +1,7 @@
 #include "swarm/thermometry.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace swarm {
 namespace {
@@ -29,6 +30,18 @@ struct WallSums {
     return w;
   }
 };
+
+/// Standard deviation of the values (n - 1) over sqrt(n); none for fewer than two values.
+std::optional<double> standard_error(const std::vector<double>& values) {
+  const std::size_t n = values.size();
+  if (n < 2) return std::nullopt;
+  double mean = 0;
+  for (double v : values) mean += v;
+  mean /= double(n);
+  double squares = 0;
+  for (double v : values) squares += (v - mean) * (v - mean);
+  return std::sqrt(squares / double(n - 1) / double(n));
+}
 
 std::vector<WallSums> prefix_sums(const std::vector<WallInterval>& intervals) {
   std::vector<WallSums> prefix(intervals.size() + 1);
@@ -79,6 +92,46 @@ std::vector<WallReading> windowed_wall_averages(const std::vector<WallInterval>&
     out.push_back(prefix[std::max(last, i + 1)].since(prefix[first]));
   }
   return out;
+}
+
+WallEstimate wall_estimate(const std::vector<WallInterval>& intervals, double window,
+                           int blocks) {
+  WallEstimate e;
+  if (intervals.empty()) return e;
+  const double end = intervals.back().t_end;
+  std::size_t first = intervals.size() - 1;  // the window is [first, size)
+  if (window <= 0)
+    first = 0;
+  else
+    while (first > 0 && intervals[first - 1].t_end > end - window) --first;
+  const std::size_t count = intervals.size() - first;
+  e.mean = wall_average(intervals, first, intervals.size());
+  const double start = intervals[first].t_end - intervals[first].duration;
+  e.window = end - start;
+  e.intervals = int(count);
+  e.blocks = int(std::min<std::size_t>(std::size_t(std::max(blocks, 1)), count));
+  if (e.blocks < 2 || !(e.window > 0)) return e;
+
+  // Each interval to the sub-window its end falls in; [begin[b], begin[b + 1]) is block b.
+  std::vector<std::size_t> begin(std::size_t(e.blocks) + 1, intervals.size());
+  std::size_t i = first;
+  for (int b = 0; b < e.blocks; ++b) {
+    begin[std::size_t(b)] = i;
+    const double block_end = start + e.window * double(b + 1) / double(e.blocks);
+    while (i < intervals.size() && (intervals[i].t_end <= block_end || b == e.blocks - 1)) ++i;
+  }
+  std::vector<double> P, T;
+  for (int b = 0; b < e.blocks; ++b) {
+    const std::size_t from = begin[std::size_t(b)], to = begin[std::size_t(b) + 1];
+    if (from == to) continue;
+    const WallReading r = wall_average(intervals, from, to);
+    P.push_back(r.P);
+    if (r.hits > 0) T.push_back(r.T);
+  }
+  e.blocks = int(P.size());
+  e.P_stderr = standard_error(P);
+  e.T_stderr = standard_error(T);
+  return e;
 }
 
 }  // namespace swarm

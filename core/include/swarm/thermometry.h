@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "swarm/wall.h"
@@ -55,5 +56,27 @@ WallReading wall_average(const std::vector<WallInterval>& intervals, std::size_t
 /// O(number of intervals) in all.
 std::vector<WallReading> windowed_wall_averages(const std::vector<WallInterval>& intervals,
                                                 double before, double after);
+
+/// P and T over a trailing window, as numbers to read off with their uncertainty.
+struct WallEstimate {
+  WallReading mean;   ///< the wall_average over the window's intervals
+  double window = 0;  ///< the time those intervals cover
+  int intervals = 0;  ///< how many intervals the window holds
+  int blocks = 0;     ///< sub-windows the uncertainty was estimated from
+  /// Standard errors of P and T from batch means (below); none with fewer than two
+  /// sub-windows (for T: with hits).
+  std::optional<double> P_stderr, T_stderr;
+};
+
+/// P and T over the intervals that end in (t_end_last - window, t_end_last] (every interval
+/// when window <= 0), with standard errors by batch means: the window is cut into `blocks`
+/// sub-windows of equal time (fewer when it holds fewer intervals), each interval going to
+/// the sub-window its end falls in; each sub-window's wall_average is one batch value, and the
+/// standard error is the standard deviation of the batch values (n - 1 in the denominator)
+/// over sqrt(n). For T only sub-windows with hits count. Batches are only as independent as
+/// they are long: sub-windows shorter than the time the wall readings stay correlated (about
+/// a period) understate the error.
+WallEstimate wall_estimate(const std::vector<WallInterval>& intervals, double window,
+                           int blocks = 8);
 
 }  // namespace swarm

@@ -1,0 +1,93 @@
+// The instruments in the browser (issue 13): swarmlab.select(i) opens the period meter of a
+// particle, whose measured period must come within 0.5% of 2 pi / sqrt(J M) computed here
+// from the preset's masses and J, for a light and a heavy mass alike; the stopwatch runs on the
+// simulated clock and stops; P and T are numbers in a container preset and null without one;
+// select() refuses an index out of range with an Error naming it. Run by tests/web/run.sh.
+import * as harness from './harness.mjs';
+
+const { check, sleep, shipped, openApp, launchBrowser, runSuite, pageErrors, consoleErrors,
+        screenshot } = harness;
+
+const api = (page, body, arg) => page.evaluate(body, arg);
+const appState = (page) => api(page, () => window.swarmlab.state());
+
+// Waits (counting frames, not milliseconds) until pick(state) is not null; returns it or null.
+async function waitFor(page, pick, frames) {
+  const f0 = await api(page, () => window.swarmlab.frames());
+  for (;;) {
+    const s = await appState(page);
+    const v = pick(s);
+    if (v !== null && v !== undefined) return v;
+    const f = await api(page, () => window.swarmlab.frames());
+    if (f - f0 > frames) return null;
+    await sleep(100);
+  }
+}
+
+async function main(url) {
+  const context = await launchBrowser({ width: 1280, height: 720 });
+  const blank = context.pages()[0];
+  const { page, started, error } = await openApp(url, 'instruments');
+  if (blank) await blank.close();
+  if (!check('the app starts', started, error || '')) return;
+
+  // The Fig. 1 four masses, run long enough for the meter to see two returns of each.
+  const fig1 = shipped('fig1-four-masses.json');
+  fig1.duration = 1000;
+  await api(page, (p) => window.swarmlab.load(p), fig1);
+  const M = fig1.particles.reduce((sum, p) => sum + p.m, 0);
+  const formula = 2 * Math.PI / Math.sqrt(fig1.J * M);
+
+  const before = await appState(page);
+  check('state() carries the instruments: stopwatch, measured_period, P, T',
+        before.stopwatch && before.stopwatch.running === false && before.stopwatch.elapsed === 0 &&
+        before.measured_period === null && before.P === null && before.T === null,
+        JSON.stringify(before));
+
+  for (const i of [0, 3]) {
+    await api(page, (k) => window.swarmlab.select(k), i);
+    const s = await appState(page);
+    check(`select(${i}) selects particle ${i}`, s.selected === i, `selected ${s.selected}`);
+    const measured = await waitFor(page, (x) => (x.selected === i ? x.measured_period : null), 3000);
+    const diff = measured === null ? NaN : Math.abs(measured - formula) / formula;
+    check(`particle ${i} (m = ${fig1.particles[i].m}): measured period within 0.5% of 2 pi / sqrt(J M)`,
+          diff < 0.005, `measured ${measured}, formula ${formula.toFixed(6)}, difference ${(100 * diff).toFixed(4)}%`);
+  }
+  await screenshot(page, 'instruments-fig1.png', {});
+
+  // The stopwatch runs on the simulated clock, and stops.
+  const started1 = await api(page, () => window.swarmlab.stopwatch('start'));
+  check('stopwatch("start") starts it', started1.running === true, JSON.stringify(started1));
+  const elapsed = await waitFor(page, (x) => (x.stopwatch.elapsed > 0.5 ? x.stopwatch.elapsed : null), 2000);
+  check('the stopwatch counts simulated time', elapsed !== null, `elapsed ${elapsed}`);
+  const stopped = await api(page, () => window.swarmlab.stopwatch('stop'));
+  await sleep(500);
+  const later = (await appState(page)).stopwatch;
+  check('stopped, it holds its reading', !later.running && later.elapsed === stopped.elapsed,
+        `${stopped.elapsed} -> ${later.elapsed}`);
+  const reset = await api(page, () => window.swarmlab.stopwatch('reset'));
+  check('reset sets it to zero', reset.elapsed === 0 && !reset.running, JSON.stringify(reset));
+  const badAction = await api(page, () => { try { window.swarmlab.stopwatch('go'); return null; } catch (e) { return e.message; } });
+  check('stopwatch() refuses an unknown action', /"go"/.test(badAction || ''), badAction || 'no error');
+
+  // select(): out of range and not an index are refused, naming the value; null deselects.
+  const bad = await api(page, () => { try { window.swarmlab.select(4); return null; } catch (e) { return e.message; } });
+  check('select(4) of 4 particles throws, naming 4 and the range', /particle 4 is out of range/.test(bad || '') && /0 to 3/.test(bad || ''), bad || 'no error');
+  const notIndex = await api(page, () => { try { window.swarmlab.select(-1); return null; } catch (e) { return e.message; } });
+  check('select(-1) throws, naming -1', /-1/.test(notIndex || ''), notIndex || 'no error');
+  await api(page, () => window.swarmlab.select(null));
+  const none = await appState(page);
+  check('select(null) deselects, and measured_period is null again', none.selected === null && none.measured_period === null,
+        JSON.stringify(none));
+
+  // P and T in a container preset.
+  await api(page, (p) => window.swarmlab.load(p), shipped('fig4-equilibration.json'));
+  const P = await waitFor(page, (x) => (typeof x.P === 'number' && typeof x.T === 'number' ? x : null), 3000);
+  check('P and T are numbers in a container preset', P !== null && P.P > 0 && P.T > 0,
+        P ? `P = ${P.P}, T = ${P.T}` : 'still null');
+
+  check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
+  check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
+}
+
+runSuite('instruments', 140_000, main);
