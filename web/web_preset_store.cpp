@@ -18,6 +18,19 @@ EM_JS(void, start_download, (const char* name, const char* text), {
   a.remove();
   setTimeout(function() { URL.revokeObjectURL(a.href); }, 60000);
 });
+
+// The same for any bytes (CSV, SVG, a PNG's binary), copied out of the wasm heap.
+EM_JS(void, start_download_bytes, (const char* name, const void* data, int size, const char* mime), {
+  var blob = new Blob([HEAPU8.slice(data, data + size)], {type : UTF8ToString(mime)});
+  var a = document.createElement('a');
+  a.href = URL.createObjectURL(blob);
+  a.download = UTF8ToString(name);
+  a.style.display = 'none';
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(function() { URL.revokeObjectURL(a.href); }, 60000);
+});
 // clang-format on
 
 class WebPresetStore final : public PresetStore {
@@ -36,6 +49,15 @@ class WebPresetStore final : public PresetStore {
   }
 
   const char* location_hint() const override { return "file name for Download preset"; }
+
+  std::string export_file(const std::string& location, const std::string& bytes,
+                          const char* mime) override {
+    const std::string name = location.substr(location.find_last_of("/\\") + 1);
+    start_download_bytes(name.c_str(), bytes.data(), int(bytes.size()), mime);
+    return {};
+  }
+
+  std::string default_folder() const override { return {}; }  // the browser's downloads
 
  private:
   std::unique_ptr<PresetStore> files_;

@@ -13,6 +13,7 @@
 #include "colour_map.h"
 #include "live_run.h"
 #include "preset_store.h"
+#include "save_dialog.h"
 
 namespace swarmlab {
 
@@ -28,6 +29,7 @@ struct ViewOptions {
   bool ghosts = true;  ///< analytic positions beside a numerical run
   bool axes = true;
   bool follow_cm = false;
+  bool auto_reframe = true;  ///< back away when an isolated run flies apart (App::update_camera)
   SpringOverlay springs = SpringOverlay::off;
 };
 
@@ -102,6 +104,7 @@ struct AppState {
   ColourScale colour_scale;
   ViewOptions view;
   PlotOptions plots;
+  SaveDialog save_dialog;  ///< save, export and quit dialogs (save_dialog.h)
   Layout layout;
   FrameStats stats;
 
