@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "swarm/fit.h"
+#include "swarm/power_law_adequacy.h"
 
 namespace swarmlab {
 
