@@ -36,6 +36,14 @@ std::string write(AppState& state, const SaveRequest& request, const std::string
   return error;
 }
 
+/// A CSV file named after the running preset; returns the file name proposed.
+std::string request_csv(AppState& state, std::string what, const char* suffix,
+                        std::string content) {
+  const std::string name = file_stem_of(state.preset.name) + suffix;
+  request_save(state, {std::move(what), name, std::move(content), "text/csv", false});
+  return name;
+}
+
 }  // namespace
 
 std::string file_stem_of(const std::string& name) {
@@ -75,25 +83,13 @@ void request_save_preset(AppState& state) {
 }
 
 std::string request_samples_csv(AppState& state) {
-  SaveRequest r;
-  r.what = "the samples as CSV (t,P,T,KE,PE,E,hits,R, as swarmlab run --csv)";
-  r.file_name = file_stem_of(state.preset.name) + "-samples.csv";
-  r.content = report::samples_csv(state.run->primary().samples());
-  r.mime = "text/csv";
-  std::string name = r.file_name;
-  request_save(state, std::move(r));
-  return name;
+  return request_csv(state, "the samples as CSV (t,P,T,KE,PE,E,hits,R, as swarmlab run --csv)",
+                     "-samples.csv", report::samples_csv(state.run->primary().samples()));
 }
 
 std::string request_stages_csv(AppState& state) {
-  SaveRequest r;
-  r.what = "the expansion stages as CSV (R,V,P,T,E,hits)";
-  r.file_name = file_stem_of(state.preset.name) + "-stages.csv";
-  r.content = report::stages_csv(state.run->primary().stages());
-  r.mime = "text/csv";
-  std::string name = r.file_name;
-  request_save(state, std::move(r));
-  return name;
+  return request_csv(state, "the expansion stages as CSV (R,V,P,T,E,hits)", "-stages.csv",
+                     report::stages_csv(state.run->primary().stages()));
 }
 
 void request_quit(AppState& state) {
