@@ -9,7 +9,6 @@
 
 #include "labels/system_labels.h"
 #include "panels.h"
-#include "swarm/regime.h"
 
 namespace swarmlab {
 namespace {
