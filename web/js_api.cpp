@@ -7,6 +7,7 @@
 #include <string>
 
 #include "storage_controls.h"
+#include "ui/save_dialog.h"
 #include "web_app.h"
 #include "web_preset_store.h"
 
@@ -40,7 +41,7 @@ std::string download_preset(AppState& state) {
 namespace {
 
 // The strings handed to JavaScript stay valid until the next call of the same function.
-std::string preset_text, open_error, download_name, shipped_text, rect_text;
+std::string preset_text, open_error, download_name, shipped_text, rect_text, csv_name;
 
 }  // namespace
 
@@ -115,6 +116,13 @@ EMSCRIPTEN_KEEPALIVE void swarmlab_stopwatch(int action) {
   if (action == 1) w.stop(t);
   if (action == 2) w.lap(t);
   if (action == 3) w.reset();
+}
+
+/// swarmlab.exportCsv(): the samples as CSV (the CLI's columns) as a download; its file name.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_export_csv() {
+  swarmlab::App* app = swarmlab::web_app();
+  csv_name = app ? swarmlab::request_samples_csv(app->state()) : std::string();
+  return csv_name.c_str();
 }
 
 /// Where the scenario panel's button `label` was drawn: "x y width height" in CSS pixels, or

@@ -18,6 +18,8 @@
 //   swarmlab.openLink(hash) opens the preset of a fragment; Promise of "" or the error message
 //   swarmlab.openFile()    the Open preset... button: a file picker, then as load()
 //   swarmlab.download()    the Download preset button; returns the file name
+//   swarmlab.exportCsv()   the samples as CSV (swarmlab run --csv's columns) as a download;
+//                          returns the file name
 //   swarmlab.shipped()     the preset list: [{ id: file name, name }]
 //   swarmlab.select(i)     selects particle i (0-based; null: none) as a click does, opening its
 //                          card and period meter; throws Error naming i when out of range
@@ -192,6 +194,7 @@
       input.click();
     },
     download: function () { check(); return Module.ccall('swarmlab_download', 'string', [], []); },
+    exportCsv: function () { check(); return Module.ccall('swarmlab_export_csv', 'string', [], []); },
     buttonRect: function (label) {
       check();
       var r = Module.ccall('swarmlab_button_rect', 'string', ['string'], [label]).split(' ').map(Number);
@@ -273,6 +276,12 @@
       if (!Module.swarmlabMainStarted) return;
       var pending = SwarmlabLink.read(location.hash);
       if (pending) pending.then(openLinkResult);
+    });
+    // Leaving the page with edits asks first; without edits it does not (nothing is lost).
+    window.addEventListener('beforeunload', function (e) {
+      if (!Module.swarmlabMainStarted || !api.state().edited) return;
+      e.preventDefault();
+      e.returnValue = '';
     });
     // A preset file dropped on the page opens like Open preset.
     window.addEventListener('dragover', function (e) { e.preventDefault(); });

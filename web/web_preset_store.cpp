@@ -6,9 +6,10 @@ namespace swarmlab {
 namespace {
 
 // A Blob behind an <a download>: the browser saves it in its downloads folder (or asks where).
+// Any bytes (a preset, CSV, SVG, a PNG's binary), copied out of the wasm heap.
 // clang-format off
-EM_JS(void, start_download, (const char* name, const char* text), {
-  var blob = new Blob([UTF8ToString(text)], {type : 'application/json'});
+EM_JS(void, start_download_bytes, (const char* name, const void* data, int size, const char* mime), {
+  var blob = new Blob([HEAPU8.slice(data, data + size)], {type : UTF8ToString(mime)});
   var a = document.createElement('a');
   a.href = URL.createObjectURL(blob);
   a.download = UTF8ToString(name);
@@ -31,11 +32,22 @@ class WebPresetStore final : public PresetStore {
   swarm::PresetParse open(const std::string& location) override { return files_->open(location); }
 
   std::string save(const std::string& location, const std::string& json) override {
-    start_download(download_file_name(location).c_str(), (json + "\n").c_str());
+    const std::string text = json + "\n";
+    start_download_bytes(download_file_name(location).c_str(), text.data(), int(text.size()),
+                         "application/json");
     return {};
   }
 
   const char* location_hint() const override { return "file name for Download preset"; }
+
+  std::string export_file(const std::string& location, const std::string& bytes,
+                          const char* mime) override {
+    const std::string name = location.substr(location.find_last_of("/\\") + 1);
+    start_download_bytes(name.c_str(), bytes.data(), int(bytes.size()), mime);
+    return {};
+  }
+
+  std::string default_folder() const override { return {}; }  // the browser's downloads
 
  private:
   std::unique_ptr<PresetStore> files_;

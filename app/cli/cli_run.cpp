@@ -9,6 +9,7 @@
 #include "progress_bar.h"
 #include "report/plot_files.h"
 #include "report/report.h"
+#include "report/run_csv.h"
 #include "result_json.h"
 #include "swarm/printable_text.h"
 #include "swarm/resource_budget.h"
@@ -156,7 +157,7 @@ int run_command(const RunOptions& options) {
     if (err.empty() && !options.out_path.empty())
       err = files.stage(options.out_path, result_json(preset, runs));
     if (err.empty() && !options.csv_path.empty())
-      err = files.stage(options.csv_path, samples_csv(run));
+      err = files.stage(options.csv_path, report::samples_csv(run.samples()));
     if (err.empty()) err = files.commit();
     if (!err.empty()) {
       std::fprintf(stderr, "error: %s\n", err.c_str());

@@ -1,7 +1,6 @@
 #include "result_json.h"
 
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 namespace swarmlab {
 namespace {
@@ -81,17 +80,6 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
     particles.push_back({{"m", p.m}, {"r", vec(p.r)}, {"v", vec(p.v)}});
   j["final"] = {{"t", sys.t}, {"particles", particles}};
   return j.dump(1) + "\n";
-}
-
-std::string samples_csv(const swarm::Run& run) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size\n";
-  for (const swarm::Sample& x : run.samples())
-    out << x.t << ',' << x.P << ',' << x.T << ',' << x.KE << ',' << x.PE << ',' << x.E << ','
-        << x.hits << ',' << x.R << ',' << x.books.wall_work << ',' << x.books.wall_heat << ','
-        << x.books.drag_loss << ',' << x.cm_height << ',' << x.size << '\n';
-  return out.str();
 }
 
 }  // namespace swarmlab

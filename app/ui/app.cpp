@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "panels.h"
+#include "plot_export.h"
 #include "scene_overlay.h"
 #include "shortcuts.h"
 #include "timeline_strip.h"
@@ -91,6 +92,8 @@ void App::update(double real_seconds) {
   build_particles();
   smooth(stats.scene_ms, milliseconds_since(start));
   draw_scene_overlay(state_);
+  handle_plot_export(state_);
+  draw_save_dialogs(state_);
 }
 
 void App::advance_simulation(double seconds) {
@@ -202,7 +205,13 @@ void App::layout_windows() {
           s.shipped_id = p.id;
         }
       ImGui::Separator();
-      if (ImGui::MenuItem("Quit")) quit_ = true;
+      if (ImGui::MenuItem("Save preset...")) request_save_preset(s);
+      if (ImGui::MenuItem("Export samples as CSV...")) request_samples_csv(s);
+      if (ImGui::MenuItem("Export stages as CSV...", nullptr, false,
+                          !s.run->primary().stages().empty()))
+        request_stages_csv(s);
+      ImGui::Separator();
+      if (ImGui::MenuItem("Quit")) request_quit(s);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -398,6 +407,18 @@ void App::update_camera() {
     s.camera.frame(s.framed_radius, aspect);
     framed_aspect_ = aspect;
   }
+  // An isolated run that flies apart (Euler, J < 0) is followed out rather than lost.
+  if (s.view.auto_reframe && !s.preset.container_radius) {
+    const swarm::Vec3 cm = swarm::cm_position(system);
+    double extent = 0;
+    for (const swarm::Particle& p : system.particles) extent = std::max(extent, (p.r - cm).norm());
+    const float wanted = float(1.15 * extent);
+    if (std::isfinite(wanted) && wanted > 1.5f * s.framed_radius) {
+      s.camera.set_target(cm.cast<float>());
+      s.camera.scale_distance(wanted / s.framed_radius);
+      s.framed_radius = wanted;
+    }
+  }
   // The camera backs away as an expansion grows the container, keeping the whole wall in view.
   if (const auto R = s.run->primary().engine().container_radius(); R && *R > s.framed_radius) {
     s.camera.scale_distance(float(*R) / s.framed_radius);
@@ -426,7 +447,8 @@ void App::build_particles() {
     particles_[i] = {float(p.r.x()), float(p.r.y()), float(p.r.z()), radius,
                      s.colour_scale.colour(q)};
   }
-  s.colour_scale.follow(lo, hi);
+  // Paused, the scale stays put (a colour means the same value while one looks at it).
+  if (s.playing || s.step_once || !s.colour_scale.initialised) s.colour_scale.follow(lo, hi);
 
   ghosts_.clear();
   if (swarm::Run* exact = s.run->analytic_reference(); exact && s.view.ghosts) {

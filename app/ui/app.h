@@ -22,10 +22,12 @@ class App {
 
   const std::string& error() const { return error_; }
   AppState& state() { return state_; }
-  bool quit_requested() const { return quit_; }
+  bool quit_requested() const { return quit_ || state_.save_dialog.quit_confirmed; }
   /// The fingers (fed by the main loop) and what they did this frame.
   TouchGestures& touch() { return touch_; }
   void set_touch_frame(const TouchFrame& frame) { touch_frame_ = frame; }
+  /// The window's close button: quits, or first asks when there are unsaved edits.
+  void request_close() { request_quit(state_); }
 
   /// Between ImGui::NewFrame() and ImGui::Render(): runs the simulation for one frame that
   /// took real_seconds and builds the whole UI.

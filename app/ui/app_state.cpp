@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "labels/system_labels.h"
 #include "swarm/regime.h"
 
 namespace swarmlab {
@@ -65,6 +66,14 @@ std::string AppState::open_json(const std::string& json, std::string from) {
     return parsed.error;
   }
   open(*parsed.preset, std::move(from));
+  // A link or a file is not the shipped preset whose name it may carry: it is edited unless it
+  // equals one, and Reset returns to the shipped preset of its name when there is one.
+  std::vector<swarm::Preset> shipped_presets;
+  for (const ShippedPreset& s : shipped) {
+    shipped_presets.push_back(s.preset);
+    if (s.preset.name == preset.name) origin = s.preset;
+  }
+  modified = labels::differs_from_shipped(preset, shipped_presets);
   status.clear();
   return {};
 }

@@ -16,6 +16,7 @@
 #include "preset_store.h"
 #include "screen_layout.h"
 #include "time_travel.h"
+#include "save_dialog.h"
 
 namespace swarmlab {
 
@@ -31,6 +32,7 @@ struct ViewOptions {
   bool ghosts = true;  ///< analytic positions beside a numerical run
   bool axes = true;
   bool follow_cm = false;
+  bool auto_reframe = true;  ///< back away when an isolated run flies apart (App::update_camera)
   SpringOverlay springs = SpringOverlay::off;
 };
 
@@ -128,6 +130,7 @@ struct AppState {
   ColourScale colour_scale;
   ViewOptions view;
   PlotOptions plots;
+  SaveDialog save_dialog;  ///< save, export and quit dialogs (save_dialog.h)
   Layout layout;
   FrameStats stats;
   /// Stopwatch, period meter, P and T (update_instruments feeds them every frame).

@@ -52,6 +52,7 @@ void ColourScale::follow(double data_lo, double data_hi) {
     data_lo = mid - half;
     data_hi = mid + half;
   }
+  if (locked && initialised) return;
   if (!initialised) {
     lo = data_lo;
     hi = data_hi;

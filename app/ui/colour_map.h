@@ -35,6 +35,8 @@ struct ParticleQuantity {
 struct ColourScale {
   double lo = 0, hi = 1;
   bool initialised = false;
+  /// Fixed by the user: a colour keeps meaning the same value (follow() changes nothing).
+  bool locked = false;
 
   void follow(double data_lo, double data_hi);
   float position(double value) const;  ///< 0 at lo, 1 at hi

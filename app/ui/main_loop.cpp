@@ -8,6 +8,7 @@
 
 #include "fonts.h"
 #include "gl_api.h"
+#include "plot_export.h"
 
 namespace swarmlab {
 namespace {
@@ -59,10 +60,11 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
         (event.type == SDL_MOUSEBUTTONDOWN && event.button.which != SDL_TOUCH_MOUSEID))
       f.app->state().layout.touch = false;
     ImGui_ImplSDL2_ProcessEvent(&event);
-    if (event.type == SDL_QUIT) f.running = false;
+    // Closing asks first when there are unsaved edits (save_dialog.h).
+    if (event.type == SDL_QUIT) f.app->request_close();
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&
         event.window.windowID == SDL_GetWindowID(f.window.window))
-      f.running = false;
+      f.app->request_close();
   }
 
   // A new UI scale rebuilds the font atlas, which only may happen between frames, and not
@@ -94,6 +96,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   f.app->render_scene(io.DisplayFramebufferScale.y, io.DisplaySize.y);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  capture_plot_png(f.app->state());  // a plot saved as PNG: its pixels, before they are shown
   if (before_present) before_present(f);
   SDL_GL_SwapWindow(f.window.window);
   if (f.app->quit_requested()) f.running = false;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "fit_quality.h"
 #include "panels.h"
 #include "plot_widget.h"
 #include "swarm/regime.h"
@@ -180,6 +181,7 @@ void draw_expansion_tab(AppState& state, float plot_height) {
                   fit.intercept, fit.slope, fit.slope_stderr, fit.r_squared, fit.used.size());
       ImGui::EndTooltip();
     }
+    draw_fit_quality((std::string(id) + " residuals").c_str(), x, fit, log, 0.45f * plot_height);
   };
   plot("pv", "P against V", "V (length\u00b3)", V, "P (force/area)", P, fits.P_V, "P \u221d V",
        kPressure);

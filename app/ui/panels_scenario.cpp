@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <string>
 
+#include "labels/system_labels.h"
 #include "panels.h"
 
 namespace swarmlab {
@@ -63,10 +64,11 @@ void draw_scenario_panel(AppState& state) {
 
   ImGui::Spacing();
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.45f, 1.0f));
-  ImGui::TextWrapped("%s%s",
-                     state.preset.name.empty() ? "(unnamed preset)" : state.preset.name.c_str(),
-                     state.modified ? "  (edited)" : "");
+  ImGui::TextWrapped("%s", labels::title(state.preset, state.modified).c_str());
   ImGui::PopStyleColor();
+  // The description was written for the preset as shipped; after an edit it may no longer hold.
+  if (state.modified && !state.preset.description.empty())
+    ImGui::TextDisabled("As shipped (before the edits):");
   if (!state.preset.description.empty()) {
     // ImGui wraps the whole text every frame: a description of a million characters (from a
     // link or a file) would take the frame rate down to one a second, so a long one is cut.
@@ -101,20 +103,16 @@ void draw_scenario_panel(AppState& state) {
       }
     }
     ImGui::SameLine();
-    if (ImGui::Button("Save")) {
-      const std::string error =
-          state.store->save(state.location, swarm::preset_to_json(state.preset));
-      state.status = error.empty() ? "Saved " + state.location : error;
-      state.status_is_error = !error.empty();
-      if (error.empty()) {
-        state.origin = state.preset;
-        state.modified = false;
-      }
-    }
+    if (ImGui::Button("Save...")) request_save_preset(state);
     help_marker(
-        "Open reads a preset file; Save writes the running preset (every edit you made) as a "
-        "preset file that 'swarmlab run' and the browser run identically. Files are written "
-        "whole or not at all.");
+        "Open reads a preset file; Save asks for a name, folder and file name and writes the "
+        "running preset (every edit you made) as a preset file that 'swarmlab run' and the "
+        "browser run identically. Files are written whole or not at all.");
+  }
+  if (ImGui::Button("Export samples CSV")) request_samples_csv(state);
+  if (!state.run->primary().stages().empty()) {
+    ImGui::SameLine();
+    if (ImGui::Button("Export stages CSV")) request_stages_csv(state);
   }
   if (!state.status.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, state.status_is_error ? ImVec4(1, 0.45f, 0.4f, 1)

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "labels/system_labels.h"
 #include "panels.h"
 #include "timeline_strip.h"
 #include "swarm/regime.h"
@@ -124,17 +125,12 @@ void draw_transport_bar(AppState& state) {
   ImGui::SameLine();
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
-  const double rate = swarm::omega_of(k);
-  if (swarm::regime_of(k) == swarm::Regime::attractive)
-    ImGui::Text("t = %.3f   \u03c9t/2\u03c0 = %.3f", t, t / swarm::period_of(k));
-  else if (rate > 0)
-    ImGui::Text("t = %.3f   \u03a9t = %.3f", t, rate * t);
-  else
-    ImGui::Text("t = %.3f", t);
+  ImGui::TextUnformatted(labels::clock_text(state.preset, k, t).c_str());
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "Simulated time, and in periods of the common oscillation "
-        "(\u03c9 = \u221a(J M)); for J < 0 in e-foldings \u03a9t.");
+        "Simulated time; for an isolated system also in periods of the common oscillation "
+        "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "
+        "wall changes the motion and neither applies.");
   if (state.run->finished()) {
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "end of run");

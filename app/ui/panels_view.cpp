@@ -20,6 +20,15 @@ void draw_view_panel(AppState& state) {
     v.colour_by = ColourBy(colour);
     state.colour_scale = ColourScale{};
   }
+  ImGui::Checkbox("lock colour scale", &state.colour_scale.locked);
+  help_marker(
+      "Keep the colour scale's ends where they are, so that a colour means one value for the "
+      "whole run (it never rescales while paused). Choosing another quantity unlocks it.");
+  ImGui::SameLine();
+  ImGui::Checkbox("reframe when it flies apart", &v.auto_reframe);
+  help_marker(
+      "Back the camera away when an isolated run grows past the view (Euler, J < 0), so that "
+      "the particles stay in sight.");
   ImGui::SetNextItemWidth(0.5f * ImGui::GetContentRegionAvail().x);
   ImGui::SliderFloat("particle size", &v.particle_size, 0.1f, 5.0f, "x %.2f",
                      ImGuiSliderFlags_Logarithmic);

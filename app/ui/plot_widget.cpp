@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "plot_export.h"
 #include "plotting/axis_ticks.h"
 
 namespace swarmlab {
@@ -84,10 +85,33 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   const float width = std::max(ImGui::GetContentRegionAvail().x, 10 * font);
   ImGui::InvisibleButton("plot", ImVec2(width, height));
   const bool hovered = ImGui::IsItemHovered();
+  const bool right_clicked = ImGui::IsItemClicked(ImGuiMouseButton_Right);
   ImDrawList* draw = ImGui::GetWindowDrawList();
 
+  // The legend goes in rows between the title and the frame, never over the data.
+  struct LegendEntry {
+    std::string label;
+    ImU32 colour;
+    bool dashed;
+  };
+  std::vector<LegendEntry> legend;
+  if (spec.series.size() > 1 || !spec.fits.empty())
+    for (const PlotSeries& s : spec.series) legend.push_back({s.label, s.colour, false});
+  for (const PowerLawLine& f : spec.fits) legend.push_back({f.label, f.colour, true});
+  const float legend_left = origin.x + 0.5f * font, legend_right = origin.x + width - 0.5f * font;
+  int legend_rows = 0;
+  {
+    float x = legend_right;  // forces a first row
+    for (const LegendEntry& e : legend) {
+      const float w = 2.0f * font + ImGui::CalcTextSize(e.label.c_str()).x + 0.8f * font;
+      if (x + w > legend_right) ++legend_rows, x = legend_left;
+      x += w;
+    }
+  }
+  const float legend_top = origin.y + 1.3f * font;
   const float left = origin.x + 4.2f * font, right = origin.x + width - 0.6f * font;
-  const float top = origin.y + 1.5f * font, bottom = origin.y + height - 2.4f * font;
+  const float top = legend_top + 1.2f * font * float(legend_rows) + 0.4f * font;
+  const float bottom = origin.y + height - 2.4f * font;
   draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), kPlotBackground, 4.0f);
   draw->AddText(ImVec2(origin.x + 0.5f * font, origin.y + 0.2f * font), kText, spec.title.c_str());
 
@@ -102,10 +126,15 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
 
   // Grid, ticks and their labels: the figures' tick rule, with as many ticks as the labels
   // leave room for.
+  // An empty plot has no range to number: its axes stay blank (no +-1e-9 ticks).
   const plotting::AxisTicks xt =
-      plotting::ticks_for(xs.range(), xs.log, std::max(2, int((right - left) / (5.5f * font))));
+      has_data ? plotting::ticks_for(xs.range(), xs.log,
+                                     std::max(2, int((right - left) / (5.5f * font))))
+               : plotting::AxisTicks{};
   const plotting::AxisTicks yt =
-      plotting::ticks_for(ys.range(), ys.log, std::max(2, int((bottom - top) / (2.2f * font))));
+      has_data ? plotting::ticks_for(ys.range(), ys.log,
+                                     std::max(2, int((bottom - top) / (2.2f * font))))
+               : plotting::AxisTicks{};
   for (std::size_t i = 0; i < xt.values.size(); ++i) {
     const float px = xs.pixel(xt.values[i]);
     if (px < left - 0.5f || px > right + 0.5f) continue;
@@ -159,9 +188,22 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       line.push_back(ImVec2(column, column_lo));
       if (column_hi != column_lo) line.push_back(ImVec2(column, column_hi));
     };
+    auto end_line = [&] {
+      flush();
+      if (line.size() >= 2)
+        draw->AddPolyline(line.data(), int(line.size()), s.colour, 0, s.thickness);
+      else if (line.size() == 1)
+        draw->AddCircleFilled(line[0], 0.18f * font, s.colour);
+      line.clear();
+      column = -1e9f;
+    };
     for (std::size_t i = 0; i < n; ++i) {
       const double xv = (*s.x)[i], yv = (*s.y)[i];
-      if (!xs.usable(xv) || !ys.usable(yv)) continue;
+      if (!xs.usable(xv) || !ys.usable(yv)) {
+        // A missing value (no wall hit in the interval) is a gap, not a straight line over it.
+        if (!s.points && std::isnan(yv)) end_line();
+        continue;
+      }
       const float px = xs.pixel(xv), py = ys.pixel(yv);
       if (s.points) {
         if (px >= left - 4 && px <= right + 4)
@@ -178,11 +220,7 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
         column_hi = std::max(column_hi, py);
       }
     }
-    flush();
-    if (line.size() >= 2)
-      draw->AddPolyline(line.data(), int(line.size()), s.colour, 0, s.thickness);
-    else if (line.size() == 1)
-      draw->AddCircleFilled(line[0], 0.18f * font, s.colour);
+    end_line();
   }
   for (const PowerLawLine& f : spec.fits) {
     std::vector<ImVec2> curve;
@@ -195,28 +233,25 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   }
   draw->PopClipRect();
 
-  // Legend, top right inside the frame.
-  float legend_y = top + 0.3f * font;
-  auto legend_row = [&](const std::string& label, ImU32 colour, bool dashed) {
-    const float w = ImGui::CalcTextSize(label.c_str()).x;
-    const float x = right - w - 0.5f * font;
-    draw->AddRectFilled(ImVec2(x - 1.9f * font, legend_y - 0.1f * font),
-                        ImVec2(right - 0.2f * font, legend_y + 1.1f * font),
-                        IM_COL32(22, 26, 34, 200), 3.0f);
-    if (dashed)
-      for (int k = 0; k < 3; ++k)
-        draw->AddLine(ImVec2(x - 1.6f * font + k * 0.45f * font, legend_y + 0.5f * font),
-                      ImVec2(x - 1.35f * font + k * 0.45f * font, legend_y + 0.5f * font), colour,
-                      2.0f);
-    else
-      draw->AddLine(ImVec2(x - 1.6f * font, legend_y + 0.5f * font),
-                    ImVec2(x - 0.4f * font, legend_y + 0.5f * font), colour, 3.0f);
-    draw->AddText(ImVec2(x, legend_y), kText, label.c_str());
-    legend_y += 1.2f * font;
-  };
-  if (spec.series.size() > 1 || !spec.fits.empty())
-    for (const PlotSeries& s : spec.series) legend_row(s.label, s.colour, false);
-  for (const PowerLawLine& f : spec.fits) legend_row(f.label, f.colour, true);
+  // Legend: left to right in the strip above the frame, wrapping as counted above.
+  {
+    float x = legend_left, y = legend_top;
+    bool first = true;
+    for (const LegendEntry& e : legend) {
+      const float w = 2.0f * font + ImGui::CalcTextSize(e.label.c_str()).x + 0.8f * font;
+      if (!first && x + w > legend_right) x = legend_left, y += 1.2f * font;
+      first = false;
+      const float mid = y + 0.5f * font;
+      if (e.dashed)
+        for (int k = 0; k < 3; ++k)
+          draw->AddLine(ImVec2(x + k * 0.45f * font, mid), ImVec2(x + 0.25f * font + k * 0.45f * font, mid),
+                        e.colour, 2.0f);
+      else
+        draw->AddLine(ImVec2(x, mid), ImVec2(x + 1.2f * font, mid), e.colour, 3.0f);
+      draw->AddText(ImVec2(x + 1.6f * font, y), kText, e.label.c_str());
+      x += w;
+    }
+  }
 
   // Hover: a cross-hair and, for each series, the point nearest in x.
   const ImVec2 mouse = ImGui::GetIO().MousePos;
@@ -224,6 +259,9 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       mouse.y <= bottom) {
     draw->AddLine(ImVec2(mouse.x, top), ImVec2(mouse.x, bottom), IM_COL32(255, 255, 255, 70));
     draw->AddLine(ImVec2(left, mouse.y), ImVec2(right, mouse.y), IM_COL32(255, 255, 255, 70));
+    const bool right_half = mouse.x > 0.5f * (left + right);
+    ImGui::SetNextWindowPos(ImVec2(mouse.x + (right_half ? -1.5f : 1.5f) * font, origin.y),
+                            ImGuiCond_Always, ImVec2(right_half ? 1.0f : 0.0f, 1.0f));
     ImGui::BeginTooltip();
     ImGui::Text("%s = %.5g", spec.x.label.c_str(), xs.value(mouse.x));
     ImGui::Text("cursor: %s = %.5g", spec.y.label.c_str(), ys.value(mouse.y));
@@ -246,6 +284,7 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
     }
     ImGui::EndTooltip();
   }
+  plot_export_menu(spec, origin, ImVec2(origin.x + width, origin.y + height), right_clicked);
   ImGui::PopID();
 }
 

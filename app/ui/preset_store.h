@@ -29,6 +29,13 @@ class PresetStore {
   virtual std::string save(const std::string& location, const std::string& json) = 0;
   /// What the open/save field should say, e.g. "path" on the desktop.
   virtual const char* location_hint() const = 0;
+  /// Writes a file the user saves or exports (a preset, CSV, SVG, PNG): on the desktop to the
+  /// path given, its folder made if missing, whole or not at all; in the browser as a download
+  /// named after the path's last part. Returns an error message, empty on success.
+  virtual std::string export_file(const std::string& location, const std::string& bytes,
+                                  const char* mime) = 0;
+  /// The folder the save dialog starts in; empty where the browser downloads instead.
+  virtual std::string default_folder() const = 0;
 };
 
 /// Files on disk: shipped presets from `shipped_directory`, saving atomically.

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 
 #include "files/atomic_file.h"
@@ -37,6 +38,22 @@ class FilePresetStore final : public PresetStore {
   }
 
   const char* location_hint() const override { return "path/to/preset.json"; }
+
+  std::string export_file(const std::string& location, const std::string& bytes,
+                          const char*) override {
+    const std::filesystem::path folder = std::filesystem::path(location).parent_path();
+    std::error_code error;
+    if (!folder.empty()) std::filesystem::create_directories(folder, error);
+    if (error) return folder.string() + ": cannot make the folder (" + error.message() + ")";
+    return write_file_atomically(location, bytes);
+  }
+
+  // Not the working directory, which is wherever the app happened to be started from.
+  std::string default_folder() const override {
+    const char* home = std::getenv("HOME");
+    if (!home || !*home) return std::filesystem::current_path().string();
+    return (std::filesystem::path(home) / "Documents" / "Swarm Lab").string();
+  }
 
  private:
   std::string directory_;

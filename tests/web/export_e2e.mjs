@@ -1,0 +1,79 @@
+// Browser tests of export and of labels that stay true (issue 13): swarmlab.exportCsv()
+// downloads the samples with the columns of `swarmlab run --csv`; a preset opened from a link
+// is "edited" unless it is a shipped one as shipped; leaving the page asks only after an edit.
+import { spawnSync } from 'node:child_process';
+import { existsSync, readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import * as harness from './harness.mjs';
+
+const { check, openApp, launchBrowser, runSuite, base64url, shipped, pageErrors, consoleErrors,
+        cliPath } = harness;
+
+// The header line `swarmlab run --csv` writes for the preset (null when the CLI is not built).
+function cliCsvHeader(presetJson) {
+  if (!existsSync(cliPath)) return null;
+  const dir = mkdtempSync(join(tmpdir(), 'swarmlab-export-'));
+  writeFileSync(join(dir, 'p.json'), presetJson);
+  const r = spawnSync(cliPath, ['run', join(dir, 'p.json'), '--csv', join(dir, 'p.csv'), '--quiet'],
+                      { encoding: 'utf8', timeout: 60_000 });
+  if (r.status !== 0) return null;
+  return readFileSync(join(dir, 'p.csv'), 'utf8').split('\n')[0];
+}
+
+// Whether the page's beforeunload handler would ask (it cancels the event only with edits).
+const beforeUnloadArmed = (page) => page.evaluate(() => {
+  const e = new Event('beforeunload', { cancelable: true });
+  window.dispatchEvent(e);
+  return e.defaultPrevented;
+});
+
+async function main(url) {
+  await launchBrowser();
+  const { page, started, error } = await openApp(url, 'export');
+  if (!check('the app starts', started, error || '')) return;
+  const fig1 = shipped('fig1-four-masses.json');
+
+  // 1. Nothing edited yet: not edited, leaving does not ask.
+  let st = await page.evaluate(() => window.swarmlab.state());
+  check('a shipped preset as opened is not edited', st.edited === false, JSON.stringify(st));
+  check('beforeunload is not armed before an edit', (await beforeUnloadArmed(page)) === false);
+
+  // 2. A link to the shipped preset as shipped: still not edited.
+  const plain = await page.evaluate((h) => window.swarmlab.openLink(h),
+                                    '#preset=' + base64url(Buffer.from(JSON.stringify(fig1))));
+  st = await page.evaluate(() => window.swarmlab.state());
+  check('a link to the shipped preset as shipped is not edited', plain === '' && st.edited === false,
+        `error "${plain}", ${JSON.stringify(st)}`);
+
+  // 3. A link that carries the shipped name with another J: edited, and leaving asks.
+  const changed = { ...fig1, J: -0.5 };
+  const err = await page.evaluate((h) => window.swarmlab.openLink(h),
+                                  '#preset=' + base64url(Buffer.from(JSON.stringify(changed))));
+  st = await page.evaluate(() => window.swarmlab.state());
+  check('a link-opened edited preset shows edited: true in state()', err === '' && st.edited === true &&
+        st.name === fig1.name, `error "${err}", ${JSON.stringify(st)}`);
+  check('beforeunload is armed after the edit', (await beforeUnloadArmed(page)) === true);
+
+  // 4. exportCsv(): a download named as returned, with the CLI's header for the same preset.
+  await page.waitForFunction(() => window.swarmlab.time() > 0.1, null, { timeout: 30_000 });
+  const [download, name] = await Promise.all([
+    page.waitForEvent('download', { timeout: 15_000 }).catch(() => null),
+    page.evaluate(() => window.swarmlab.exportCsv())]);
+  const text = download ? readFileSync(await download.path(), 'utf8') : '';
+  const lines = text.split('\n').filter(Boolean);
+  const running = await page.evaluate(() => window.swarmlab.preset());
+  const header = cliCsvHeader(running);
+  check('exportCsv() downloads a .csv named as it returns', download && name.endsWith('.csv') &&
+        download.suggestedFilename() === name, `returned "${name}", downloaded "${download && download.suggestedFilename()}"`);
+  check('the CSV header equals `swarmlab run --csv` on the same preset',
+        header !== null && lines[0] === header, `page "${lines[0]}", CLI "${header}"`);
+  check('every CSV row has the header\'s columns, numbers only', lines.length >= 2 &&
+        lines.slice(1).every((l) => l.split(',').length === 8 && l.split(',').every((f) => f !== '' && isFinite(Number(f)))),
+        `${lines.length - 1} rows`);
+
+  check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
+  check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
+}
+
+await runSuite('export_e2e', 120_000, main);
