@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "Run this many frames, then exit (0: run until closed)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--screenshot", screenshot, "After the last frame, save the window as PNG");
+  bool presentation = false;
+  app.add_flag("--presentation", presentation,
+               "Start in presentation mode: light theme, large text, the view and one plot");
 
   swarmlab::RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a preset headless and report the results");
@@ -61,7 +64,7 @@ int main(int argc, char** argv) {
   if (*bench_cmd) return swarmlab::bench_command(bench);
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
-  return swarmlab::run_desktop({window_preset, frames, screenshot});
+  return swarmlab::run_desktop({window_preset, frames, screenshot, presentation});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

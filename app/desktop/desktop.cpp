@@ -13,6 +13,7 @@
 #include "screenshot.h"
 #include "ui/main_loop.h"
 #include "ui/preset_store.h"
+#include "ui/presentation.h"
 
 namespace swarmlab {
 namespace {
@@ -61,6 +62,7 @@ int run_desktop(const DesktopOptions& options) {
     close_window(f.window);
     return 1;
   }
+  if (options.presentation) set_presentation(f.app->state(), true);
 
   // The first frames build fonts and buffers; the timing summary leaves them out.
   constexpr int kWarmUp = 5;

@@ -9,6 +9,7 @@ struct DesktopOptions {
   std::string preset_path;      ///< preset to open; empty: the first shipped preset
   int frames;                   ///< run this many frames, then exit; 0: until the window closes
   std::string screenshot_path;  ///< after the last frame, save the window as PNG; empty: none
+  bool presentation = false;    ///< start in presentation mode (light theme, large, one plot)
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "panels.h"
+#include "presentation.h"
 #include "scene_overlay.h"
 #include "shortcuts.h"
 #include "swarm/system.h"
@@ -146,6 +147,7 @@ void App::layout_windows() {
       ImGui::MenuItem("Plots", "2", &s.layout.plots);
       if (ImGui::MenuItem("Larger UI", "Ctrl +")) s.layout.step_ui_scale(+1);
       if (ImGui::MenuItem("Smaller UI", "Ctrl -")) s.layout.step_ui_scale(-1);
+      draw_presentation_menu_items(s);
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
@@ -292,7 +294,8 @@ void App::build_particles() {
     hi = std::max(hi, q);
     // Spheres of one density: the radius goes as the cube root of the mass.
     particles_[i] = {float(p.r.x()), float(p.r.y()), float(p.r.z()),
-                     base * float(std::cbrt(p.m * inverse_heaviest)), s.colour_scale.colour(q)};
+                     base * float(std::cbrt(p.m * inverse_heaviest)),
+                     particle_colour(s.colour_scale.position(q), s.presentation.theme).packed()};
   }
   s.colour_scale.follow(lo, hi);
 
@@ -303,7 +306,7 @@ void App::build_particles() {
     for (const swarm::Particle& p : e.particles)
       ghosts_.push_back({float(p.r.x()), float(p.r.y()), float(p.r.z()),
                          1.35f * base * float(std::cbrt(p.m * inverse_heaviest)),
-                         IM_COL32(235, 240, 255, 255)});
+                         palette(s.presentation.theme).ghost.packed()});
   }
 }
 

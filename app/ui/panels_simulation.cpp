@@ -8,6 +8,8 @@
 #include <string>
 
 #include "panels.h"
+#include "presentation.h"
+#include "theme_style.h"
 #include "swarm/regime.h"
 
 namespace swarmlab {
@@ -87,7 +89,7 @@ void draw_simulation_panel(AppState& state) {
       swarm::is_pairwise(state.preset.method) ||
       std::any_of(state.preset.compare.begin(), state.preset.compare.end(), swarm::is_pairwise);
   if (pairwise && state.run->system().particles.size() > 2000) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.35f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
     ImGui::TextWrapped(
         "The numerical methods sum over all %zu^2 / 2 pairs every step: expect a "
         "slow simulation. The analytic method is O(N).",
@@ -114,6 +116,8 @@ void draw_transport_bar(AppState& state) {
                       ImGuiSliderFlags_Logarithmic);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
+  ImGui::SameLine();
+  draw_sound_toggle(state);
 
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
@@ -130,10 +134,10 @@ void draw_transport_bar(AppState& state) {
         "(\u03c9 = \u221a(J M)); for J < 0 in e-foldings \u03a9t.");
   if (state.run->finished()) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "end of run");
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "end of run");
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "(%.0f%% of the speed)",
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "(%.0f%% of the speed)",
                        100 * state.stats.speed_ratio);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("The steps of this speed do not fit in a frame on this machine.");
