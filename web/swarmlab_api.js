@@ -4,6 +4,8 @@
 //   swarmlab.time()        the simulated time of the running preset (a number)
 //   swarmlab.state()       what the app shows and runs: { name, edited, playing, t, speed,
 //                          selected, ... } (web/README.md lists every field)
+//   swarmlab.set(changes)  changes what it names, e.g. { theme: 'light', sound: true } (keys in
+//                          web/js_set.cpp); an unknown key or a bad value throws Error naming it
 //   swarmlab.preset()      the running preset, every edit included, as a JSON string
 //   swarmlab.load(json)    opens a preset (a JSON string, or an object); returns true, or, if
 //                          it fails validation or is larger than SwarmlabLink.maxPresetBytes
@@ -136,6 +138,15 @@
     frames: function () { return frames; },
     time: function () { check(); return Module.ccall('swarmlab_time', 'number', [], []); },
     state: function () { check(); return JSON.parse(Module.ccall('swarmlab_state', 'string', [], [])); },
+    // Changes what it names (web/js_set.cpp has the keys); a bad key or value throws and
+    // changes nothing.
+    set: function (changes) {
+      check();
+      if (changes === null || typeof changes !== 'object' || Array.isArray(changes))
+        throw new Error('swarmlab.set: expects an object such as {theme: "light"}');
+      var error = Module.ccall('swarmlab_set', 'string', ['string'], [JSON.stringify(changes)]);
+      if (error) throw new Error(error);
+    },
     preset: function () { check(); return presetText(2); },
     load: function (json) {
       check();
