@@ -60,7 +60,10 @@ std::string set_from_json(swarmlab::AppState& state, const std::string& text) {
     if (const std::string rule = setter->check(value); !rule.empty())
       return "swarmlab.set: " + key + ": " + rule;
   }
-  for (const auto& [key, value] : changes.items()) setter_of(key)->apply(state, value);
+  // In the table's order, not the object's: {presentation: true, theme: "dark"} is the
+  // dark theme in presentation mode whichever key came first.
+  for (const Setter& s : kSetters)
+    if (changes.contains(s.key)) s.apply(state, changes[s.key]);
   return {};
 }
 

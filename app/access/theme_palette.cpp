@@ -145,6 +145,12 @@ constexpr double kLightViewParticleLuminance = 0.27;
 
 }  // namespace
 
+Colour plot_line_colour(Colour c, Theme theme) {
+  // White plots (L = 1): (1 + 0.05) / (0.3 + 0.05) = 3. Dark plots (L = 0.0098):
+  // (0.135 + 0.05) / (0.0098 + 0.05) = 3.1.
+  return theme == Theme::light ? darkened_to(c, 0.29) : brightened_to(c, 0.135);
+}
+
 const char* theme_name(Theme theme) { return theme == Theme::light ? "light" : "dark"; }
 
 const Palette& palette(Theme theme) {
@@ -168,9 +174,21 @@ Colour turbo_colour(float x) {
 }
 
 Colour particle_colour(float x, Theme theme) {
-  const Colour c = turbo_colour(x);
-  return theme == Theme::light ? darkened_to(c, kLightViewParticleLuminance)
-                               : brightened_to(c, kDarkViewParticleLuminance);
+  // Every particle is coloured every frame: the map is worked out once, at 1/255 steps (finer
+  // than the eye tells apart on a continuous map).
+  struct Map {
+    Colour at[256];
+    explicit Map(Theme theme) {
+      for (int k = 0; k < 256; ++k) {
+        const Colour c = turbo_colour(float(k) / 255);
+        at[k] = theme == Theme::light ? darkened_to(c, kLightViewParticleLuminance)
+                                      : brightened_to(c, kDarkViewParticleLuminance);
+      }
+    }
+  };
+  static const Map dark(Theme::dark), light(Theme::light);
+  const float clamped = std::isnan(x) ? 0.0f : std::clamp(x, 0.0f, 1.0f);
+  return (theme == Theme::light ? light : dark).at[int(std::lround(clamped * 255))];
 }
 
 }  // namespace swarmlab

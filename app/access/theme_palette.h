@@ -38,6 +38,11 @@ const Palette& palette(Theme theme);
 /// middle of the map is darkened, and on the dark view its darkest blues are brightened.
 Colour particle_colour(float x, Theme theme);
 
+/// A line colour given elsewhere (a method's colour in the core's method table) made to stand
+/// out at 3:1 from this theme's plot background: darkened on the light theme, brightened on
+/// the dark one, unchanged where it already does.
+Colour plot_line_colour(Colour c, Theme theme);
+
 /// Google's Turbo map (Mikhailov 2019), kept away from its darkest ends; x is clamped to [0, 1].
 Colour turbo_colour(float x);
 

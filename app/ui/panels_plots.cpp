@@ -20,7 +20,9 @@ const Palette& colours() { return current_palette(); }
 /// A method's plot colour, from the core's method table.
 ImU32 colour_of(swarm::Method m) {
   const auto& [r, g, b] = swarm::info_of(m).colour;
-  return IM_COL32(r, g, b, 255);
+  return plot_line_colour(Colour{std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 255},
+                          current_theme())
+      .packed();
 }
 
 /// The sample series of the primary run, with P and T averaged over a trailing time window.

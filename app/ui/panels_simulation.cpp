@@ -100,7 +100,9 @@ void draw_simulation_panel(AppState& state) {
 
 void draw_transport_bar(AppState& state) {
   const float font = ImGui::GetFontSize();
-  if (ImGui::Button(state.playing ? "\u2016 Pause" : "\u25b6 Play", ImVec2(5.5f * font, 0)))
+  // One ID for both labels, so keyboard focus stays on the button when its label changes.
+  if (ImGui::Button(state.playing ? "\u2016 Pause###play" : "\u25b6 Play###play",
+                    ImVec2(5.5f * font, 0)))
     state.playing = !state.playing;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Space");
   ImGui::SameLine();

@@ -23,7 +23,7 @@ class WallSound {
 
  private:
   bool open_ = false;
-  unsigned device_ = 0;  // SDL_AudioDeviceID on the desktop
+  [[maybe_unused]] unsigned device_ = 0;  // SDL_AudioDeviceID on the desktop
 };
 
 }  // namespace swarmlab

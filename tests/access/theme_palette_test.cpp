@@ -145,10 +145,26 @@ TEST_CASE("every particle colour stands out from the view at 3:1 in both themes"
     }
 }
 
+TEST_CASE("plot_line_colour: any line colour (white, yellow, navy) at 3:1 on either plot") {
+  const Colour lines[] = {{255, 255, 255}, {255, 230, 60}, {20, 30, 110}, {0, 0, 0}, {90, 200, 90}};
+  for (Theme theme : {Theme::dark, Theme::light})
+    for (const Colour& c : lines) {
+      const double ratio = contrast_ratio(plot_line_colour(c, theme), palette(theme).plot_background);
+      INFO(std::string(theme_name(theme)) << ": " << int(c.r) << "," << int(c.g) << "," << int(c.b)
+                                          << " at " << ratio << ":1");
+      CHECK(ratio >= kGraphics);
+    }
+  // A colour that already stands out is kept.
+  CHECK(plot_line_colour({255, 150, 50}, Theme::dark).packed() == Colour{255, 150, 50}.packed());
+}
+
 TEST_CASE("the light theme's colour map keeps its order: low blue, high red, as on the dark") {
   const Colour low = particle_colour(0, Theme::light), high = particle_colour(1, Theme::light);
   CHECK(low.b > low.r);
   CHECK(high.r > high.b);
   // The dark view keeps Turbo itself where it is bright enough.
-  CHECK(particle_colour(0.5f, Theme::dark).packed() == turbo_colour(0.5f).packed());
+  CHECK(particle_colour(128.0f / 255, Theme::dark).packed() == turbo_colour(128.0f / 255).packed());
+  // Outside [0, 1] (a particle beyond the scale's range): the end colours.
+  CHECK(particle_colour(-3, Theme::light).packed() == particle_colour(0, Theme::light).packed());
+  CHECK(particle_colour(7, Theme::dark).packed() == particle_colour(1, Theme::dark).packed());
 }

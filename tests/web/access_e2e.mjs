@@ -67,21 +67,20 @@ async function main(url) {
   s = await appState();
   check('Space again plays', s.playing === true, `playing ${s.playing}`);
 
-  // A preset change through the menu bar: Ctrl+Tab to it, Space opens Scenario (its first
-  // entry focused), Down to another preset than the running one, Space opens it.
+  // A preset change through the menu bar: Ctrl+Tab to it, Space opens Scenario, Down moves in
+  // its list, Space opens the preset focused.
   const shipped = await api(() => window.swarmlab.shipped());
   const before = (await appState()).name;
   const menuFocus = await focusPanel(['menu', 'MainMenuBar']);
   await tap('Space');
   await framesPass(3);
-  const downs = shipped.findIndex((p) => p.name === before) === 1 ? 2 : 1;
-  for (let i = 0; i < downs; ++i) await tap('ArrowDown');
+  await tap('ArrowDown');
   await tap('Space');
   await framesPass(5);
   s = await appState();
-  check('Ctrl+Tab to the menu bar, Space, Down, Space opens another preset from the Scenario menu',
-        s.name !== before && s.name === shipped[downs].name,
-        `focus: ${menuFocus}; "${before}" -> "${s.name}" (expected "${shipped[downs].name}")`);
+  check('Ctrl+Tab to the menu bar, Space, Down, Space opens another shipped preset',
+        s.name !== before && shipped.some((p) => p.name === s.name),
+        `focus: ${menuFocus}; "${before}" -> "${s.name}"`);
   await framesPass(3);
   check('the live region says the new preset\'s name', (await spoken()).includes(s.name), await spoken());
   check('the title follows the preset', (await page.title()).includes(s.name), await page.title());
@@ -94,7 +93,7 @@ async function main(url) {
   const bright = (img) => parseInt(img.topColor.slice(1), 16) >= 0xddd;
   check('set({theme: "light"}) turns the page light', !bright(dark) && bright(light) && (await appState()).theme === 'light',
         `most common colour ${dark.topColor} -> ${light.topColor}`);
-  await api(() => window.swarmlab.set({ theme: 'dark', presentation: true }));
+  await api(() => window.swarmlab.set({ presentation: true, theme: 'dark' }));  // table order: presentation wins
   await framesPass(6);
   s = await appState();
   const shown = await screenshot(page, 'access-presentation-1280x720.png', {});
@@ -138,4 +137,4 @@ async function main(url) {
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
 }
 
-runSuite('access_e2e', 120_000, main);
+runSuite('access_e2e', 140_000, main);
