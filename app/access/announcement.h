@@ -14,9 +14,9 @@ namespace swarmlab {
 struct Situation {
   std::string preset;  ///< the preset's name
   bool playing = false;
-  bool finished = false;  ///< the run reached its duration (or stopped on an error)
-  double t = 0;           ///< simulated time
-  std::optional<double> P, T;  ///< wall pressure and temperature (only with a container)
+  bool finished = false;                ///< the run reached its duration (or stopped on an error)
+  double t = 0;                         ///< simulated time
+  std::optional<double> P, T;           ///< wall pressure and temperature (only with a container)
   std::optional<std::size_t> selected;  ///< particle index from 0
   std::string error;                    ///< the last error shown, "" when none
 };

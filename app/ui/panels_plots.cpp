@@ -94,15 +94,18 @@ void draw_wall_tab(AppState& state, float plot_height) {
   p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
   p.y_from_zero = true;
   p.empty_message = empty;
-  p.series = {{"each sample", &series.t, &series.P, colours().pressure_each_sample.packed(), false, 1.0f},
-              {"running average", &series.t, &series.P_mean, colours().pressure.packed(), false, 2.5f}};
+  p.series = {
+      {"each sample", &series.t, &series.P, colours().pressure_each_sample.packed(), false, 1.0f},
+      {"running average", &series.t, &series.P_mean, colours().pressure.packed(), false, 2.5f}};
   draw_plot("pressure", p, plot_height);
 
   PlotSpec t = p;
   t.title = "Wall temperature";
   t.y = {"T (energy, k_B = 1)", false, std::nullopt, std::nullopt};
-  t.series = {{"each sample", &series.t, &series.T, colours().temperature_each_sample.packed(), false, 1.0f},
-              {"running average", &series.t, &series.T_mean, colours().temperature.packed(), false, 2.5f}};
+  t.series = {
+      {"each sample", &series.t, &series.T, colours().temperature_each_sample.packed(), false,
+       1.0f},
+      {"running average", &series.t, &series.T_mean, colours().temperature.packed(), false, 2.5f}};
   draw_plot("temperature", t, plot_height);
 }
 

@@ -30,24 +30,23 @@ void check_theme(Theme theme) {
   const char* name = theme_name(theme);
   // Translucent panel backgrounds are seen over the window.
   auto on_window = [&](Colour c) { return over(c, p.window); };
-  const std::vector<Named> panel_backgrounds = {
-      {"window", p.window},
-      {"popup", p.popup},
-      {"menu bar", p.menu_bar},
-      {"title", p.title},
-      {"active title", p.title_active},
-      {"field", on_window(p.frame)},
-      {"hovered field", on_window(p.frame_hovered)},
-      {"active field", on_window(p.frame_active)},
-      {"button", on_window(p.button)},
-      {"hovered button", on_window(p.button_hovered)},
-      {"pressed button", on_window(p.button_active)},
-      {"header", on_window(p.header)},
-      {"hovered header", on_window(p.header_hovered)},
-      {"active header", on_window(p.header_active)},
-      {"tab", on_window(p.tab)},
-      {"hovered tab", on_window(p.tab_hovered)},
-      {"active tab", on_window(p.tab_active)}};
+  const std::vector<Named> panel_backgrounds = {{"window", p.window},
+                                                {"popup", p.popup},
+                                                {"menu bar", p.menu_bar},
+                                                {"title", p.title},
+                                                {"active title", p.title_active},
+                                                {"field", on_window(p.frame)},
+                                                {"hovered field", on_window(p.frame_hovered)},
+                                                {"active field", on_window(p.frame_active)},
+                                                {"button", on_window(p.button)},
+                                                {"hovered button", on_window(p.button_hovered)},
+                                                {"pressed button", on_window(p.button_active)},
+                                                {"header", on_window(p.header)},
+                                                {"hovered header", on_window(p.header_hovered)},
+                                                {"active header", on_window(p.header_active)},
+                                                {"tab", on_window(p.tab)},
+                                                {"hovered tab", on_window(p.tab_hovered)},
+                                                {"active tab", on_window(p.tab_active)}};
   // Every panel text on every panel background.
   check_all(name, {{"text", p.text}}, panel_backgrounds, kText);
   // The dimmed text (units, hints, the title, menu shortcuts) where ImGui draws it: on the
@@ -79,8 +78,8 @@ void check_theme(Theme theme) {
 
   // The 3D view: text on the view and on the legend's box, lines on the view.
   const Colour legend = over(p.legend_background, p.view_background);
-  check_all(name, {{"view text", p.view_text}},
-            {{"view", p.view_background}, {"legend", legend}}, kText);
+  check_all(name, {{"view text", p.view_text}}, {{"view", p.view_background}, {"legend", legend}},
+            kText);
   check_all(name,
             {{"container", p.container},
              {"trail", p.trail},
@@ -99,15 +98,12 @@ void check_theme(Theme theme) {
   // background.
   check_all(name, {{"plot text", p.plot_text}, {"tick labels", p.plot_dim_text}},
             {{"plot", p.plot_background}}, kText);
-  const std::vector<Named> series = {{"pressure", p.pressure},
-                                     {"pressure, each sample", p.pressure_each_sample},
-                                     {"temperature", p.temperature},
-                                     {"temperature, each sample", p.temperature_each_sample},
-                                     {"kinetic energy", p.kinetic},
-                                     {"potential energy", p.potential},
-                                     {"total energy", p.total_energy},
-                                     {"power-law fit", p.fit},
-                                     {"energy drift", p.energy_drift}};
+  const std::vector<Named> series = {
+      {"pressure", p.pressure},         {"pressure, each sample", p.pressure_each_sample},
+      {"temperature", p.temperature},   {"temperature, each sample", p.temperature_each_sample},
+      {"kinetic energy", p.kinetic},    {"potential energy", p.potential},
+      {"total energy", p.total_energy}, {"power-law fit", p.fit},
+      {"energy drift", p.energy_drift}};
   check_all(name, series, {{"plot", p.plot_background}}, kGraphics);
   check_all(name, {{"axis", p.plot_axis}, {"cross-hair", p.crosshair}},
             {{"plot", p.plot_background}}, kGraphics);
@@ -139,7 +135,8 @@ TEST_CASE("every particle colour stands out from the view at 3:1 in both themes"
   for (Theme theme : {Theme::dark, Theme::light})
     for (int k = 0; k <= 200; ++k) {
       const float x = float(k) / 200;
-      const double ratio = contrast_ratio(particle_colour(x, theme), palette(theme).view_background);
+      const double ratio =
+          contrast_ratio(particle_colour(x, theme), palette(theme).view_background);
       INFO(std::string(theme_name(theme)) << " view, colour map at " << x << ": " << ratio << ":1");
       CHECK(ratio >= kGraphics);
     }
@@ -149,9 +146,10 @@ TEST_CASE("plot_line_colour: any line colour (white, yellow, navy) at 3:1 on eit
   const Colour lines[] = {{255, 255, 255}, {255, 230, 60}, {20, 30, 110}, {0, 0, 0}, {90, 200, 90}};
   for (Theme theme : {Theme::dark, Theme::light})
     for (const Colour& c : lines) {
-      const double ratio = contrast_ratio(plot_line_colour(c, theme), palette(theme).plot_background);
-      INFO(std::string(theme_name(theme)) << ": " << int(c.r) << "," << int(c.g) << "," << int(c.b)
-                                          << " at " << ratio << ":1");
+      const double ratio =
+          contrast_ratio(plot_line_colour(c, theme), palette(theme).plot_background);
+      INFO(std::string(theme_name(theme))
+           << ": " << int(c.r) << "," << int(c.g) << "," << int(c.b) << " at " << ratio << ":1");
       CHECK(ratio >= kGraphics);
     }
   // A colour that already stands out is kept.
