@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
                  "Select particle N (numbered from 1, as in the particle table): its card and "
                  "x(t) plot")
       ->check(CLI::PositiveNumber);
+  bool presentation = false;
+  app.add_flag("--presentation", presentation,
+               "Start in presentation mode: light theme, large text, the view and one plot");
 
   swarmlab::RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a preset headless and report the results");
@@ -66,7 +69,7 @@ int main(int argc, char** argv) {
   if (*bench_cmd) return swarmlab::bench_command(bench);
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
-  return swarmlab::run_desktop({window_preset, frames, screenshot, select});
+  return swarmlab::run_desktop({window_preset, frames, screenshot, select, presentation});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

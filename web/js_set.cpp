@@ -1,12 +1,13 @@
 // swarmlab.set({...}): changes what it names, for course pages and tests. One table of keys,
 // each with its check and its change; a feature adds its row. Every key is checked before any
-// is changed, so a bad call changes nothing.
+// is changed, so a bad call changes nothing; the changes are made in the table's order.
 
 #include <emscripten.h>
 
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "ui/presentation.h"
 #include "web_app.h"
 
 namespace {
@@ -52,6 +53,18 @@ const Key kKeys[] = {
        else s.selected = v.get<std::size_t>();
        s.update_followed();
      }},
+    // The projector and the classroom (app/ui/presentation.h). Presentation comes before the
+    // theme, so {presentation: true, theme: "dark"} is the dark theme in presentation mode.
+    {"presentation", "must be true or false",
+     [](const AppState&, const json& v) { return v.is_boolean(); },
+     [](AppState& s, const json& v) { swarmlab::set_presentation(s, v.get<bool>()); }},
+    {"theme", "must be \"dark\" or \"light\"",
+     [](const AppState&, const json& v) { return v == "dark" || v == "light"; },
+     [](AppState& s, const json& v) {
+       swarmlab::set_theme(s, v == "light" ? swarmlab::Theme::light : swarmlab::Theme::dark);
+     }},
+    {"sound", "must be true or false", [](const AppState&, const json& v) { return v.is_boolean(); },
+     [](AppState& s, const json& v) { swarmlab::set_sound(s, v.get<bool>()); }},
 };
 
 std::string set_error;
@@ -71,9 +84,9 @@ std::string apply_settings(AppState& state, const std::string& text) {
     if (!key->valid(state, value))
       return "swarmlab.set(): " + name + ": " + key->rule + ", not " + value.dump();
   }
-  for (const auto& [name, value] : j.items())
-    for (const Key& k : kKeys)
-      if (name == k.name) k.apply(state, value);
+  // In the table's order, not the object's.
+  for (const Key& k : kKeys)
+    if (j.contains(k.name)) k.apply(state, j[k.name]);
   return {};
 }
 

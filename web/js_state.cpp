@@ -2,6 +2,8 @@
 // tests. Each feature adds its own fields here (web/README.md lists them).
 
 #include <emscripten.h>
+#include <imgui.h>
+#include <imgui_internal.h>
 
 #include <nlohmann/json.hpp>
 #include <cstdio>
@@ -57,6 +59,17 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["stopwatch"] = {{"running", in.stopwatch.running()}, {"elapsed", in.stopwatch.elapsed()}};
   const auto period = in.track ? in.track->meter.period() : std::nullopt;
   j["measured_period"] = period ? nlohmann::json(*period) : nlohmann::json(nullptr);
+  // The projector and the classroom (app/ui/presentation.h).
+  j["theme"] = swarmlab::theme_name(s.presentation.theme);
+  j["presentation"] = s.presentation.on;
+  j["sound"] = s.presentation.sound;
+  j["fullscreen"] = s.presentation.fullscreen;
+  // The panel keyboard navigation is in ("Controls", "Plots", "transport", "menu"), or null.
+  const ImGuiContext* imgui = ImGui::GetCurrentContext();
+  const ImGuiWindow* nav = imgui ? imgui->NavWindow : nullptr;
+  if (nav && imgui->NavLayer == ImGuiNavLayer_Menu) j["keyboard_focus"] = "menu";
+  else if (nav) j["keyboard_focus"] = std::string(nav->Name).substr(nav->Name[0] == '#' ? 2 : 0);
+  else j["keyboard_focus"] = nullptr;
   return j;
 }
 

@@ -6,6 +6,8 @@
 //                          selected, ... } (web/README.md lists every field)
 //   swarmlab.seek(t)       moves the run to time t, back or forward; returns the time reached
 //   swarmlab.positions()   lab positions [[x, y, z], ...] of the first 10,000 particles
+//   swarmlab.set(changes)  changes what it names, e.g. { theme: 'light', sound: true } (keys in
+//                          web/js_set.cpp); an unknown key or a bad value throws Error naming it
 //   swarmlab.preset()      the running preset, every edit included, as a JSON string
 //   swarmlab.load(json)    opens a preset (a JSON string, or an object); returns true, or, if
 //                          it fails validation or is larger than SwarmlabLink.maxPresetBytes

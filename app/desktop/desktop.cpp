@@ -13,6 +13,7 @@
 #include "screenshot.h"
 #include "ui/main_loop.h"
 #include "ui/preset_store.h"
+#include "ui/presentation.h"
 
 namespace swarmlab {
 namespace {
@@ -73,6 +74,7 @@ int run_desktop(const DesktopOptions& options) {
     }
     f.app->state().plots.tab = 4;
   }
+  if (options.presentation) set_presentation(f.app->state(), true);
 
   // The first frames build fonts and buffers; the timing summary leaves them out.
   constexpr int kWarmUp = 5;

@@ -10,6 +10,7 @@ struct DesktopOptions {
   int frames;                   ///< run this many frames, then exit; 0: until the window closes
   std::string screenshot_path;  ///< after the last frame, save the window as PNG; empty: none
   int select = 0;  ///< select this particle (numbered from 1, as in the table) at the start; 0: none
+  bool presentation = false;    ///< start in presentation mode (light theme, large, one plot)
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

@@ -9,6 +9,7 @@
 
 #include "panels.h"
 #include "plot_export.h"
+#include "presentation.h"
 #include "scene_overlay.h"
 #include "shortcuts.h"
 #include "timeline_strip.h"
@@ -227,6 +228,7 @@ void App::layout_windows() {
           if (ImGui::MenuItem(labels[int(m)], nullptr, s.layout.mode == m)) s.layout.mode = m;
         ImGui::EndMenu();
       }
+      draw_presentation_menu_items(s);
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
@@ -445,7 +447,7 @@ void App::build_particles() {
     const float radius = s.preset.sphere_radius ? float(*s.preset.sphere_radius)
                                                 : base * float(std::cbrt(p.m * inverse_heaviest));
     particles_[i] = {float(p.r.x()), float(p.r.y()), float(p.r.z()), radius,
-                     s.colour_scale.colour(q)};
+                     particle_colour(s.colour_scale.position(q), s.presentation.theme).packed()};
   }
   // Paused, the scale stays put (a colour means the same value while one looks at it).
   if (s.playing || s.step_once || !s.colour_scale.initialised) s.colour_scale.follow(lo, hi);
@@ -457,7 +459,7 @@ void App::build_particles() {
     for (const swarm::Particle& p : e.particles)
       ghosts_.push_back({float(p.r.x()), float(p.r.y()), float(p.r.z()),
                          1.35f * base * float(std::cbrt(p.m * inverse_heaviest)),
-                         IM_COL32(235, 240, 255, 255)});
+                         palette(s.presentation.theme).ghost.packed()});
   }
 }
 

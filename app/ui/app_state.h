@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "access/theme_palette.h"
 #include "camera.h"
 #include "colour_map.h"
 #include "instruments.h"
@@ -89,6 +90,21 @@ struct FrameStats {
   long frames = 0;
 };
 
+/// The projector and the classroom: theme, presentation mode, fullscreen, sound
+/// (presentation.h switches them; classroom_outputs.h carries them out on the window).
+struct Presentation {
+  Theme theme = Theme::dark;
+  bool on = false;                 ///< presentation mode: light, large, the view and one plot
+  bool fullscreen = false;         ///< as the window or page last reported it
+  bool fullscreen_wanted = false;  ///< what the user asked for; the adapter tries it
+  bool sound = false;              ///< clicks at the wall hits; off until turned on
+  std::string sound_status;        ///< why sound could not start, "" when fine
+  // What presentation mode replaced, given back when it ends.
+  bool saved_controls = true, saved_plots = true;
+  float saved_ui_scale = 1;
+  Theme saved_theme = Theme::dark;
+};
+
 /// Which part of the controls an edit came from, to show a refusal next to it.
 enum class Section { none, scenario, system, container, simulation, forces, walls };
 
@@ -132,6 +148,7 @@ struct AppState {
   PlotOptions plots;
   SaveDialog save_dialog;  ///< save, export and quit dialogs (save_dialog.h)
   Layout layout;
+  Presentation presentation;
   FrameStats stats;
   /// Stopwatch, period meter, P and T (update_instruments feeds them every frame).
   Instruments instruments;

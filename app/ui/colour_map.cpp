@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "access/theme_palette.h"
+
 namespace swarmlab {
 
 const char* legend_title(ColourBy c) {
@@ -18,18 +20,9 @@ const char* legend_title(ColourBy c) {
 }
 
 Rgba8 turbo(float x, std::uint8_t alpha) {
-  // Polynomial fit of the Turbo map (Mikhailov, Google AI blog, 2019), kept away from its
-  // darkest ends.
-  const double t = 0.06 + 0.9 * std::clamp(double(x), 0.0, 1.0);
-  const double t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
-  const double r = 0.13572138 + 4.61539260 * t - 42.66032258 * t2 + 132.13108234 * t3 -
-                   152.94239396 * t4 + 59.28637943 * t5;
-  const double g = 0.09140261 + 2.19418839 * t + 4.84296658 * t2 - 14.18503333 * t3 +
-                   4.27729857 * t4 + 2.82956604 * t5;
-  const double b = 0.10667330 + 12.64194608 * t - 60.58204836 * t2 + 110.36276771 * t3 -
-                   89.90310912 * t4 + 27.34824973 * t5;
-  auto byte = [](double c) { return Rgba8(std::lround(std::clamp(c, 0.0, 1.0) * 255.0)); };
-  return byte(r) | byte(g) << 8 | byte(b) << 16 | Rgba8(alpha) << 24;
+  Colour c = turbo_colour(x);
+  c.a = alpha;
+  return c.packed();
 }
 
 double ParticleQuantity::operator()(const swarm::Particle& p) const {

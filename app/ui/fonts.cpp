@@ -4,34 +4,12 @@
 
 #include <cstddef>
 
+#include "theme_style.h"
+
 extern const unsigned char dejavu_sans_ttf[];
 extern const std::size_t dejavu_sans_ttf_size;
 
 namespace swarmlab {
-namespace {
-
-void set_style(float scale) {
-  ImGuiStyle style;
-  ImGui::StyleColorsDark(&style);
-  style.WindowRounding = 4;
-  style.FrameRounding = 3;
-  style.GrabRounding = 3;
-  style.TabRounding = 3;
-  style.WindowBorderSize = 0;
-  style.FramePadding = ImVec2(6, 4);
-  style.ItemSpacing = ImVec2(8, 5);
-  ImVec4* c = style.Colors;
-  c[ImGuiCol_WindowBg] = ImVec4(0.09f, 0.10f, 0.13f, 0.97f);
-  c[ImGuiCol_ChildBg] = ImVec4(0.0f, 0.0f, 0.0f, 0.0f);
-  c[ImGuiCol_Header] = ImVec4(0.20f, 0.32f, 0.48f, 0.75f);
-  c[ImGuiCol_HeaderHovered] = ImVec4(0.26f, 0.42f, 0.62f, 0.85f);
-  c[ImGuiCol_FrameBg] = ImVec4(0.16f, 0.18f, 0.24f, 1.0f);
-  c[ImGuiCol_MenuBarBg] = ImVec4(0.12f, 0.13f, 0.17f, 1.0f);
-  style.ScaleAllSizes(scale);
-  ImGui::GetStyle() = style;
-}
-
-}  // namespace
 
 void apply_ui_scale(float scale) {
   ImGuiIO& io = ImGui::GetIO();
@@ -47,7 +25,7 @@ void apply_ui_scale(float scale) {
   io.Fonts->AddFontFromMemoryTTF(const_cast<unsigned char*>(dejavu_sans_ttf),
                                  int(dejavu_sans_ttf_size), 16.0f * scale, &config, ranges);
   io.Fonts->Build();
-  set_style(scale);
+  apply_style(scale);
 }
 
 }  // namespace swarmlab

@@ -78,6 +78,8 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
     ImGui_ImplOpenGL3_CreateFontsTexture();
   }
 
+  f.outputs.apply_theme(f.app->state());
+
   const auto now = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(now - f.last_frame).count();
   f.last_frame = now;
@@ -87,12 +89,14 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   apply_touch(*f.app);
   ImGui::NewFrame();
   f.app->update(seconds);
+  f.outputs.update(f.app->state(), f.window.window, seconds);
   ImGui::Render();
 
   const ImGuiIO& io = ImGui::GetIO();
   glViewport(0, 0, int(io.DisplaySize.x * io.DisplayFramebufferScale.x),
              int(io.DisplaySize.y * io.DisplayFramebufferScale.y));
-  glClearColor(0.035f, 0.04f, 0.06f, 1.0f);
+  const Colour background = palette(f.app->state().presentation.theme).view_background;
+  glClearColor(background.r / 255.0f, background.g / 255.0f, background.b / 255.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   f.app->render_scene(io.DisplayFramebufferScale.y, io.DisplaySize.y);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

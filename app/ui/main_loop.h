@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "app.h"
+#include "classroom_outputs.h"
 #include "sdl_window.h"
 
 namespace swarmlab {
@@ -15,6 +16,7 @@ struct Frontend {
   std::unique_ptr<App> app;
   std::chrono::steady_clock::time_point last_frame = std::chrono::steady_clock::now();
   bool running = true;
+  ClassroomOutputs outputs;  ///< theme, fullscreen, title and live region, sound
 };
 
 /// Handles the pending events, runs and draws one frame and presents it; before presenting,

@@ -11,23 +11,20 @@
 #include "panels.h"
 #include "plot_widget.h"
 #include "swarm/regime.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 namespace {
 
-constexpr ImU32 kPressure = IM_COL32(255, 150, 50, 255);
-constexpr ImU32 kPressureRaw = IM_COL32(255, 150, 50, 90);
-constexpr ImU32 kTemperature = IM_COL32(90, 180, 255, 255);
-constexpr ImU32 kTemperatureRaw = IM_COL32(90, 180, 255, 90);
-constexpr ImU32 kKinetic = IM_COL32(255, 205, 70, 255);
-constexpr ImU32 kPotential = IM_COL32(120, 200, 255, 255);
-constexpr ImU32 kTotal = IM_COL32(240, 240, 240, 255);
-constexpr ImU32 kFit = IM_COL32(255, 255, 255, 200);
+/// The series colours of the current theme (access/theme_palette.h).
+const Palette& colours() { return current_palette(); }
 
 /// A method's plot colour, from the core's method table.
 ImU32 colour_of(swarm::Method m) {
   const auto& [r, g, b] = swarm::info_of(m).colour;
-  return IM_COL32(r, g, b, 255);
+  return plot_line_colour(Colour{std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 255},
+                          current_theme())
+      .packed();
 }
 
 /// The sample series of the primary run, with P and T averaged over a trailing time window.
@@ -99,15 +96,18 @@ void draw_wall_tab(AppState& state, float plot_height) {
   p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
   p.y_from_zero = true;
   p.empty_message = empty;
-  p.series = {{"each sample", &series.t, &series.P, kPressureRaw, false, 1.0f},
-              {"running average", &series.t, &series.P_mean, kPressure, false, 2.5f}};
+  p.series = {
+      {"each sample", &series.t, &series.P, colours().pressure_each_sample.packed(), false, 1.0f},
+      {"running average", &series.t, &series.P_mean, colours().pressure.packed(), false, 2.5f}};
   draw_plot("pressure", p, plot_height);
 
   PlotSpec t = p;
   t.title = "Wall temperature";
   t.y = {"T (energy, k_B = 1)", false, std::nullopt, std::nullopt};
-  t.series = {{"each sample", &series.t, &series.T, kTemperatureRaw, false, 1.0f},
-              {"running average", &series.t, &series.T_mean, kTemperature, false, 2.5f}};
+  t.series = {
+      {"each sample", &series.t, &series.T, colours().temperature_each_sample.packed(), false,
+       1.0f},
+      {"running average", &series.t, &series.T_mean, colours().temperature.packed(), false, 2.5f}};
   draw_plot("temperature", t, plot_height);
 }
 
@@ -123,9 +123,9 @@ void draw_energy_tab(AppState& state, float plot_height) {
   e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
   e.y = {"energy", false, std::nullopt, std::nullopt};
   e.y_from_zero = true;
-  e.series = {{"KE", &t_all, &series.KE, kKinetic, false, 2.0f},
-              {"PE", &t_all, &series.PE, kPotential, false, 2.0f},
-              {"E = KE + PE", &t_all, &series.E, kTotal, false, 2.5f}};
+  e.series = {{"KE", &t_all, &series.KE, colours().kinetic.packed(), false, 2.0f},
+              {"PE", &t_all, &series.PE, colours().potential.packed(), false, 2.0f},
+              {"E = KE + PE", &t_all, &series.E, colours().total_energy.packed(), false, 2.5f}};
   draw_plot("energies", e, plot_height);
 
   PlotSpec d;
@@ -172,7 +172,7 @@ void draw_expansion_tab(AppState& state, float plot_height) {
     if (fit.valid) {
       char label[96];
       std::snprintf(label, sizeof label, "%s^%.3f \u00b1 %.3f", law, fit.slope, fit.slope_stderr);
-      s.fits.push_back({label, std::exp(fit.intercept), fit.slope, kFit});
+      s.fits.push_back({label, std::exp(fit.intercept), fit.slope, colours().fit.packed()});
     }
     draw_plot(id, s, plot_height);
     if (fit.valid && ImGui::IsItemHovered()) {
@@ -184,11 +184,11 @@ void draw_expansion_tab(AppState& state, float plot_height) {
     draw_fit_quality((std::string(id) + " residuals").c_str(), x, fit, log, 0.45f * plot_height);
   };
   plot("pv", "P against V", "V (length\u00b3)", V, "P (force/area)", P, fits.P_V, "P \u221d V",
-       kPressure);
+       colours().pressure.packed());
   plot("tv", "T against V", "V (length\u00b3)", V, "T (energy)", T, fits.T_V, "T \u221d V",
-       kTemperature);
+       colours().temperature.packed());
   plot("pt", "P against T", "T (energy)", T, "P (force/area)", P, fits.P_T, "P \u221d T",
-       IM_COL32(230, 120, 255, 255));
+       colours().energy_drift.packed());
 }
 
 void draw_compare_tab(AppState& state, float plot_height) {

@@ -9,12 +9,13 @@
 
 #include "labels/system_labels.h"
 #include "panels.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 
 void show_refusal(AppState& state, Section section) {
   if (state.draft_error.empty() || state.draft_error_section != section) return;
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
   ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
   ImGui::PopStyleColor();
   if (ImGui::SmallButton("Undo the edit")) state.revert_draft();
@@ -63,7 +64,7 @@ void draw_scenario_panel(AppState& state) {
   }
 
   ImGui::Spacing();
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.45f, 1.0f));
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_key));
   ImGui::TextWrapped("%s", labels::title(state.preset, state.modified).c_str());
   ImGui::PopStyleColor();
   // The description was written for the preset as shipped; after an edit it may no longer hold.
@@ -115,8 +116,9 @@ void draw_scenario_panel(AppState& state) {
     if (ImGui::Button("Export stages CSV")) request_stages_csv(state);
   }
   if (!state.status.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, state.status_is_error ? ImVec4(1, 0.45f, 0.4f, 1)
-                                                               : ImVec4(0.55f, 0.9f, 0.6f, 1));
+    const Palette& colours = current_palette();
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(state.status_is_error ? colours.text_error
+                                                                           : colours.text_ok));
     ImGui::TextWrapped("%s", state.status.c_str());
     ImGui::PopStyleColor();
   }

@@ -10,6 +10,8 @@
 #include "labels/system_labels.h"
 #include "panels.h"
 #include "timeline_strip.h"
+#include "presentation.h"
+#include "theme_style.h"
 #include "swarm/regime.h"
 
 namespace swarmlab {
@@ -89,7 +91,7 @@ void draw_simulation_panel(AppState& state) {
       swarm::is_pairwise(state.preset.method) ||
       std::any_of(state.preset.compare.begin(), state.preset.compare.end(), swarm::is_pairwise);
   if (pairwise && state.run->system().particles.size() > 2000) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.35f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
     ImGui::TextWrapped(
         "The numerical methods sum over all %zu^2 / 2 pairs every step: expect a "
         "slow simulation. The analytic method is O(N).",
@@ -101,7 +103,10 @@ void draw_simulation_panel(AppState& state) {
 void draw_transport_bar(AppState& state) {
   const float font = ImGui::GetFontSize();
   const bool at_end = !state.playing && state.run->finished();
-  if (ImGui::Button(state.playing ? "\u2016 Pause" : at_end ? "\u25b6 Continue" : "\u25b6 Play",
+  // One ID for every label, so keyboard focus stays on the button when its label changes.
+  if (ImGui::Button(state.playing  ? "\u2016 Pause###play"
+                    : at_end       ? "\u25b6 Continue###play"
+                                   : "\u25b6 Play###play",
                     ImVec2(6.5f * font, 0)))
     play_or_continue(state);
   if (ImGui::IsItemHovered())
@@ -120,6 +125,8 @@ void draw_transport_bar(AppState& state) {
                       ImGuiSliderFlags_Logarithmic);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
+  ImGui::SameLine();
+  draw_sound_toggle(state);
 
   draw_time_buttons(state);
   ImGui::SameLine();
@@ -133,11 +140,11 @@ void draw_transport_bar(AppState& state) {
         "wall changes the motion and neither applies.");
   if (state.run->finished()) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1, 0.8f, 0.4f, 1), "end of run");
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "end of run");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Continue (Space) runs on for as long again.");
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
     ImGui::SameLine();
-    ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "(%.0f%% of the speed)",
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "(%.0f%% of the speed)",
                        100 * state.stats.speed_ratio);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("The steps of this speed do not fit in a frame on this machine.");

@@ -6,15 +6,10 @@
 
 #include "plot_export.h"
 #include "plotting/axis_ticks.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 namespace {
-
-constexpr ImU32 kPlotBackground = IM_COL32(22, 26, 34, 255);
-constexpr ImU32 kGrid = IM_COL32(255, 255, 255, 28);
-constexpr ImU32 kAxis = IM_COL32(200, 205, 215, 160);
-constexpr ImU32 kText = IM_COL32(215, 220, 230, 255);
-constexpr ImU32 kDimText = IM_COL32(170, 176, 190, 255);
 
 /// Maps data values to pixels along one axis, linearly or logarithmically.
 struct Scale {
@@ -80,6 +75,11 @@ void set_range(Scale& s, double lo, double hi, const PlotAxis& axis, bool from_z
 
 void draw_plot(const char* id, const PlotSpec& spec, float height) {
   ImGui::PushID(id);
+  // The theme's colours (access/theme_palette.h, held to WCAG AA by its test).
+  const Palette& colours = current_palette();
+  const ImU32 kPlotBackground = colours.plot_background.packed();
+  const ImU32 kGrid = colours.plot_grid.packed(), kAxis = colours.plot_axis.packed();
+  const ImU32 kText = colours.plot_text.packed(), kDimText = colours.plot_dim_text.packed();
   const float font = ImGui::GetFontSize();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = std::max(ImGui::GetContentRegionAvail().x, 10 * font);
@@ -257,8 +257,8 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   if (hovered && has_data && mouse.x >= left && mouse.x <= right && mouse.y >= top &&
       mouse.y <= bottom) {
-    draw->AddLine(ImVec2(mouse.x, top), ImVec2(mouse.x, bottom), IM_COL32(255, 255, 255, 70));
-    draw->AddLine(ImVec2(left, mouse.y), ImVec2(right, mouse.y), IM_COL32(255, 255, 255, 70));
+    draw->AddLine(ImVec2(mouse.x, top), ImVec2(mouse.x, bottom), colours.crosshair.packed());
+    draw->AddLine(ImVec2(left, mouse.y), ImVec2(right, mouse.y), colours.crosshair.packed());
     const bool right_half = mouse.x > 0.5f * (left + right);
     ImGui::SetNextWindowPos(ImVec2(mouse.x + (right_half ? -1.5f : 1.5f) * font, origin.y),
                             ImGuiCond_Always, ImVec2(right_half ? 1.0f : 0.0f, 1.0f));
@@ -279,8 +279,15 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       if (best_i == n) continue;
       const ImVec2 p(xs.pixel((*s.x)[best_i]), ys.pixel((*s.y)[best_i]));
       draw->AddCircle(p, 0.35f * font, s.colour, 16, 2.0f);
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(s.colour), "%s: %.5g at %.5g",
-                         s.label.c_str(), (*s.y)[best_i], (*s.x)[best_i]);
+      // A swatch of the line's colour names the series; the text stays in the text colour,
+      // since a faint line colour (the raw samples) is too pale for text.
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      ImGui::GetWindowDrawList()->AddLine(ImVec2(at.x, at.y + 0.5f * font),
+                                          ImVec2(at.x + 1.2f * font, at.y + 0.5f * font),
+                                          s.colour, 3.0f);
+      ImGui::Dummy(ImVec2(1.5f * font, font));
+      ImGui::SameLine();
+      ImGui::Text("%s: %.5g at %.5g", s.label.c_str(), (*s.y)[best_i], (*s.x)[best_i]);
     }
     ImGui::EndTooltip();
   }

@@ -10,6 +10,7 @@
 #include "swarm/orbit_ahead.h"
 #include "swarm/regime.h"
 #include "swarm/speed_distribution.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 namespace {
@@ -64,12 +65,14 @@ ImU32 wall_temperature_colour(double Tw, double T_gas) {
 
 /// Latitude and longitude circles; the far half fainter than the near half, plus the outline,
 /// so that the sphere reads as glass around the swarm.
-/// `rgb` tints the glass: pale blue for a plain wall, a hot wall's colour for its temperature.
-void draw_container(const Painter& paint, double radius, ImU32 rgb = IM_COL32(150, 195, 240, 0)) {
+/// `tint`, when given, colours the glass: a hot wall's colour for its temperature; else the
+/// theme's container colour.
+void draw_container(const Painter& paint, double radius, std::optional<ImU32> tint = {}) {
   const float R = float(radius);
   const Vec3f eye = paint.camera.eye();
-  auto alpha = [rgb](int a) { return (rgb & ~IM_COL32_A_MASK) | (ImU32(a) << IM_COL32_A_SHIFT); };
-  const ImU32 near_colour = alpha(110), far_colour = alpha(40);
+  const ImU32 near_colour = tint ? with_alpha(*tint | IM_COL32_A_MASK, 0.43f)
+                                 : current_palette().container.packed();
+  const ImU32 far_colour = with_alpha(near_colour, 0.36f);
   constexpr int kSegments = 72;
   auto circle_segments = [&](auto point_at) {
     for (int k = 0; k < kSegments; ++k) {
@@ -105,15 +108,17 @@ void draw_container(const Painter& paint, double radius, ImU32 rgb = IM_COL32(15
     }
     std::vector<ImVec2> screen;
     for (const Vec3f& p : outline) screen.push_back(paint.at(paint.project(p)));
-    paint.draw->AddConvexPolyFilled(screen.data(), int(screen.size()) - 1, alpha(14));
-    paint.path(outline, alpha(230), 2.0f);
+    paint.draw->AddConvexPolyFilled(screen.data(), int(screen.size()) - 1,
+                                    with_alpha(near_colour, 0.1f));
+    paint.path(outline, with_alpha(near_colour | IM_COL32_A_MASK, 0.9f), 2.0f);
   }
 }
 
 void draw_springs(const Painter& paint, const swarm::System& s, SpringOverlay mode) {
   const std::size_t n = s.particles.size();
   if (mode == SpringOverlay::off || n > kSpringLimit || s.J == 0) return;
-  const ImU32 colour = s.J > 0 ? IM_COL32(90, 220, 200, 150) : IM_COL32(255, 110, 90, 150);
+  const ImU32 colour = s.J > 0 ? current_palette().spring_attractive.packed()
+                               : current_palette().spring_repulsive.packed();
   const double M = swarm::total_mass(s);
   const Vec3f cm = swarm::cm_position(s).cast<float>();
   double k_max = 0;
@@ -162,8 +167,8 @@ void draw_axes(const AppState& state, ImDrawList* draw) {
   const ImVec2 origin(rect.x + rect.width - 3.0f * font, rect.y + rect.height - 3.0f * font);
   const Eigen::Matrix4f view = state.camera.view();
   const char* names[] = {"x", "y", "z"};
-  const ImU32 colours[] = {IM_COL32(240, 90, 90, 255), IM_COL32(110, 220, 110, 255),
-                           IM_COL32(100, 150, 255, 255)};
+  const Palette& theme = current_palette();
+  const ImU32 colours[] = {theme.axis_x.packed(), theme.axis_y.packed(), theme.axis_z.packed()};
   for (int a = 0; a < 3; ++a) {
     const Eigen::Vector3f d = view.block<3, 3>(0, 0).col(a);
     const ImVec2 tip(origin.x + d.x() * 1.8f * font, origin.y - d.y() * 1.8f * font);
@@ -179,22 +184,23 @@ void draw_legend(AppState& state, ImDrawList* draw) {
   const ImVec2 low(rect.x + 1.0f * font, rect.y + rect.height - 2.2f * font);
   draw->AddRectFilled(ImVec2(low.x - 0.5f * font, low.y - 1.6f * font),
                       ImVec2(low.x + width + 0.5f * font, low.y + height + 1.5f * font),
-                      IM_COL32(10, 12, 18, 170), 4.0f);
+                      current_palette().legend_background.packed(), 4.0f);
   constexpr int kSteps = 48;
   for (int k = 0; k < kSteps; ++k) {
     const float x0 = low.x + width * float(k) / kSteps, x1 = low.x + width * float(k + 1) / kSteps;
     draw->AddRectFilled(ImVec2(x0, low.y), ImVec2(x1 + 0.5f, low.y + height),
-                        turbo(float(k + 0.5f) / kSteps));
+                        particle_colour(float(k + 0.5f) / kSteps, current_theme()).packed());
   }
-  draw->AddText(ImVec2(low.x, low.y - 1.3f * font), IM_COL32(220, 225, 235, 255),
+  const ImU32 text_colour = current_palette().view_text.packed();
+  draw->AddText(ImVec2(low.x, low.y - 1.3f * font), text_colour,
                 legend_title(state.view.colour_by));
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", state.colour_scale.lo);
-  draw->AddText(ImVec2(low.x, low.y + height + 0.1f * font), IM_COL32(200, 205, 215, 255), text);
+  draw->AddText(ImVec2(low.x, low.y + height + 0.1f * font), text_colour, text);
   std::snprintf(text, sizeof text, "%.3g", state.colour_scale.hi);
   const float w = ImGui::CalcTextSize(text).x;
   draw->AddText(ImVec2(low.x + width - w, low.y + height + 0.1f * font),
-                IM_COL32(200, 205, 215, 255), text);
+                text_colour, text);
 }
 
 /// The floor z = h as a grid square about the centre of mass, out to the scene's radius.
@@ -242,6 +248,7 @@ void draw_scene_overlay(AppState& state) {
   const Painter paint{draw, state.camera, rect};
   const swarm::System& s = state.run->system();
   const float font = ImGui::GetFontSize();
+  const Palette& theme = current_palette();
 
   if (state.view.container)
     if (const auto R = state.run->primary().engine().container_radius()) {
@@ -262,8 +269,8 @@ void draw_scene_overlay(AppState& state) {
       // Older points fade out, so the direction of motion reads at a glance.
       const std::size_t n = trail.points.size();
       const ImU32 colour = state.selected && *state.selected == trail.particle
-                               ? IM_COL32(255, 235, 120, 255)
-                               : IM_COL32(200, 210, 255, 255);
+                               ? theme.selected.packed()
+                               : theme.trail.packed();
       for (std::size_t k = 1; k < n; ++k)
         paint.line(trail.points[k - 1], trail.points[k],
                    with_alpha(colour, 0.1f + 0.75f * float(k) / float(n)), 1.6f);
@@ -279,18 +286,18 @@ void draw_scene_overlay(AppState& state) {
     for (std::size_t i = 0; i < s.particles.size(); ++i)
       if (!state.selected || *state.selected != i)
         paint.path(orbit_ahead(*orbits, s.particles[i], state.scene_radius),
-                   IM_COL32(255, 225, 90, 70), 1.3f);
+                   theme.orbit_ahead.packed(), 1.3f);
   if (state.selected && *state.selected < s.particles.size()) {
     const std::size_t i = *state.selected;
     if (orbits)
       paint.path(orbit_ahead(*orbits, s.particles[i], state.scene_radius),
-                 IM_COL32(255, 225, 90, 220), 2.2f);
+                 with_alpha(theme.selected.packed(), 0.86f), 2.2f);
     const ScreenPoint p = paint.project(s.particles[i].r.cast<float>());
     if (p.visible) {
-      draw->AddCircle(paint.at(p), 0.9f * font, IM_COL32(255, 235, 120, 255), 24, 2.0f);
+      draw->AddCircle(paint.at(p), 0.9f * font, theme.selected.packed(), 24, 2.0f);
       char label[64];
       std::snprintf(label, sizeof label, "#%zu  m = %.3g", i + 1, s.particles[i].m);
-      draw->AddText(ImVec2(p.x + 1.0f * font, p.y - 1.4f * font), IM_COL32(255, 235, 120, 255),
+      draw->AddText(ImVec2(p.x + 1.0f * font, p.y - 1.4f * font), theme.selected.packed(),
                     label);
     }
   }
@@ -300,12 +307,12 @@ void draw_scene_overlay(AppState& state) {
     const ScreenPoint c = paint.project(swarm::cm_position(s).cast<float>());
     if (c.visible) {
       const ImVec2 at = paint.at(c);
-      draw->AddCircle(at, 0.6f * font, IM_COL32(255, 255, 255, 230), 24, 2.0f);
+      draw->AddCircle(at, 0.6f * font, theme.centre_of_mass.packed(), 24, 2.0f);
       draw->AddLine(ImVec2(at.x - 0.9f * font, at.y), ImVec2(at.x + 0.9f * font, at.y),
-                    IM_COL32(255, 255, 255, 200), 1.5f);
+                    theme.centre_of_mass.packed(), 1.5f);
       draw->AddLine(ImVec2(at.x, at.y - 0.9f * font), ImVec2(at.x, at.y + 0.9f * font),
-                    IM_COL32(255, 255, 255, 200), 1.5f);
-      draw->AddText(ImVec2(at.x + 0.8f * font, at.y + 0.2f * font), IM_COL32(255, 255, 255, 220),
+                    theme.centre_of_mass.packed(), 1.5f);
+      draw->AddText(ImVec2(at.x + 0.8f * font, at.y + 0.2f * font), theme.centre_of_mass.packed(),
                     "CM");
     }
   }

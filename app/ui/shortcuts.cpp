@@ -5,6 +5,9 @@
 
 #include <algorithm>
 
+#include "presentation.h"
+#include "theme_style.h"
+
 namespace swarmlab {
 namespace {
 
@@ -77,18 +80,33 @@ const Shortcut kShortcuts[] = {
      [](AppState& s) { s.layout.step_ui_scale(+1); }},
     {SDL_SCANCODE_MINUS, true, "Ctrl -", "smaller UI",
      [](AppState& s) { s.layout.step_ui_scale(-1); }},
+    {SDL_SCANCODE_F5, false, "F5", "presentation mode: light, large, the view and one plot",
+     [](AppState& s) { set_presentation(s, !s.presentation.on); }},
+    {SDL_SCANCODE_F11, false, "F11", "fullscreen",
+     [](AppState& s) { set_fullscreen(s, !s.presentation.fullscreen_wanted); }},
+    {SDL_SCANCODE_M, false, "M", "sound of the wall hits on / off",
+     [](AppState& s) { set_sound(s, !s.presentation.sound); }},
     {SDL_SCANCODE_H, false, "H, F1", "this help", [](AppState& s) { s.layout.help ^= true; }},
     {SDL_SCANCODE_F1, false, nullptr, nullptr, [](AppState& s) { s.layout.help ^= true; }},
 };
 
 }  // namespace
 
+/// Keys that keyboard navigation uses while its focus is shown: Space activates the focused
+/// control, Escape backs out, Home scrolls.
+bool navigation_key(int scancode) {
+  return scancode == SDL_SCANCODE_SPACE || scancode == SDL_SCANCODE_ESCAPE ||
+         scancode == SDL_SCANCODE_HOME;
+}
+
 void handle_shortcuts(AppState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.WantTextInput) return;
   for (const Shortcut& s : kShortcuts)
     // No key repeat for a step or a UI scale: a slow frame once turned one Ctrl - into two.
-    if (s.ctrl == io.KeyCtrl && ImGui::IsKeyPressed(s.scancode, !s.ctrl && s.scancode != SDL_SCANCODE_S))
+    // While the keyboard-navigation focus shows, its keys (Space, Esc, ...) belong to it.
+    if (s.ctrl == io.KeyCtrl && !(io.NavVisible && navigation_key(s.scancode)) &&
+        ImGui::IsKeyPressed(s.scancode, !s.ctrl && s.scancode != SDL_SCANCODE_S))
       s.run(state);
 }
 
@@ -108,7 +126,7 @@ void draw_help_window(AppState& state) {
       if (!s.keys) continue;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextColored(ImVec4(1, 0.85f, 0.45f, 1), "%s", s.keys);
+      ImGui::TextColored(colour_vec4(current_palette().text_key), "%s", s.keys);
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(s.action);
     }
@@ -117,11 +135,13 @@ void draw_help_window(AppState& state) {
                               {"drag the timeline", "back or on to any time reached"},
                               {"click", "select a particle (trail, orbit ahead)"},
                               {"Ctrl+click", "type a value into a slider"},
-                              {"hover", "equations behind the read-outs, values on the plots"}};
+                              {"hover", "equations behind the read-outs, values on the plots"},
+                              {"arrows, Space", "keyboard: move to a control, press it"},
+                              {"Ctrl+Tab, Alt", "keyboard: next window, the menu bar"}};
     for (const auto& m : mouse) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextColored(ImVec4(0.6f, 0.85f, 1, 1), "%s", m[0]);
+      ImGui::TextColored(colour_vec4(current_palette().text_key), "%s", m[0]);
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(m[1]);
     }

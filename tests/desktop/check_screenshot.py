@@ -3,6 +3,8 @@
 panel shows the pressure and temperature curves. Standard library only (PNG decoded with zlib).
 
 Usage: check_screenshot.py SHOT.png
+       check_screenshot.py --presentation SHOT.png   (presentation mode: light, the view and
+                                                      the plots, no controls)
 """
 import struct
 import sys
@@ -76,11 +78,33 @@ def saturated(r, g, b):
     return max(r, g, b) > 110 and max(r, g, b) - min(r, g, b) > 90
 
 
+def presentation_checks(width, height, rows):
+    """Presentation mode at UI scale 1.5: a light page, the view on the left, the plots on the
+    right (about 435 px), no control panel."""
+    light = count(rows, 0, width, 0, height, lambda r, g, b: min(r, g, b) > 200)
+    view = (20, 780, 120, height - 60)
+    plots = (width - 420, width, 60, height)
+    coloured = count(rows, *view, lambda r, g, b: max(r, g, b) - min(r, g, b) > 70)
+    # The light theme's pressure line (170, 60, 0) and its raw samples (220, 120, 40).
+    pressure = count(rows, *plots, lambda r, g, b: r > 140 and r - b > 90 and g < r - 50)
+    return [
+        ("window is 1280x720", width == 1280 and height == 720, f"{width}x{height}"),
+        ("the page is light", light > 0.6 * width * height,
+         f"{100 * light / (width * height):.0f} % of pixels light (need > 60 %)"),
+        ("particles drawn on the light view", coloured > 1500,
+         f"{coloured} coloured pixels (need > 1500)"),
+        ("pressure curve in the plots", pressure > 200, f"{pressure} dark orange pixels (need > 200)"),
+    ]
+
+
 def main():
-    if len(sys.argv) != 2:
+    presentation = len(sys.argv) == 3 and sys.argv[1] == "--presentation"
+    if len(sys.argv) != 2 and not presentation:
         print(__doc__)
         return 2
-    width, height, rows = read_png(sys.argv[1])
+    width, height, rows = read_png(sys.argv[-1])
+    if presentation:
+        return report(presentation_checks(width, height, rows))
     # Layout at 1280x720 and UI scale 1: controls on the left (about 340 px), plots on the
     # right (about 400 px), the 3D view between them.
     view = (360, 860, 90, height - 60)
@@ -104,7 +128,10 @@ def main():
                    f"{temperature} light blue pixels (need > 300)"))
     panel = count(rows, 0, 300, 60, height, near((23, 26, 33), 12))
     checks.append(("control panel drawn", panel > 20000, f"{panel} panel pixels (need > 20000)"))
+    return report(checks)
 
+
+def report(checks):
     failed = 0
     for name, ok, detail in checks:
         print(f"  {'ok  ' if ok else 'FAIL'} {name}: {detail}")

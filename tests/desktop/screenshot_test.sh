@@ -52,8 +52,16 @@ status=$?
 [ "$status" -eq 0 ] || fail "swarmlab exited with status $status"
 [ -s "$shot" ] || fail "no screenshot written at $shot"
 
-if python3 "$here/check_screenshot.py" "$shot"; then
-  echo "PASS: the screenshot shows particles, the container and the plots ($shot)"
-else
-  fail "the screenshot is missing something ($shot)"
-fi
+python3 "$here/check_screenshot.py" "$shot" || fail "the screenshot is missing something ($shot)"
+
+# Presentation mode (the projector): light theme, large text, the view and one plot.
+shown="$out/desktop-fig4-presentation.png"
+echo "running: swarmlab $(basename "$preset") --presentation --frames $frames --screenshot $shown"
+rm -f "$shown"
+DISPLAY=":$display" timeout 300 "$binary" "$preset" --presentation --frames "$frames" --screenshot "$shown"
+status=$?
+[ "$status" -eq 0 ] || fail "swarmlab --presentation exited with status $status"
+[ -s "$shown" ] || fail "no screenshot written at $shown"
+python3 "$here/check_screenshot.py" --presentation "$shown" ||
+  fail "the presentation screenshot is missing something ($shown)"
+echo "PASS: the screenshots show particles, the container and the plots ($shot), and presentation mode ($shown)"

@@ -1,0 +1,45 @@
+#pragma once
+// What the window does beyond drawing, each frame, for the classroom: applies the theme, goes
+// fullscreen or back (SDL on the desktop, the Fullscreen API in the browser), keeps the title
+// and the browser's ARIA live region saying what runs, and clicks at the wall hits.
+
+#include <SDL.h>
+
+#include <cstdint>
+#include <string>
+
+#include "access/announcement.h"
+#include "access/wall_clicks.h"
+#include "app_state.h"
+#include "wall_sound.h"
+
+namespace swarmlab {
+
+class ClassroomOutputs {
+ public:
+  /// Between frames (a new theme rebuilds ImGui's style).
+  void apply_theme(AppState& state);
+  /// After the frame's update: fullscreen, title and live region, sound. seconds: the frame's
+  /// wall time.
+  void update(AppState& state, SDL_Window* window, double seconds);
+
+ private:
+  void update_fullscreen(AppState& state, SDL_Window* window);
+  void update_sound(AppState& state, double seconds);
+
+  Theme theme_ = Theme::dark;
+  bool fullscreen_requested_ = false;
+  bool fullscreen_seen_ = false;
+  Announcer announcer_;
+  double wall_seconds_ = 0;
+  std::string title_;
+  WallSound sound_;
+  WallClicks clicks_;
+  long run_id_ = -1;
+  std::int64_t hits_ = 0;  // the run's wall hits at the last frame
+};
+
+/// The state as a listener needs it.
+Situation situation_of(AppState& state);
+
+}  // namespace swarmlab

@@ -1,0 +1,85 @@
+#include "access/announcement.h"
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+using namespace swarmlab;
+
+namespace {
+
+Situation four_masses() {
+  Situation s;
+  s.preset = "Four masses (paper Fig. 1)";
+  s.playing = true;
+  s.t = 12.5;
+  return s;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("describe: the preset, playing or paused, the time, P and T, the selection, errors") {
+  Situation s = four_masses();
+  CHECK(describe(s) == "Four masses (paper Fig. 1). Playing, t = 12.5.");
+  s.playing = false;
+  s.selected = 2;
+  CHECK(describe(s) == "Four masses (paper Fig. 1). Paused, t = 12.5. Particle 3 selected.");
+  s.P = 0.03125;
+  s.T = 1.05;
+  CHECK(contains(describe(s), "P = 0.0312, T = 1.05."));
+  s.finished = true;
+  CHECK(contains(describe(s), "Finished, t = 12.5."));
+  s.error = "dt: must be positive";
+  CHECK(describe(s).rfind("Error: dt: must be positive. Four masses", 0) == 0);
+}
+
+TEST_CASE("page title: Swarm Lab, the preset and what it does") {
+  Situation s = four_masses();
+  CHECK(page_title(s) == "Swarm Lab \u2014 Four masses (paper Fig. 1), playing");
+  s.playing = false;
+  CHECK(page_title(s) == "Swarm Lab \u2014 Four masses (paper Fig. 1), paused");
+}
+
+TEST_CASE("Announcer: speaks first, then at once on a change of state, not on every frame") {
+  Announcer a;
+  Situation s = four_masses();
+  REQUIRE(a.next(s, 0.0));
+  // Frames later, the time moved: nothing until the interval has passed.
+  s.t = 12.6;
+  CHECK_FALSE(a.next(s, 0.016));
+  s.t = 13.0;
+  CHECK_FALSE(a.next(s, Announcer::kTimeInterval - 0.1));
+  // Pausing is said at once, with the time it paused at.
+  s.playing = false;
+  const auto paused = a.next(s, Announcer::kTimeInterval - 0.05);
+  REQUIRE(paused);
+  CHECK(contains(*paused, "Paused, t = 13."));
+  // Paused, the time does not move: silence however long it waits.
+  CHECK_FALSE(a.next(s, 100.0));
+  // A new preset and a selection are said at once.
+  s.preset = "Gas in a sphere";
+  const auto opened = a.next(s, 100.01);
+  REQUIRE(opened);
+  CHECK(contains(*opened, "Gas in a sphere."));
+  s.selected = 0;
+  const auto picked = a.next(s, 100.02);
+  REQUIRE(picked);
+  CHECK(contains(*picked, "Particle 1 selected."));
+}
+
+TEST_CASE("Announcer: while playing, the time is said again once per interval") {
+  Announcer a;
+  Situation s = four_masses();
+  REQUIRE(a.next(s, 0.0));
+  int said = 0;
+  // 20 s of frames at 60 Hz, the simulated time running: four or five updates, not 1200.
+  for (int frame = 1; frame <= 1200; ++frame) {
+    s.t = 12.5 + frame / 60.0;
+    if (a.next(s, frame / 60.0)) ++said;
+  }
+  CHECK(said == int(20 / Announcer::kTimeInterval));
+}

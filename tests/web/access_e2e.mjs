@@ -1,0 +1,140 @@
+// The classroom in the browser: keyboard-only operation (ImGui's keyboard navigation, no
+// mouse), the screen reader's live region and the page title following the state, the light
+// theme and presentation mode through swarmlab.set() (a screenshot at 1280x720), and sound on
+// and off. Run through tests/web/run.sh; the last line is "N passed, M failed".
+import * as harness from './harness.mjs';
+
+const { check, sleep, openApp, launchBrowser, runSuite, screenshot, pageErrors, consoleErrors,
+        DEFAULT_PRESET } = harness;
+
+async function main(url) {
+  const context = await launchBrowser({ width: 1280, height: 720 });
+  const blank = context.pages()[0];
+  const { page, started, error } = await openApp(url, 'access');
+  if (blank) await blank.close();
+  if (!check('the app starts', started, error || '')) return;
+
+  const api = (expr, arg) => page.evaluate(expr, arg);
+  const appState = () => api(() => window.swarmlab.state());
+  const spoken = () => api(() => document.getElementById('announcer').textContent);
+  // ImGui 1.86 reads keys once a frame: a key is held for a few frames, as a hand does.
+  const framesPass = async (n) => {
+    const start = await api(() => window.swarmlab.frames());
+    await page.waitForFunction((target) => window.swarmlab.frames() >= target, start + n, { timeout: 15000 });
+  };
+  const tap = async (key) => { await page.keyboard.down(key); await framesPass(3); await page.keyboard.up(key); await framesPass(3); };
+  // Ctrl+Tab switches panels as Alt+Tab switches programs: Tab pressed k times with Ctrl held
+  // goes k panels down the list of recently used ones. Tries k = 1, 2, ... until `wanted` has
+  // the keyboard focus.
+  const focusPanel = async (wanted) => {
+    let focus = null;
+    for (let k = 1; k <= 6; ++k) {
+      await page.keyboard.down('Control'); await framesPass(2);
+      for (let i = 0; i < k; ++i) await tap('Tab');
+      await page.keyboard.up('Control'); await framesPass(3);
+      focus = (await appState()).keyboard_focus;
+      if (wanted.includes(focus)) break;
+    }
+    return focus;
+  };
+
+  // 1. What the page says at the start: the live region and the title.
+  const region = await api(() => {
+    const r = document.getElementById('announcer');
+    return r && { role: r.getAttribute('role'), live: r.getAttribute('aria-live'), width: r.getBoundingClientRect().width };
+  });
+  check('an off-screen live region: role="status" aria-live="polite"',
+        region && region.role === 'status' && region.live === 'polite' && region.width <= 1, JSON.stringify(region));
+  check('the live region names the preset and says it plays',
+        (await spoken()).startsWith(`${DEFAULT_PRESET}. Playing, t = `), await spoken());
+  const title = await page.title();
+  check('the page title says what runs', title === `Swarm Lab \u2014 ${DEFAULT_PRESET}, playing`, title);
+
+  // 2. Keyboard only: the page has focus (as after a Tab into it) but no mouse event reaches
+  // the app. Ctrl+Tab walks the panels; in the transport bar the first control is Play/Pause,
+  // and Space presses it.
+  await page.focus('#canvas');
+  const focus = await focusPanel(['transport']);
+  check('Ctrl+Tab reaches the transport bar', focus === 'transport', `keyboard focus: ${focus}`);
+  await tap('Space');
+  await framesPass(3);
+  let s = await appState();
+  check('Space on the focused Pause button pauses (once: the Space shortcut stands aside)', s.playing === false,
+        `playing ${s.playing}`);
+  check('the live region says paused', /Paused, t = /.test(await spoken()), await spoken());
+  check('the title says paused', (await page.title()).endsWith(', paused'), await page.title());
+  await tap('Space');
+  s = await appState();
+  check('Space again plays', s.playing === true, `playing ${s.playing}`);
+
+  // A preset change through the menu bar: Ctrl+Tab to it, Space opens Scenario, Down moves in
+  // its list, Space opens the preset focused.
+  const shipped = await api(() => window.swarmlab.shipped());
+  const before = (await appState()).name;
+  const menuFocus = await focusPanel(['menu', 'MainMenuBar']);
+  await tap('Space');
+  await framesPass(3);
+  await tap('ArrowDown');
+  await tap('Space');
+  await framesPass(5);
+  s = await appState();
+  check('Ctrl+Tab to the menu bar, Space, Down, Space opens another shipped preset',
+        s.name !== before && shipped.some((p) => p.name === s.name),
+        `focus: ${menuFocus}; "${before}" -> "${s.name}"`);
+  await framesPass(3);
+  check('the live region says the new preset\'s name', (await spoken()).includes(s.name), await spoken());
+  check('the title follows the preset', (await page.title()).includes(s.name), await page.title());
+
+  // 3. The light theme and presentation mode through swarmlab.set(): the pixels change.
+  const dark = await screenshot(page, 'access-dark-1280x720.png', {});
+  await api(() => window.swarmlab.set({ theme: 'light' }));
+  await framesPass(4);
+  const light = await screenshot(page, 'access-light-1280x720.png', {});
+  const bright = (img) => parseInt(img.topColor.slice(1), 16) >= 0xddd;
+  check('set({theme: "light"}) turns the page light', !bright(dark) && bright(light) && (await appState()).theme === 'light',
+        `most common colour ${dark.topColor} -> ${light.topColor}`);
+  await api(() => window.swarmlab.set({ presentation: true, theme: 'dark' }));  // table order: presentation wins
+  await framesPass(6);
+  s = await appState();
+  const shown = await screenshot(page, 'access-presentation-1280x720.png', {});
+  check('set({presentation: true}): light theme, a light screen', s.presentation === true && s.theme === 'light' && bright(shown),
+        `theme ${s.theme}, most common colour ${shown.topColor} ${(100 * shown.topShare).toFixed(0)}%`);
+  await api(() => window.swarmlab.set({ presentation: false }));
+  await framesPass(4);
+  s = await appState();
+  check('set({presentation: false}) gives the dark theme back', s.presentation === false && s.theme === 'dark', `theme ${s.theme}`);
+
+  // set() refuses what it does not know, names it, and changes nothing.
+  const refusals = await api(() => [{ colour: 'red' }, { theme: 'blue' }, { sound: 'yes', theme: 'light' }, 7].map((v) => {
+    try { window.swarmlab.set(v); return 'accepted'; } catch (e) { return e.message; }
+  }));
+  check('set() with an unknown key throws naming it', /unknown key "colour"/.test(refusals[0]), refusals[0]);
+  check('set() with a bad theme throws naming the key and the rule', /theme: must be "dark" or "light"/.test(refusals[1]), refusals[1]);
+  check('a refused set() changes nothing', /sound: must be true or false/.test(refusals[2]) && (await appState()).theme === 'dark', refusals[2]);
+  check('set() of a non-object throws', /expects an object/.test(refusals[3]), refusals[3]);
+
+  // 4. Sound: off until turned on; on after a gesture makes a running AudioContext; off again.
+  check('sound is off at the start', (await appState()).sound === false);
+  await page.mouse.click(640, 600);  // a gesture, as the user's click on the toggle would be
+  await api(() => window.swarmlab.set({ sound: true }));
+  await framesPass(5);
+  let audio = await api(() => ({ sound: window.swarmlab.state().sound, context: Module.swarmlabAudio ? Module.swarmlabAudio.state : null }));
+  check('set({sound: true}) after a gesture: sound on, the AudioContext runs', audio.sound === true && audio.context === 'running',
+        JSON.stringify(audio));
+  await api(() => window.swarmlab.set({ sound: false }));
+  await framesPass(3);
+  audio = await api(() => ({ sound: window.swarmlab.state().sound, context: Module.swarmlabAudio ? Module.swarmlabAudio.state : null }));
+  check('set({sound: false}): sound off, the AudioContext suspended', audio.sound === false && audio.context !== 'running',
+        JSON.stringify(audio));
+
+  // 5. Fullscreen from the key: granted or refused by the browser, never an error.
+  await tap('F11');
+  await framesPass(5);
+  s = await appState();
+  check('F11 asks for fullscreen without an error', typeof s.fullscreen === 'boolean', `fullscreen ${s.fullscreen}`);
+
+  check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
+  check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
+}
+
+runSuite('access_e2e', 140_000, main);
