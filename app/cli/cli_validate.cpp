@@ -2,10 +2,32 @@
 
 #include "cli.h"
 #include "files/preset_file.h"
+#include "lessons/lesson_file.h"
 
 namespace swarmlab {
+namespace {
+
+// A lesson file ("lesson": 1) is checked as a lesson, its shipped presets looked up in the
+// source tree's assets/presets.
+int validate_lesson(const std::string& path) {
+  const LessonParse parsed = read_lesson_file(path, shipped_preset_lookup(SWARMLAB_PRESET_DIR));
+  if (!parsed.lesson) {
+    std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
+    return 1;
+  }
+  std::printf("%s: valid lesson \"%s\" (%zu steps)\n", path.c_str(), parsed.lesson->id.c_str(),
+              parsed.lesson->steps.size());
+  return 0;
+}
+
+}  // namespace
 
 int validate_command(const std::string& preset_path) {
+  {
+    std::string error;
+    const std::string text = read_text_file(preset_path, error);
+    if (error.empty() && looks_like_lesson(text)) return validate_lesson(preset_path);
+  }
   const swarm::PresetParse parsed = read_preset_file(preset_path);
   if (!parsed.preset) {
     std::fprintf(stderr, "error: %s\n", parsed.error.c_str());

@@ -1,0 +1,53 @@
+#include "lesson_file.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "files/preset_file.h"
+#include "swarm/printable_text.h"
+
+namespace swarmlab {
+
+PresetLookup shipped_preset_lookup(std::string directory) {
+  return [directory = std::move(directory)](const std::string& name) {
+    swarm::PresetParse out;
+    const bool plain = !name.empty() && name.find_first_of("/\\") == std::string::npos &&
+                       name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0 &&
+                       name.find("..") == std::string::npos;
+    if (!plain) {
+      out.error = "\"" + swarm::printable(name) +
+                  "\" is not a shipped preset's file name (such as \"two-body-circular.json\")";
+      return out;
+    }
+    std::ifstream probe(directory + "/" + name);
+    if (!probe) {
+      out.error = "no shipped preset \"" + swarm::printable(name) + "\"";
+      return out;
+    }
+    out = read_preset_file(directory + "/" + name);
+    return out;
+  };
+}
+
+std::string read_text_file(const std::string& path, std::string& error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = path + ": cannot open the file";
+    return {};
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) error = path + ": cannot read the file";
+  return text.str();
+}
+
+LessonParse read_lesson_file(const std::string& path, const PresetLookup& lookup) {
+  LessonParse out;
+  const std::string text = read_text_file(path, out.error);
+  if (!out.error.empty()) return out;
+  out = parse_lesson(text, lookup);
+  if (!out.lesson) out.error = path + ": " + out.error;
+  return out;
+}
+
+}  // namespace swarmlab
