@@ -15,8 +15,9 @@ int validate_lesson(const std::string& path) {
     std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
     return 1;
   }
-  std::printf("%s: valid lesson \"%s\" (%zu steps)\n", path.c_str(), parsed.lesson->id.c_str(),
-              parsed.lesson->steps.size());
+  const std::size_t steps = parsed.lesson->steps.size();
+  std::printf("%s: valid lesson \"%s\" (%zu step%s)\n", path.c_str(), parsed.lesson->id.c_str(),
+              steps, steps == 1 ? "" : "s");
   return 0;
 }
 

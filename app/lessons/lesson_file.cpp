@@ -1,5 +1,7 @@
 #include "lesson_file.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -47,6 +49,24 @@ LessonParse read_lesson_file(const std::string& path, const PresetLookup& lookup
   if (!out.error.empty()) return out;
   out = parse_lesson(text, lookup);
   if (!out.lesson) out.error = path + ": " + out.error;
+  return out;
+}
+
+std::vector<Lesson> load_shipped_lessons(const std::string& directory, const PresetLookup& lookup,
+                                         std::string& problems) {
+  std::vector<std::string> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error))
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  std::vector<Lesson> out;
+  for (const std::string& file : files) {
+    LessonParse parsed = read_lesson_file(file, lookup);
+    if (parsed.lesson)
+      out.push_back(std::move(*parsed.lesson));
+    else
+      problems += "error: " + parsed.error + "\n";
+  }
   return out;
 }
 

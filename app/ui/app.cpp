@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lesson_panel.h"
 #include "panels.h"
 #include "scene_overlay.h"
 #include "shortcuts.h"
@@ -148,6 +149,7 @@ void App::layout_windows() {
       if (ImGui::MenuItem("Smaller UI", "Ctrl -")) s.layout.step_ui_scale(-1);
       ImGui::EndMenu();
     }
+    draw_lessons_menu(s);
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
     const std::string title = "Swarm Lab  \u2014  " + s.preset.name;
     const float w = ImGui::CalcTextSize(title.c_str()).x;
@@ -214,6 +216,8 @@ void App::layout_windows() {
   if (ImGui::Begin("##readouts", nullptr, overlay)) draw_readouts(s);
   ImGui::End();
   draw_help_window(s);
+  draw_lesson_window(s);
+  draw_welcome_window(s);
 }
 
 void App::handle_view_input() {

@@ -11,6 +11,7 @@
 
 #include "camera.h"
 #include "colour_map.h"
+#include "lesson_session.h"
 #include "live_run.h"
 #include "preset_store.h"
 
@@ -104,6 +105,8 @@ struct AppState {
   PlotOptions plots;
   Layout layout;
   FrameStats stats;
+  /// The shipped lessons, the open one and the student's progress (lesson_session.h).
+  LessonSession lessons;
 
   /// Opens a valid preset: it becomes origin, preset and draft; the run restarts.
   void open(const swarm::Preset& p, std::string location);
