@@ -18,27 +18,19 @@
 namespace swarmlab {
 namespace {
 
-/// The shipped presets: in the source tree of this build, else next to the binary.
-std::string shipped_preset_directory() {
-  if (std::filesystem::is_directory(SWARMLAB_PRESET_DIR)) return SWARMLAB_PRESET_DIR;
+/// Shipped files (presets, lessons): in the source tree of this build, else in the folder
+/// `name` next to the binary.
+std::string shipped_directory(const char* in_source_tree, const char* name) {
+  if (std::filesystem::is_directory(in_source_tree)) return in_source_tree;
   std::string beside;
   if (char* base = SDL_GetBasePath()) {
-    beside = std::string(base) + "presets";
+    beside = std::string(base) + name;
     SDL_free(base);
   }
   return beside;
 }
-
-/// The shipped lessons: in the source tree of this build, else next to the binary.
-std::string shipped_lesson_directory() {
-  if (std::filesystem::is_directory(SWARMLAB_LESSON_DIR)) return SWARMLAB_LESSON_DIR;
-  std::string beside;
-  if (char* base = SDL_GetBasePath()) {
-    beside = std::string(base) + "lessons";
-    SDL_free(base);
-  }
-  return beside;
-}
+std::string shipped_preset_directory() { return shipped_directory(SWARMLAB_PRESET_DIR, "presets"); }
+std::string shipped_lesson_directory() { return shipped_directory(SWARMLAB_LESSON_DIR, "lessons"); }
 
 std::string screenshot_error;
 std::string screenshot_path;

@@ -355,15 +355,16 @@ LessonParse parse_lesson(std::string_view json_text, const PresetLookup& lookup)
 }
 
 bool looks_like_lesson(std::string_view json_text) {
-  // A text too large for a lesson is only looked at where its first key would be.
-  if (json_text.size() > kMaxLessonBytes)
-    return json_text.substr(0, 200).find("\"lesson\"") != std::string_view::npos;
-  try {
-    const json j = json::parse(json_text.begin(), json_text.end(), nullptr, false);
-    return j.is_object() && j.contains("lesson");
-  } catch (const json::exception&) {
-    return false;
+  // Text that is not JSON, or too large for a lesson, is a lesson when its first key is
+  // "lesson", so that its message is a lesson's.
+  const std::size_t brace = json_text.find_first_not_of(" \t\r\n");
+  if (brace != std::string_view::npos && json_text[brace] == '{') {
+    const std::size_t key = json_text.find_first_not_of(" \t\r\n", brace + 1);
+    if (key != std::string_view::npos && json_text.substr(key, 8) == "\"lesson\"") return true;
   }
+  if (json_text.size() > kMaxLessonBytes) return false;
+  const json j = json::parse(json_text.begin(), json_text.end(), nullptr, false);
+  return j.is_object() && j.contains("lesson");
 }
 
 std::string_view name_of(LessonPlot plot) {

@@ -76,7 +76,8 @@ struct LessonParse {
 LessonParse parse_lesson(std::string_view json_text, const PresetLookup& lookup);
 inline constexpr std::size_t kMaxLessonBytes = 1'000'000;
 
-/// Whether JSON text is a lesson rather than a preset: an object with a "lesson" key.
+/// Whether JSON text is a lesson rather than a preset: an object with a "lesson" key, or text
+/// (broken or oversized) whose first key is "lesson".
 bool looks_like_lesson(std::string_view json_text);
 
 /// The name used in a lesson file for a plot, an overlay and a quantity ("springs-to-cm").

@@ -180,6 +180,8 @@ TEST_CASE("a lesson is told from a preset by its \"lesson\" key") {
   CHECK_FALSE(looks_like_lesson(kPair));
   CHECK_FALSE(looks_like_lesson("not json"));
   CHECK(looks_like_lesson(R"({"lesson": 7})"));  // then refused as a lesson, by its version
+  CHECK(looks_like_lesson(R"( {"lesson": 1, "id": "cut short)"));  // broken, but a lesson's
+  CHECK_FALSE(looks_like_lesson(R"({"J": 1, "lesson)"));
 }
 
 TEST_CASE("a measurement is right within the relative tolerance of the simulation's value") {
