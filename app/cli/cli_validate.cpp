@@ -1,7 +1,6 @@
 #include <cstdio>
 
 #include "cli.h"
-#include "files/preset_file.h"
 #include "lessons/lesson_file.h"
 
 namespace swarmlab {
@@ -9,8 +8,9 @@ namespace {
 
 // A lesson file ("lesson": 1) is checked as a lesson, its shipped presets looked up in the
 // source tree's assets/presets.
-int validate_lesson(const std::string& path) {
-  const LessonParse parsed = read_lesson_file(path, shipped_preset_lookup(SWARMLAB_PRESET_DIR));
+int validate_lesson(const std::string& path, const std::string& text) {
+  LessonParse parsed = parse_lesson(text, shipped_preset_lookup(SWARMLAB_PRESET_DIR));
+  if (!parsed.lesson) parsed.error = path + ": " + parsed.error;
   if (!parsed.lesson) {
     std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
     return 1;
@@ -24,12 +24,17 @@ int validate_lesson(const std::string& path) {
 }  // namespace
 
 int validate_command(const std::string& preset_path) {
-  {
-    std::string error;
-    const std::string text = read_text_file(preset_path, error);
-    if (error.empty() && looks_like_lesson(text)) return validate_lesson(preset_path);
+  // The file is read once, then checked as a lesson or as a preset.
+  std::string read_error;
+  const std::string text = read_text_file(preset_path, read_error);
+  if (read_error.empty() && looks_like_lesson(text)) return validate_lesson(preset_path, text);
+  swarm::PresetParse parsed;
+  if (read_error.empty()) {
+    parsed = swarm::parse_preset(text);
+    if (!parsed.preset) parsed.error = preset_path + ": " + parsed.error;
+  } else {
+    parsed.error = read_error;
   }
-  const swarm::PresetParse parsed = read_preset_file(preset_path);
   if (!parsed.preset) {
     std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
     return 1;
