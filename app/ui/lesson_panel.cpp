@@ -22,6 +22,19 @@ const ImVec4 kRight(0.45f, 0.90f, 0.45f, 1.0f);
 const ImVec4 kWrong(1.0f, 0.55f, 0.45f, 1.0f);
 const ImVec4 kNeutral(0.65f, 0.80f, 1.0f, 1.0f);
 
+/// Keeps the current window inside the main viewport (after the browser window shrinks, a
+/// phone turns, or the student drags it off), no wider or taller than the viewport.
+void keep_inside_viewport() {
+  const ImGuiViewport* v = ImGui::GetMainViewport();
+  ImVec2 size = ImGui::GetWindowSize();
+  const ImVec2 fitted(std::min(size.x, v->Size.x), std::min(size.y, v->Size.y));
+  if (fitted.x != size.x || fitted.y != size.y) ImGui::SetWindowSize(fitted);
+  ImVec2 pos = ImGui::GetWindowPos();
+  const ImVec2 clamped(std::clamp(pos.x, v->Pos.x, v->Pos.x + v->Size.x - fitted.x),
+                       std::clamp(pos.y, v->Pos.y, v->Pos.y + v->Size.y - fitted.y));
+  if (clamped.x != pos.x || clamped.y != pos.y) ImGui::SetWindowPos(clamped);
+}
+
 }  // namespace
 
 // [SECTION] prose ------------------------------------------------------------------------------
@@ -157,6 +170,7 @@ void draw_lesson_window(AppState& state) {
                                       ImVec2(view.width, 0.8f * view.height));
   bool open = true;
   if (ImGui::Begin("Lesson", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    keep_inside_viewport();
     ImGui::TextColored(kEmphasis, "%s", lesson->title.c_str());
     const std::size_t step = lessons.step(), steps = lesson->steps.size();
     char progress[48];
@@ -217,6 +231,7 @@ void draw_welcome_window(AppState& state) {
   bool open = true;
   if (ImGui::Begin("Welcome", &open,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    keep_inside_viewport();
     ImGui::PushTextWrapPos(0);
     ImGui::TextColored(kEmphasis, "Welcome to Swarm Lab");
     draw_prose(
