@@ -10,12 +10,13 @@
 namespace swarmlab {
 namespace {
 
-// localStorage may be missing or refuse (private windows, a full quota): progress then lasts
+// (EM_JS bodies: double quotes and no backslashes, which the preprocessor and the metadata
+// would mangle.) localStorage may be missing or refuse (private windows, a full quota): progress then lasts
 // the visit only.
 // clang-format off
 EM_JS(char*, progress_load, (), {
-  var text = '';
-  try { text = window.localStorage.getItem('swarmlab.progress') || ''; } catch (e) { text = ''; }
+  var text = "";
+  try { text = window.localStorage.getItem("swarmlab.progress") || ""; } catch (e) { text = ""; }
   var size = lengthBytesUTF8(text) + 1;
   var pointer = _malloc(size);
   stringToUTF8(text, pointer, size);
@@ -24,10 +25,10 @@ EM_JS(char*, progress_load, (), {
 // An automated browser (navigator.webdriver: a test, a screenshot job) gets the welcome only
 // when the address asks for it with ?welcome, so that scripted pages are not covered by it.
 EM_JS(int, welcome_unwanted, (), {
-  return (navigator.webdriver && !/[?&]welcome\b/.test(location.search)) ? 1 : 0;
+  return (navigator.webdriver && location.search.indexOf("welcome") < 0) ? 1 : 0;
 });
 EM_JS(void, progress_save, (const char* text), {
-  try { window.localStorage.setItem('swarmlab.progress', UTF8ToString(text)); } catch (e) {}
+  try { window.localStorage.setItem("swarmlab.progress", UTF8ToString(text)); } catch (e) {}
 });
 // clang-format on
 

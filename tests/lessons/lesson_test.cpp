@@ -46,7 +46,7 @@ std::string error_of(const std::string& text) {
   return parsed.lesson ? std::string() : parsed.error;
 }
 
-std::string error_of(const ojson& lesson) { return error_of(lesson.dump()); }
+std::string error_of_json(const ojson& lesson) { return error_of(lesson.dump()); }
 
 }  // namespace
 
@@ -142,7 +142,7 @@ TEST_CASE("every rule of the lesson format is refused with the field and the rul
     else
       lesson.at(at.parent_pointer()).erase(at.back());
     CAPTURE(c.pointer);
-    CHECK(error_of(lesson) == c.message);
+    CHECK(error_of_json(lesson) == c.message);
   }
 }
 
@@ -150,17 +150,17 @@ TEST_CASE("a period needs an attractive scene") {
   ojson lesson = base_lesson();
   lesson["steps"][0]["preset"] = ojson::parse(kPair);
   lesson["steps"][0]["preset"]["J"] = -1.0;
-  CHECK(error_of(lesson) ==
+  CHECK(error_of_json(lesson) ==
         "steps[0].task.quantity: a period needs J > 0 in this step's preset (it has J = -1)");
 }
 
 TEST_CASE("a step without a preset is checked against the scene before it") {
   ojson lesson = base_lesson();
   lesson["steps"][1]["show"] = {{"select", 40}};  // step 1 still shows the pair
-  CHECK(error_of(lesson) == "steps[1].show.select: must be below the preset's 2 particles");
+  CHECK(error_of_json(lesson) == "steps[1].show.select: must be below the preset's 2 particles");
   lesson["steps"][3]["show"] = {{"select", 40}};  // step 3 shows the gas of 50
   lesson["steps"][1].erase("show");
-  CHECK(error_of(lesson).empty());
+  CHECK(error_of_json(lesson).empty());
 }
 
 TEST_CASE("lesson text that is not one JSON object of bounded size is refused") {
