@@ -56,8 +56,9 @@ int main(int argc, char** argv) {
   report_cmd->add_flag("--quiet,-q", report.quiet, "Say nothing on success");
 
   std::string validate_path;
-  CLI::App* validate_cmd = app.add_subcommand("validate", "Check a preset and say what is wrong");
-  validate_cmd->add_option("preset", validate_path, "Preset file (JSON)")->required();
+  CLI::App* validate_cmd =
+      app.add_subcommand("validate", "Check a preset or a lesson and say what is wrong");
+  validate_cmd->add_option("file", validate_path, "Preset or lesson file (JSON)")->required();
 
   swarmlab::BenchOptions bench;
   CLI::App* bench_cmd = swarmlab::add_bench_subcommand(app, bench);

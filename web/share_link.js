@@ -2,6 +2,7 @@
 // (before swarmlab_api.js, which uses it). Two forms, both accepted when a page opens:
 //   #preset=<base64url of the preset's UTF-8 JSON>            always written and read
 //   #z=<base64url of the JSON compressed with deflate-raw>     shorter; needs CompressionStream
+// and a lesson (docs/lessons.md) as #lesson=<base64url> or #lz=<deflate-raw, base64url>.
 // base64url is RFC 4648 section 5 without padding; padding and the '+' '/' of plain base64 are
 // accepted too, as is whitespace a mail program may have inserted. The fragment never reaches
 // the web server, so a link works from any static host.
@@ -116,8 +117,12 @@ var SwarmlabLink = (function () {
       var eq = parts[i].indexOf('=');
       if (eq < 0) continue;
       var key = parts[i].slice(0, eq), value = parts[i].slice(eq + 1);
-      if (key !== 'preset' && key !== 'z') continue;
+      if (key !== 'preset' && key !== 'z' && key !== 'lesson' && key !== 'lz') continue;
       try { value = decodeURIComponent(value); } catch (e) { /* keep it as it is */ }
+      // A lesson travels the same way: #lesson= (base64url) or #lz= (deflate-raw); the result
+      // then says { lesson: true }.
+      if (key === 'lesson' || key === 'lz')
+        return decode(key, value).then(function (r) { r.lesson = true; return r; });
       return decode(key, value);
     }
     return null;
@@ -137,7 +142,7 @@ var SwarmlabLink = (function () {
     } catch (e) {
       return Promise.resolve({ error: what + 'is not base64url (the link may have been cut short)' });
     }
-    var inflated = key === 'preset' ? Promise.resolve(bytes)
+    var inflated = key === 'preset' || key === 'lesson' ? Promise.resolve(bytes)
       : !canCompress() ? null
       : inflateLimited(bytes, maxPresetBytes);
     if (!inflated)

@@ -30,6 +30,16 @@
 //   swarmlab.buttonRect(label) where the scenario panel's button 'Open preset…', 'Download
 //                          preset' or 'Copy link' is drawn: { x, y, width, height } in CSS
 //                          pixels of the canvas, or null (for tests that click like a person)
+//   swarmlab.lessons()     the shipped lessons: [{ id, title, summary, steps }]
+//   swarmlab.openLesson(idOrJson) opens a shipped lesson by id, or a lesson (JSON text or an
+//                          object); true, or throws Error(message) and keeps what was running
+//   swarmlab.lessonState() { id, title, step, steps, text, task } or null; task is null or
+//                          { kind, prompt, ... } (web/README.md)
+//   swarmlab.lessonAnswer(value) answers the task (a number, or an option's index):
+//                          { correct, feedback } (correct null for a prediction)
+//   swarmlab.lessonNext(), swarmlab.lessonBack() move a step; return lessonState()
+//   swarmlab.lessonLink(json) a link that opens the lesson: page address + #lesson=base64url
+//   swarmlab.welcomeShown() whether the welcome window is showing
 //   swarmlab.ready         Promise resolved once main() has started (and a start link is open)
 //   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks)
 //   swarmlab.firstFrameMs  performance.now() at the end of the first frame, or null
@@ -112,8 +122,27 @@
   // { json } or { error } from SwarmlabLink.read, into the app. Returns '' or the message.
   function openLinkResult(result) {
     if (result.error) return refuse(result.error);
+    if (result.lesson) return openLessonText(result.json, true, 'lesson link');
     return openJson(result.json, 'share link', 'shared-preset.json');
   }
+
+  // Opens a lesson (JSON text, or a shipped lesson's id). Returns '' or the message, which the
+  // lesson panel and the page show; the running lesson stays.
+  function openLessonText(text, isJson, source) {
+    text = String(text);
+    var bytes = lengthBytesUTF8(text);
+    if (bytes > SwarmlabLink.maxPresetBytes)
+      return refuse(SwarmlabLink.tooLarge(source + ': the lesson', bytes));
+    var error = withHeapText(text, function (pointer) {
+      return Module.ccall('swarmlab_open_lesson', 'string', ['number', 'number', 'string'],
+                          [pointer, isJson ? 1 : 0, source]);
+    });
+    if (error) notice('error', error);
+    else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
+    return error;
+  }
+
+  function lessonStateNow() { return JSON.parse(Module.ccall('swarmlab_lesson_state', 'string', [], [])); }
 
   function copyText(text) { // Promise: true when on the clipboard
     function fallback() {
@@ -243,6 +272,35 @@
       Module.ccall('swarmlab_stopwatch', null, ['number'], [code]);
       return api.state().stopwatch;
     },
+    // Lessons (docs/lessons.md, web/README.md).
+    lessons: function () {
+      check();
+      return JSON.parse(Module.ccall('swarmlab_lessons', 'string', [], [])).map(function (l) {
+        return { id: l.id, title: l.title, summary: l.summary, steps: l.steps };
+      });
+    },
+    openLesson: function (idOrJson) {
+      check();
+      var isJson = typeof idOrJson !== 'string' || /^\s*\{/.test(idOrJson);
+      var text = typeof idOrJson === 'string' ? idOrJson : JSON.stringify(idOrJson);
+      var error = openLessonText(text, isJson, 'swarmlab.openLesson()');
+      if (error) throw new Error(error);
+      return true;
+    },
+    lessonState: function () { check(); return lessonStateNow(); },
+    lessonAnswer: function (value) {
+      check();
+      var result = JSON.parse(Module.ccall('swarmlab_lesson_answer', 'string', ['number'], [Number(value)]));
+      if (result.error) throw new Error('swarmlab.lessonAnswer(): ' + result.error);
+      return result;
+    },
+    lessonNext: function () { check(); return JSON.parse(Module.ccall('swarmlab_lesson_move', 'string', ['number'], [1])); },
+    lessonBack: function () { check(); return JSON.parse(Module.ccall('swarmlab_lesson_move', 'string', ['number'], [-1])); },
+    lessonLink: function (json) {
+      var text = typeof json === 'string' ? json : JSON.stringify(json);
+      return pageAddress() + '#lesson=' + SwarmlabLink.toBase64url(new TextEncoder().encode(text));
+    },
+    welcomeShown: function () { check(); return Module.ccall('swarmlab_welcome_shown', 'number', [], []) === 1; },
     shipped: function () {
       check();
       return Module.ccall('swarmlab_shipped', 'string', [], []).split('\n').filter(Boolean).map(function (line) {

@@ -2,6 +2,7 @@
 // The one App of the page, for the code that reaches it from JavaScript (js_api.cpp) and from
 // the scenario panel's browser buttons (storage_controls.cpp). web_main.cpp owns it.
 
+#include <memory>
 #include <string>
 
 #include "ui/app.h"
@@ -17,6 +18,11 @@ App* web_app();
 /// `location` becomes the Download preset file name. Returns an empty string on success.
 std::string open_preset_json(AppState& state, const std::string& json, const std::string& source,
                              const std::string& location);
+
+/// The student's lesson progress in the page's localStorage (web_progress_store.cpp).
+std::unique_ptr<ProgressStore> make_web_progress_store();
+/// An automated browser that did not ask for the welcome (?welcome) is not shown it.
+bool web_welcome_unwanted();
 
 /// Starts a browser download of the running preset (the same JSON a desktop Save writes) and
 /// says so in the scenario panel. Returns the file name.

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "lessons/lesson_file.h"
 #include "ui/main_loop.h"
 #include "storage_controls.h"
 #include "web_app.h"
@@ -34,6 +35,10 @@ int main() {
                                                  /*preset_location=*/"",
                                                  /*fixed_frame_time=*/false);
   frontend.app->state().storage_controls = swarmlab::draw_storage_controls;
+  // Lessons embedded at /lessons (assets/lessons); progress and the welcome in localStorage.
+  frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
+                                     swarmlab::shipped_preset_lookup("/presets"));
+  if (swarmlab::web_welcome_unwanted()) frontend.app->state().lessons.show_welcome = false;
   // A share link in the address replaces the default preset before the first frame.
   EM_ASM({
     if (Module.swarmlabStarted) Module.swarmlabStarted();

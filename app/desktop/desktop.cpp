@@ -12,22 +12,26 @@
 #include "files/atomic_file.h"
 #include "screenshot.h"
 #include "ui/main_loop.h"
+#include "lessons/lesson_file.h"
 #include "ui/preset_store.h"
 #include "ui/presentation.h"
 
 namespace swarmlab {
 namespace {
 
-/// The shipped presets: in the source tree of this build, else next to the binary.
-std::string shipped_preset_directory() {
-  if (std::filesystem::is_directory(SWARMLAB_PRESET_DIR)) return SWARMLAB_PRESET_DIR;
+/// Shipped files (presets, lessons): in the source tree of this build, else in the folder
+/// `name` next to the binary.
+std::string shipped_directory(const char* in_source_tree, const char* name) {
+  if (std::filesystem::is_directory(in_source_tree)) return in_source_tree;
   std::string beside;
   if (char* base = SDL_GetBasePath()) {
-    beside = std::string(base) + "presets";
+    beside = std::string(base) + name;
     SDL_free(base);
   }
   return beside;
 }
+std::string shipped_preset_directory() { return shipped_directory(SWARMLAB_PRESET_DIR, "presets"); }
+std::string shipped_lesson_directory() { return shipped_directory(SWARMLAB_LESSON_DIR, "lessons"); }
 
 std::string screenshot_error;
 std::string screenshot_path;
@@ -54,8 +58,31 @@ int run_desktop(const DesktopOptions& options) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
     return 1;
   }
+  // A lesson file (swarmlab LESSON.json) opens as a lesson over the default preset.
+  std::string lesson_text, lesson_read_error;
+  if (!options.preset_path.empty()) {
+    lesson_text = read_text_file(options.preset_path, lesson_read_error);
+    if (!looks_like_lesson(lesson_text)) lesson_text.clear();
+  }
   f.app = std::make_unique<App>(make_file_preset_store(shipped_preset_directory()),
-                                options.preset_path, options.frames > 0);
+                                lesson_text.empty() ? options.preset_path : "", options.frames > 0);
+  // Lessons: shipped beside the presets; progress in the user's config folder, except in
+  // scripted runs (--frames), which leave it alone and show no welcome.
+  f.app->state().lessons.load(shipped_lesson_directory(),
+                              options.frames > 0
+                                  ? make_memory_progress_store(R"({"welcomed": true})")
+                                  : make_file_progress_store(),
+                              shipped_preset_lookup(shipped_preset_directory()));
+  if (!lesson_text.empty()) {
+    const std::string e = f.app->state().lessons.open_json(f.app->state(), lesson_text);
+    if (!e.empty()) {
+      std::fprintf(stderr, "error: %s: %s\n", options.preset_path.c_str(), e.c_str());
+      f.app.reset();
+      close_window(f.window);
+      return 1;
+    }
+    f.app->state().lessons.dismiss_welcome();
+  }
   if (!f.app->error().empty()) {
     std::fprintf(stderr, "error: %s\n", f.app->error().c_str());
     f.app.reset();

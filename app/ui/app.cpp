@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "lesson_panel.h"
 #include "panels.h"
 #include "plot_export.h"
 #include "presentation.h"
@@ -231,6 +232,7 @@ void App::layout_windows() {
       draw_presentation_menu_items(s);
       ImGui::EndMenu();
     }
+    draw_lessons_menu(s);
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
     const std::string title = "Swarm Lab  \u2014  " + s.preset.name;
     const float w = ImGui::CalcTextSize(title.c_str()).x;
@@ -336,6 +338,8 @@ void App::layout_windows() {
   set_text_field_state(nullptr);
   s.layout.typed_text.reset();  // typed for a field that has closed since
   draw_help_window(s);
+  draw_lesson_window(s);
+  draw_welcome_window(s);
 }
 
 void App::handle_view_input() {

@@ -13,6 +13,7 @@
 #include "camera.h"
 #include "colour_map.h"
 #include "instruments.h"
+#include "lesson_session.h"
 #include "live_run.h"
 #include "preset_store.h"
 #include "screen_layout.h"
@@ -152,6 +153,8 @@ struct AppState {
   FrameStats stats;
   /// Stopwatch, period meter, P and T (update_instruments feeds them every frame).
   Instruments instruments;
+  /// The shipped lessons, the open one and the student's progress (lesson_session.h).
+  LessonSession lessons;
 
   /// Opens a valid preset: it becomes origin, preset and draft; the run restarts.
   void open(const swarm::Preset& p, std::string location);

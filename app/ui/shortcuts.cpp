@@ -147,6 +147,8 @@ void draw_help_window(AppState& state) {
     }
     ImGui::EndTable();
   }
+  // The welcome (what is on the screen, three things to try, the lessons) stays reachable.
+  if (ImGui::Button("Welcome and lessons")) state.lessons.show_welcome = true;
   ImGui::End();
 }
 

@@ -1,0 +1,453 @@
+#include "lesson.h"
+
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "swarm/printable_text.h"
+
+namespace swarmlab {
+namespace {
+
+using json = nlohmann::json;
+
+constexpr std::size_t kMaxSteps = 100;
+constexpr std::size_t kMaxTextBytes = 8000;
+constexpr std::size_t kMaxTitleBytes = 120;
+constexpr std::size_t kMaxIdBytes = 64;
+constexpr std::size_t kMaxOptions = 8;
+
+struct Invalid {
+  std::string message;
+};
+
+[[noreturn]] void fail(const std::string& field, const std::string& rule) {
+  throw Invalid{field + ": " + rule};
+}
+
+void require(bool ok, const std::string& field, const std::string& rule) {
+  if (!ok) fail(field, rule);
+}
+
+std::string format(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", x);
+  return text;
+}
+
+/// One JSON object of the lesson, refusing keys it does not know.
+class Fields {
+ public:
+  Fields(const json& j, std::string path, std::initializer_list<const char*> allowed)
+      : j_(j), path_(std::move(path)) {
+    if (!j.is_object()) fail(path_.empty() ? "lesson" : path_, "must be a JSON object");
+    std::string list;
+    for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    for (const auto& item : j.items()) {
+      bool known = false;
+      for (const char* a : allowed) known = known || item.key() == a;
+      if (!known)
+        fail(join(swarm::printable(item.key())), "unknown key (allowed here: " + list + ")");
+    }
+  }
+
+  bool has(const char* key) const { return j_.contains(key) && !j_.at(key).is_null(); }
+  const json& at(const char* key) const { return j_.at(key); }
+  std::string path(const char* key) const { return join(key); }
+
+  /// A string of 1 to max_bytes bytes; `what` says what it is for the missing message.
+  std::string text(const char* key, std::size_t max_bytes, const char* what) const {
+    if (!has(key)) fail(path(key), std::string("missing (") + what + ")");
+    if (!at(key).is_string()) fail(path(key), "must be a string");
+    std::string s = at(key).get<std::string>();
+    require(!s.empty(), path(key), "must not be empty");
+    require(s.size() <= max_bytes, path(key),
+            "must be at most " + std::to_string(max_bytes) + " bytes long");
+    return s;
+  }
+  std::size_t index(const char* key, std::size_t below, const std::string& rule) const {
+    const json& v = at(key);
+    if (!v.is_number_integer() || v.get<long long>() < 0)
+      fail(path(key), "must be a whole number >= 0");
+    const auto x = v.get<unsigned long long>();
+    require(x < below, path(key), rule);
+    return std::size_t(x);
+  }
+  double number(const char* key) const {
+    if (!at(key).is_number()) fail(path(key), "must be a number");
+    const double x = at(key).get<double>();
+    require(std::isfinite(x), path(key), "must be a finite number");
+    return x;
+  }
+
+ private:
+  std::string join(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+  const json& j_;
+  std::string path_;
+};
+
+/// Lesson text: no control characters but line breaks, and every *emphasis* closed within its
+/// paragraph.
+void check_prose(const std::string& text, const std::string& path) {
+  std::size_t stars = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 && c != '\n') {
+      char code[8];
+      std::snprintf(code, sizeof code, "%04X", c);
+      fail(path, std::string("control character U+") + code + " (only line breaks are allowed)");
+    }
+    if (c == '*') ++stars;
+    const bool paragraph_end = i + 1 == text.size() || text.compare(i, 2, "\n\n") == 0;
+    if (paragraph_end && stars % 2 != 0)
+      fail(path, "an emphasis is not closed in its paragraph (write *like this*)");
+    if (paragraph_end) stars = 0;
+  }
+}
+
+std::vector<std::string> option_list(const Fields& f, const char* key) {
+  if (!f.has(key)) fail(f.path(key), "missing (a list of 2 to 8 strings is required)");
+  const json& list = f.at(key);
+  require(list.is_array() && list.size() >= 2 && list.size() <= kMaxOptions, f.path(key),
+          "must be a list of 2 to 8 strings");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = f.path(key) + "[" + std::to_string(i) + "]";
+    require(list[i].is_string() && !list[i].get<std::string>().empty(), path,
+            "must be a non-empty string");
+    out.push_back(list[i].get<std::string>());
+    require(out.back().size() <= kMaxTextBytes, path,
+            "must be at most " + std::to_string(kMaxTextBytes) + " bytes long");
+    check_prose(out.back(), path);
+  }
+  return out;
+}
+
+template <typename Enum, std::size_t n>
+Enum named(const Fields& f, const char* key, const Enum (&values)[n]) {
+  std::string list;
+  for (Enum v : values) list += (list.empty() ? "\"" : ", \"") + std::string(name_of(v)) + "\"";
+  if (!f.at(key).is_string()) fail(f.path(key), "must be one of " + list);
+  const std::string given = f.at(key).get<std::string>();
+  for (Enum v : values)
+    if (name_of(v) == given) return v;
+  fail(f.path(key), "must be one of " + list + " (not \"" + swarm::printable(given) + "\")");
+}
+
+std::size_t particle_count(const swarm::Preset& p) {
+  if (const auto* list = std::get_if<std::vector<swarm::Particle>>(&p.particles))
+    return list->size();
+  return std::size_t(std::get<swarm::SwarmSpec>(p.particles).count);
+}
+
+LessonTask task_of(const json& j, const std::string& path, const swarm::Preset& scene) {
+  if (!j.is_object()) fail(path, "must be a JSON object");
+  if (!j.contains("kind")) fail(path + ".kind", "missing (\"measure\", \"choice\" or \"predict\")");
+  LessonTask t;
+  {
+    const Fields kind(j, path, {"kind", "prompt", "quantity", "particle", "tolerance", "window",
+                                "options", "answer", "feedback", "outcome"});
+    t.kind = named(kind, "kind",
+                   {LessonTask::Kind::measure, LessonTask::Kind::choice, LessonTask::Kind::predict});
+  }
+  const std::size_t N = particle_count(scene);
+  if (t.kind == LessonTask::Kind::measure) {
+    const Fields f(j, path, {"kind", "prompt", "quantity", "particle", "tolerance", "window"});
+    t.prompt = f.text("prompt", kMaxTextBytes, "the question to show");
+    check_prose(t.prompt, f.path("prompt"));
+    if (!f.has("quantity"))
+      fail(f.path("quantity"), "missing (period, omega, M, E, P or T)");
+    t.quantity = named(f, "quantity",
+                       {Quantity::period, Quantity::omega, Quantity::M, Quantity::E, Quantity::P,
+                        Quantity::T});
+    if (t.quantity == Quantity::period)
+      require(scene.J > 0, f.path("quantity"),
+              "a period needs J > 0 in this step's preset (it has J = " + format(scene.J) + ")");
+    if (t.quantity == Quantity::P || t.quantity == Quantity::T)
+      require(bool(scene.container_radius), f.path("quantity"),
+              "P and T are measured at the wall: this step's preset needs a container");
+    if (f.has("particle"))
+      t.particle = f.index("particle", N,
+                           "must be below the preset's " + std::to_string(N) + " particles");
+    if (f.has("tolerance")) {
+      t.tolerance = f.number("tolerance");
+      require(t.tolerance > 0, f.path("tolerance"), "must be > 0");
+      require(t.tolerance < 1, f.path("tolerance"), "must be < 1 (it is relative: 0.02 is 2%)");
+    }
+    if (f.has("window")) {
+      t.window = f.number("window");
+      require(t.window >= 0, f.path("window"), "must be >= 0");
+      require(t.quantity == Quantity::P || t.quantity == Quantity::T, f.path("window"),
+              "only P and T are averaged over a window");
+    }
+  } else if (t.kind == LessonTask::Kind::choice) {
+    const Fields f(j, path, {"kind", "prompt", "options", "answer", "feedback"});
+    t.prompt = f.text("prompt", kMaxTextBytes, "the question to show");
+    check_prose(t.prompt, f.path("prompt"));
+    t.options = option_list(f, "options");
+    if (!f.has("answer")) fail(f.path("answer"), "missing (the index of the right option)");
+    t.answer = f.index("answer", t.options.size(),
+                       "must be an index into options (0 to " +
+                           std::to_string(t.options.size() - 1) + ")");
+    if (f.has("feedback")) {
+      t.feedback = option_list(f, "feedback");
+      require(t.feedback.size() == t.options.size(), f.path("feedback"),
+              "must give one text per option (" + std::to_string(t.options.size()) + ")");
+    }
+  } else {
+    const Fields f(j, path, {"kind", "prompt", "options", "outcome"});
+    t.prompt = f.text("prompt", kMaxTextBytes, "the question to show");
+    check_prose(t.prompt, f.path("prompt"));
+    t.options = option_list(f, "options");
+    if (f.has("outcome")) {
+      t.outcome = f.text("outcome", kMaxTextBytes, "what the run shows");
+      check_prose(t.outcome, f.path("outcome"));
+    }
+  }
+  return t;
+}
+
+LessonStep step_of(const json& j, const std::string& path, const PresetLookup& lookup,
+                   const std::optional<swarm::Preset>& running) {
+  const Fields f(j, path, {"text", "preset", "show", "task"});
+  LessonStep s;
+  s.text = f.text("text", kMaxTextBytes, "what the step says");
+  check_prose(s.text, f.path("text"));
+  if (f.has("preset")) {
+    const json& p = f.at("preset");
+    swarm::PresetParse parsed;
+    if (p.is_string()) {
+      s.preset_name = p.get<std::string>();
+      parsed = lookup(s.preset_name);
+      if (!parsed.preset) fail(f.path("preset"), parsed.error);
+    } else if (p.is_object()) {
+      parsed = swarm::parse_preset(p.dump());
+      if (!parsed.preset) throw Invalid{f.path("preset") + "." + parsed.error};
+    } else {
+      fail(f.path("preset"), "must be a shipped preset's file name or a preset object");
+    }
+    s.preset = std::move(parsed.preset);
+  } else if (!running) {
+    fail(f.path("preset"), "missing (the first step sets the scene with a preset)");
+  }
+  const swarm::Preset& scene = s.preset ? *s.preset : *running;
+  if (f.has("show")) {
+    const Fields show(f.at("show"), f.path("show"), {"plot", "select", "overlay"});
+    if (show.has("plot"))
+      s.plot = named(show, "plot",
+                     {LessonPlot::wall, LessonPlot::energy, LessonPlot::expansion,
+                      LessonPlot::compare});
+    if (show.has("select")) {
+      const std::size_t N = particle_count(scene);
+      s.select = show.index("select", N,
+                            "must be below the preset's " + std::to_string(N) + " particles");
+    }
+    if (show.has("overlay"))
+      s.overlay = named(show, "overlay",
+                        {LessonOverlay::none, LessonOverlay::springs, LessonOverlay::springs_to_cm});
+  }
+  if (f.has("task")) s.task = task_of(f.at("task"), f.path("task"), scene);
+  return s;
+}
+
+Lesson lesson_of(const json& j, const PresetLookup& lookup) {
+  const Fields f(j, "", {"lesson", "id", "title", "summary", "steps"});
+  if (!f.has("lesson"))
+    fail("lesson", "missing the key \"lesson\": 1 (the lesson format's version)");
+  require(f.at("lesson") == kLessonVersion, "lesson",
+          "must be " + std::to_string(kLessonVersion) + " (the only lesson version so far)");
+  Lesson l;
+  l.id = f.text("id", kMaxIdBytes, "a short name such as \"one-period\"");
+  for (char c : l.id)
+    require((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-', "id",
+            "may hold only lowercase letters, digits and '-'");
+  l.title = f.text("title", kMaxTitleBytes, "the lesson's title");
+  check_prose(l.title, "title");
+  l.summary = f.text("summary", kMaxTextBytes, "one or two sentences on what it teaches");
+  check_prose(l.summary, "summary");
+  if (!f.has("steps")) fail("steps", "missing (a list of 1 to 100 steps)");
+  const json& steps = f.at("steps");
+  require(steps.is_array() && !steps.empty() && steps.size() <= kMaxSteps, "steps",
+          "must be a list of 1 to " + std::to_string(kMaxSteps) + " steps");
+  std::optional<swarm::Preset> running;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    l.steps.push_back(step_of(steps[i], "steps[" + std::to_string(i) + "]", lookup, running));
+    if (l.steps.back().preset) running = l.steps.back().preset;
+  }
+  return l;
+}
+
+/// One JSON value and nothing after it, refusing a key given twice in one object (JSON leaves
+/// that open and nlohmann would keep the last one).
+json parse_strict(std::string_view text) {
+  struct Level {
+    bool is_array = false;
+    long index = 0;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  std::vector<Level> levels;
+  auto path = [&levels]() {
+    std::string out;
+    for (const Level& l : levels)
+      out += l.is_array ? "[" + std::to_string(l.index) + "]"
+                        : (out.empty() ? "" : ".") + swarm::printable(l.key);
+    return out;
+  };
+  auto value_done = [&levels]() {
+    if (!levels.empty() && levels.back().is_array) ++levels.back().index;
+  };
+  const json::parser_callback_t on_event = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+        levels.push_back({false, 0, {}, {}});
+        break;
+      case json::parse_event_t::array_start:
+        levels.push_back({true, 0, {}, {}});
+        break;
+      case json::parse_event_t::key: {
+        Level& l = levels.back();
+        l.key = parsed.get<std::string>();
+        if (!l.keys.insert(l.key).second)
+          throw Invalid{path() + ": given twice (each key at most once)"};
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        levels.pop_back();
+        value_done();
+        break;
+      case json::parse_event_t::value:
+        value_done();
+        break;
+    }
+    return true;
+  };
+  return json::parse(text.begin(), text.end(), on_event);
+}
+
+}  // namespace
+
+LessonParse parse_lesson(std::string_view json_text, const PresetLookup& lookup) {
+  LessonParse out;
+  if (json_text.size() > kMaxLessonBytes) {
+    out.error = "lesson: " + std::to_string(json_text.size()) + " bytes; a lesson may be at most " +
+                std::to_string(kMaxLessonBytes) + " bytes";
+    return out;
+  }
+  if (const std::size_t nul = json_text.find('\0'); nul != std::string_view::npos) {
+    out.error = "lesson: a NUL byte at offset " + std::to_string(nul) + " (a lesson is JSON text)";
+    return out;
+  }
+  try {
+    const json j = parse_strict(json_text);
+    out.lesson = lesson_of(j, lookup);
+  } catch (const Invalid& e) {
+    out.error = e.message;
+  } catch (const json::parse_error& e) {
+    out.error = swarm::printable(std::string("lesson: not valid JSON (") + e.what() + ")", 300);
+  } catch (const json::exception& e) {
+    out.error = swarm::printable(std::string("lesson: ") + e.what(), 300);
+  }
+  return out;
+}
+
+bool looks_like_lesson(std::string_view json_text) {
+  // Text that is not JSON, or too large for a lesson, is a lesson when its first key is
+  // "lesson", so that its message is a lesson's.
+  const std::size_t brace = json_text.find_first_not_of(" \t\r\n");
+  if (brace != std::string_view::npos && json_text[brace] == '{') {
+    const std::size_t key = json_text.find_first_not_of(" \t\r\n", brace + 1);
+    if (key != std::string_view::npos && json_text.substr(key, 8) == "\"lesson\"") return true;
+  }
+  if (json_text.size() > kMaxLessonBytes) return false;
+  const json j = json::parse(json_text.begin(), json_text.end(), nullptr, false);
+  return j.is_object() && j.contains("lesson");
+}
+
+std::string_view name_of(LessonPlot plot) {
+  switch (plot) {
+    case LessonPlot::wall: return "wall";
+    case LessonPlot::energy: return "energy";
+    case LessonPlot::expansion: return "expansion";
+    case LessonPlot::compare: return "compare";
+  }
+  return "";
+}
+
+std::string_view name_of(LessonOverlay overlay) {
+  switch (overlay) {
+    case LessonOverlay::none: return "none";
+    case LessonOverlay::springs: return "springs";
+    case LessonOverlay::springs_to_cm: return "springs-to-cm";
+  }
+  return "";
+}
+
+std::string_view name_of(Quantity quantity) {
+  switch (quantity) {
+    case Quantity::period: return "period";
+    case Quantity::omega: return "omega";
+    case Quantity::M: return "M";
+    case Quantity::E: return "E";
+    case Quantity::P: return "P";
+    case Quantity::T: return "T";
+  }
+  return "";
+}
+
+std::string_view name_of(LessonTask::Kind kind) {
+  switch (kind) {
+    case LessonTask::Kind::measure: return "measure";
+    case LessonTask::Kind::choice: return "choice";
+    case LessonTask::Kind::predict: return "predict";
+  }
+  return "";
+}
+
+Marking mark_measurement(const LessonTask& task, double answer, double expected) {
+  Marking m;
+  if (!std::isfinite(answer)) {
+    m.feedback = "Type a number, e.g. 4.44.";
+    return m;
+  }
+  if (!std::isfinite(expected)) {
+    m.feedback = "The running simulation has no " + std::string(name_of(task.quantity)) +
+                 " to compare with right now (has the scene changed?).";
+    return m;
+  }
+  const double off = std::abs(answer - expected) / std::max(std::abs(expected), 1e-300);
+  m.correct = off <= task.tolerance;
+  const std::string percent = format(100 * task.tolerance);
+  if (*m.correct)
+    m.feedback = "Right: the simulation has " + std::string(name_of(task.quantity)) + " = " +
+                 format(expected) + ", and you are within " + percent + "% of it.";
+  else
+    m.feedback = "Not yet: your value is " + format(100 * off) + "% too " +
+                 (answer > expected ? "large" : "small") + " (within " + percent +
+                 "% counts). Measure again.";
+  return m;
+}
+
+Marking mark_option(const LessonTask& task, std::size_t option) {
+  Marking m;
+  if (option >= task.options.size()) {
+    m.feedback = "Pick one of the " + std::to_string(task.options.size()) + " options.";
+    return m;
+  }
+  if (task.kind == LessonTask::Kind::predict) {
+    m.feedback = "Your prediction: \u201c" + task.options[option] + "\u201d." +
+                 (task.outcome.empty() ? "" : " Now run it and compare: " + task.outcome);
+    return m;
+  }
+  m.correct = task.answer && option == *task.answer;
+  if (option < task.feedback.size())
+    m.feedback = task.feedback[option];
+  else
+    m.feedback = *m.correct ? "Right." : "Not this one: look again and try another.";
+  return m;
+}
+
+}  // namespace swarmlab

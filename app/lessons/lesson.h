@@ -1,0 +1,102 @@
+#pragma once
+/// A lesson (JSON, "lesson": 1): a guided path of steps through the app, each of which may set
+/// the scene (a preset, a plot, a selected particle, an overlay) and ask a question. A lesson is
+/// data, not physics: this library reads and checks it, and marks an answer against a value the
+/// caller measured from the running simulation. docs/lessons.md documents every field.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "swarm/preset.h"
+
+namespace swarmlab {
+
+inline constexpr int kLessonVersion = 1;
+
+/// The plots panel's tabs a step can open.
+enum class LessonPlot { wall, energy, expansion, compare };
+/// The Fig. 1 springs drawn over the view: none, every pair, or each particle to the CM.
+enum class LessonOverlay { none, springs, springs_to_cm };
+/// What a measure task asks for, each read from the running simulation: the period 2 pi / omega
+/// (J > 0), omega = sqrt(|J| M), the total mass M, the energy E, the wall pressure P and
+/// temperature T (need a container).
+enum class Quantity { period, omega, M, E, P, T };
+
+struct LessonTask {
+  enum class Kind { measure, choice, predict };
+  Kind kind = Kind::choice;
+  std::string prompt;
+  // measure
+  Quantity quantity = Quantity::period;
+  std::optional<std::size_t> particle;  ///< whose quantity (all share the period); shown only
+  double tolerance = 0.02;              ///< relative
+  double window = 0;  ///< P and T: averaged over the last this much time (0: the whole run)
+  // choice and predict
+  std::vector<std::string> options;
+  std::optional<std::size_t> answer;  ///< choice: the right option
+  std::vector<std::string> feedback;  ///< choice: one per option
+  std::string outcome;                ///< predict: what the run shows, revealed after the choice
+};
+
+struct LessonStep {
+  std::string text;  ///< paragraphs split by a blank line; *emphasis*
+  /// The scene: a shipped preset's file name or an inline preset. Empty: keep what runs.
+  std::string preset_name;
+  std::optional<swarm::Preset> preset;
+  std::optional<LessonPlot> plot;
+  std::optional<std::size_t> select;
+  std::optional<LessonOverlay> overlay;
+  std::optional<LessonTask> task;
+};
+
+struct Lesson {
+  std::string id;  ///< lowercase letters, digits and '-': the key of the student's progress
+  std::string title;
+  std::string summary;
+  std::vector<LessonStep> steps;
+};
+
+/// Finds a shipped preset by file name ("two-body-circular.json"): the preset, or an error
+/// (an unknown name). The app passes its shipped list; tests pass their own.
+using PresetLookup = std::function<swarm::PresetParse(const std::string& name)>;
+
+/// Either a valid lesson or one message naming the field and the rule it breaks, e.g.
+/// "steps[2].task.tolerance: must be > 0".
+struct LessonParse {
+  std::optional<Lesson> lesson;
+  std::string error;
+};
+
+/// Refuses text that is not exactly one JSON object (a key given twice, anything after it),
+/// more than kMaxLessonBytes, and any field that breaks its rule. Inline presets follow
+/// swarm::parse_preset's rules, their messages prefixed "steps[i].preset.".
+LessonParse parse_lesson(std::string_view json_text, const PresetLookup& lookup);
+inline constexpr std::size_t kMaxLessonBytes = 1'000'000;
+
+/// Whether JSON text is a lesson rather than a preset: an object with a "lesson" key, or text
+/// (broken or oversized) whose first key is "lesson".
+bool looks_like_lesson(std::string_view json_text);
+
+/// The name used in a lesson file for a plot, an overlay and a quantity ("springs-to-cm").
+std::string_view name_of(LessonPlot plot);
+std::string_view name_of(LessonOverlay overlay);
+std::string_view name_of(Quantity quantity);
+std::string_view name_of(LessonTask::Kind kind);
+
+/// A student's answer, marked.
+struct Marking {
+  std::optional<bool> correct;  ///< none for a prediction: it is recorded, not marked
+  std::string feedback;
+};
+
+/// A measured number against the running simulation's value `expected`: right when within the
+/// task's relative tolerance of it.
+Marking mark_measurement(const LessonTask& task, double answer, double expected);
+/// A picked option (choice: marked, with that option's feedback; predict: recorded, with the
+/// outcome to compare it with).
+Marking mark_option(const LessonTask& task, std::size_t option);
+
+}  // namespace swarmlab

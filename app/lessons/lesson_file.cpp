@@ -1,0 +1,73 @@
+#include "lesson_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "files/preset_file.h"
+#include "swarm/printable_text.h"
+
+namespace swarmlab {
+
+PresetLookup shipped_preset_lookup(std::string directory) {
+  return [directory = std::move(directory)](const std::string& name) {
+    swarm::PresetParse out;
+    const bool plain = !name.empty() && name.find_first_of("/\\") == std::string::npos &&
+                       name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0 &&
+                       name.find("..") == std::string::npos;
+    if (!plain) {
+      out.error = "\"" + swarm::printable(name) +
+                  "\" is not a shipped preset's file name (such as \"two-body-circular.json\")";
+      return out;
+    }
+    std::ifstream probe(directory + "/" + name);
+    if (!probe) {
+      out.error = "no shipped preset \"" + swarm::printable(name) + "\"";
+      return out;
+    }
+    out = read_preset_file(directory + "/" + name);
+    return out;
+  };
+}
+
+std::string read_text_file(const std::string& path, std::string& error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = path + ": cannot open the file";
+    return {};
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) error = path + ": cannot read the file";
+  return text.str();
+}
+
+LessonParse read_lesson_file(const std::string& path, const PresetLookup& lookup) {
+  LessonParse out;
+  const std::string text = read_text_file(path, out.error);
+  if (!out.error.empty()) return out;
+  out = parse_lesson(text, lookup);
+  if (!out.lesson) out.error = path + ": " + out.error;
+  return out;
+}
+
+std::vector<Lesson> load_shipped_lessons(const std::string& directory, const PresetLookup& lookup,
+                                         std::string& problems) {
+  std::vector<std::string> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(directory, error))
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  std::vector<Lesson> out;
+  for (const std::string& file : files) {
+    LessonParse parsed = read_lesson_file(file, lookup);
+    if (parsed.lesson)
+      out.push_back(std::move(*parsed.lesson));
+    else
+      problems += "error: " + parsed.error + "\n";
+  }
+  return out;
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,138 @@
+// The C side of the lesson calls of window.swarmlab (lessons, openLesson, lessonState,
+// lessonAnswer, lessonNext, lessonBack in web/swarmlab_api.js).
+
+#include <emscripten.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "web_app.h"
+
+namespace {
+
+using json = nlohmann::json;
+std::string lessons_text, open_error, state_text, answer_text;  // valid until the next call
+
+json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json lesson_state(swarmlab::AppState& app) {
+  swarmlab::LessonSession& lessons = app.lessons;
+  const swarmlab::Lesson* lesson = lessons.open_lesson();
+  if (!lesson) return nullptr;
+  const swarmlab::LessonStep& step = *lessons.current_step();
+  json task = nullptr;
+  if (step.task) {
+    const swarmlab::LessonTask& t = *step.task;
+    task = {{"kind", std::string(swarmlab::name_of(t.kind))}, {"prompt", t.prompt}};
+    if (t.kind == swarmlab::LessonTask::Kind::measure) {
+      task["quantity"] = std::string(swarmlab::name_of(t.quantity));
+      task["tolerance"] = t.tolerance;
+      task["particle"] = t.particle ? json(*t.particle) : json(nullptr);
+      if (t.window > 0) task["window"] = t.window;
+      // What the app's instruments read for the quantity now (the read-outs, the wall plot).
+      task["reading"] = number_or_null(lessons.reading(app));
+    } else {
+      task["options"] = t.options;
+    }
+    if (t.kind == swarmlab::LessonTask::Kind::predict) {
+      const auto p = lessons.prediction();
+      task["prediction"] = p ? json(*p) : json(nullptr);
+      task["outcome"] = t.outcome;
+    }
+    if (const auto& m = lessons.marking())
+      task["answered"] = {{"correct", m->correct ? json(*m->correct) : json(nullptr)},
+                          {"feedback", m->feedback}};
+    else
+      task["answered"] = nullptr;
+  }
+  return {{"id", lesson->id},       {"title", lesson->title}, {"step", lessons.step()},
+          {"steps", lesson->steps.size()}, {"text", step.text},   {"task", task}};
+}
+
+}  // namespace
+
+extern "C" {
+
+/// The shipped lessons as JSON: [{id, title, summary, steps}].
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_lessons() {
+  json list = json::array();
+  if (swarmlab::App* app = swarmlab::web_app())
+    for (const swarmlab::Lesson& l : app->state().lessons.shipped())
+      list.push_back({{"id", l.id}, {"title", l.title}, {"summary", l.summary},
+                      {"steps", l.steps.size()}});
+  lessons_text = list.dump();
+  return lessons_text.c_str();
+}
+
+/// Opens a lesson: `text` is a shipped lesson's id, or lesson JSON when `is_json`. "" on
+/// success, else "source: message" (also shown in the app); the running lesson stays.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson(const char* text, int is_json,
+                                                      const char* source) {
+  swarmlab::App* app = swarmlab::web_app();
+  if (!app) return "the app has not started";
+  swarmlab::AppState& s = app->state();
+  std::string error = is_json ? s.lessons.open_json(s, text) : s.lessons.open_id(s, text);
+  if (!error.empty()) {
+    error = std::string(source) + ": " + error;
+    s.lessons.error = error;
+    s.status = error;
+    s.status_is_error = true;
+  } else {
+    s.lessons.error.clear();
+    s.lessons.dismiss_welcome();
+  }
+  open_error = error;
+  return open_error.c_str();
+}
+
+/// The open lesson's state as JSON, "null" when none is open.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_state() {
+  swarmlab::App* app = swarmlab::web_app();
+  state_text = app ? lesson_state(app->state()).dump() : "null";
+  return state_text.c_str();
+}
+
+/// Answers the current task: a number for measure, an option's index for choice and predict.
+/// {correct, feedback}, or {error} when no lesson or no task is open.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_answer(double value) {
+  json out;
+  swarmlab::App* app = swarmlab::web_app();
+  const swarmlab::LessonStep* step = app ? app->state().lessons.current_step() : nullptr;
+  if (!step) {
+    out = {{"error", "no lesson is open"}};
+  } else if (!step->task) {
+    out = {{"error", "this step has no task"}};
+  } else {
+    swarmlab::AppState& s = app->state();
+    const swarmlab::Marking m =
+        step->task->kind == swarmlab::LessonTask::Kind::measure
+            ? s.lessons.answer_number(s, value)
+            : s.lessons.answer_option(
+                  s, value >= 0 && std::isfinite(value) ? std::size_t(value) : std::size_t(-1));
+    out = {{"correct", m.correct ? json(*m.correct) : json(nullptr)}, {"feedback", m.feedback}};
+  }
+  answer_text = out.dump();
+  return answer_text.c_str();
+}
+
+/// Next (+1) or back (-1) a step; the lesson state afterwards.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_move(int direction) {
+  if (swarmlab::App* app = swarmlab::web_app()) {
+    swarmlab::AppState& s = app->state();
+    if (direction > 0)
+      s.lessons.next(s);
+    else
+      s.lessons.back(s);
+  }
+  return swarmlab_lesson_state();
+}
+
+/// Whether the welcome window is showing (for tests of the first visit).
+EMSCRIPTEN_KEEPALIVE int swarmlab_welcome_shown() {
+  swarmlab::App* app = swarmlab::web_app();
+  return app && app->state().lessons.show_welcome ? 1 : 0;
+}
+
+}  // extern "C"
