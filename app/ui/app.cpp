@@ -285,6 +285,7 @@ void App::layout_windows() {
     place(l.plots);
     if (ImGui::Begin("Plots", &s.layout.plots, panel)) {
       touch_scroll(touch_frame_);
+      draw_instruments(s);
       draw_plots_panel(s);
     }
     record_panel(s, "Plots");
@@ -331,9 +332,6 @@ void App::layout_windows() {
     record_panel(s, "Read-outs");
     ImGui::End();
   }
-  // The instruments over the view's top left corner in the wide layout (collapsible); a tab of
-  // the drawer in a compact one.
-  if (l.kind == LayoutKind::wide) draw_instruments_window(s, l.view.y, l.view.y, l.view.x);
   if (roomy) ImGui::PopStyleVar(3);
   set_text_field_state(nullptr);
   s.layout.typed_text.reset();  // typed for a field that has closed since

@@ -116,28 +116,4 @@ void draw_instruments(AppState& state) {
   if (state.instruments.track) draw_particle_card(state);
 }
 
-void draw_instruments_window(AppState& state, float top, float bottom, float right) {
-  const ViewRect& view = state.layout.view;
-  const float font = ImGui::GetFontSize();
-  const ImGuiWindowFlags overlay = ImGuiWindowFlags_NoDecoration |
-                                   ImGuiWindowFlags_AlwaysAutoResize |
-                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove |
-                                   ImGuiWindowFlags_NoFocusOnAppearing;
-  // The size it had last frame (it resizes itself to its contents) decides where it fits
-  // without covering the read-outs or the colour legend, which takes the view's bottom 3.8
-  // lines (scene_overlay.cpp).
-  static ImVec2 size(0, 0);
-  const float below = bottom + 0.4f * font;
-  const float legend = view.y + view.height - 4.2f * font;
-  const float view_right = view.x + view.width - 0.5f * font;
-  if (below + size.y <= legend || view_right - size.x < right + 0.5f * font)
-    ImGui::SetNextWindowPos(ImVec2(view.x + 0.5f * font, below));
-  else
-    ImGui::SetNextWindowPos(ImVec2(view_right, top), ImGuiCond_Always, ImVec2(1, 0));
-  ImGui::SetNextWindowBgAlpha(0.7f);
-  if (ImGui::Begin("##instruments", nullptr, overlay)) draw_instruments(state);
-  size = ImGui::GetWindowSize();
-  ImGui::End();
-}
-
 }  // namespace swarmlab

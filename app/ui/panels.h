@@ -21,11 +21,9 @@ void draw_plots_panel(AppState& state);
 void draw_readouts(AppState& state);
 /// Play, pause, step, reset, speed and the clock, over the top of the 3D view.
 void draw_transport_bar(AppState& state);
-/// The stopwatch, the period meter and the selected particle's card over the 3D view, below
-/// the read-outs (drawn from y = top to bottom, up to x = right), or beside them at the view's
-/// right edge when they do not fit there (instruments_panel.cpp, particle_card.cpp).
-void draw_instruments_window(AppState& state, float top, float bottom, float right);
-/// The same instruments as the body of a drawer tab (compact layouts).
+/// The stopwatch, the period meter and the selected particle's card (instruments_panel.cpp,
+/// particle_card.cpp): at the top of the Plots panel in the wide layout, a drawer tab in the
+/// compact ones, so that they never cover the swarm.
 void draw_instruments(AppState& state);
 void draw_particle_card(AppState& state);
 /// The selected particle's x(t) about the centre of mass, a plot tab (particle_plot.cpp).

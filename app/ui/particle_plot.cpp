@@ -32,7 +32,7 @@ void draw_particle_tab(AppState& state, float plot_height) {
   draw_plot("particle_x", p, plot_height);
   ImGui::TextWrapped(
       "Each time x(t) crosses its starting value in the same direction, one period has passed. "
-      "The period meter (Instruments, over the view) times these returns.");
+      "The period meter (Instruments, above the plots) times these returns.");
 }
 
 }  // namespace swarmlab
