@@ -53,16 +53,16 @@ const Key kKeys[] = {
        else s.selected = v.get<std::size_t>();
        s.update_followed();
      }},
-    // The projector and the classroom (app/ui/presentation.h). Presentation comes before the
-    // theme, so {presentation: true, theme: "dark"} is the dark theme in presentation mode.
-    {"presentation", "must be true or false",
-     [](const AppState&, const json& v) { return v.is_boolean(); },
-     [](AppState& s, const json& v) { swarmlab::set_presentation(s, v.get<bool>()); }},
+    // The projector and the classroom (app/ui/presentation.h). Presentation comes after the
+    // theme, so {presentation: true, theme: "dark"} is presentation mode, light.
     {"theme", "must be \"dark\" or \"light\"",
      [](const AppState&, const json& v) { return v == "dark" || v == "light"; },
      [](AppState& s, const json& v) {
        swarmlab::set_theme(s, v == "light" ? swarmlab::Theme::light : swarmlab::Theme::dark);
      }},
+    {"presentation", "must be true or false",
+     [](const AppState&, const json& v) { return v.is_boolean(); },
+     [](AppState& s, const json& v) { swarmlab::set_presentation(s, v.get<bool>()); }},
     {"sound", "must be true or false", [](const AppState&, const json& v) { return v.is_boolean(); },
      [](AppState& s, const json& v) { swarmlab::set_sound(s, v.get<bool>()); }},
 };

@@ -69,7 +69,7 @@ async function main(url) {
   check('the CSV header equals `swarmlab run --csv` on the same preset',
         header !== null && lines[0] === header, `page "${lines[0]}", CLI "${header}"`);
   check('every CSV row has the header\'s columns, numbers only', lines.length >= 2 &&
-        lines.slice(1).every((l) => l.split(',').length === 8 && l.split(',').every((f) => f !== '' && isFinite(Number(f)))),
+        lines.slice(1).every((l) => l.split(',').length === lines[0].split(',').length && l.split(',').every((f) => f !== '' && isFinite(Number(f)))),
         `${lines.length - 1} rows`);
 
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
