@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "lesson_panel.h"
 #include "panels.h"
@@ -276,6 +277,9 @@ void App::layout_windows() {
     place(l.controls);
     if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
       touch_scroll(touch_frame_);
+      if (s.lessons.open_lesson() &&
+          ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen))
+        draw_lesson(s, std::min(16 * font, 0.45f * l.controls.height));
       draw_controls(s);
     }
     record_panel(s, "Controls");
@@ -306,6 +310,21 @@ void App::layout_windows() {
           ImGui::EndChild();
           ImGui::EndTabItem();
         };
+        // A lesson that opens or moves to another step brings its tab to the front.
+        const std::pair<const Lesson*, std::size_t> step{s.lessons.open_lesson(), s.lessons.step()};
+        const ImGuiTabItemFlags lesson_flags =
+            step.first && step != lesson_tab_step_ ? ImGuiTabItemFlags_SetSelected : 0;
+        lesson_tab_step_ = step;
+        if (step.first && ImGui::BeginTabItem("Lesson", nullptr, lesson_flags)) {
+          if (ImGui::BeginChild("Lesson")) {
+            touch_scroll(touch_frame_);
+            draw_lesson(s, std::max(8 * font, ImGui::GetContentRegionAvail().y -
+                                                  3 * ImGui::GetFrameHeightWithSpacing()));
+          }
+          record_panel(s, "Lesson");
+          ImGui::EndChild();
+          ImGui::EndTabItem();
+        }
         tab("Controls", s.layout.controls, draw_controls);
         tab("Plots", s.layout.plots, draw_plots_panel);
         tab("Read-outs", true, draw_readouts);
@@ -336,7 +355,6 @@ void App::layout_windows() {
   set_text_field_state(nullptr);
   s.layout.typed_text.reset();  // typed for a field that has closed since
   draw_help_window(s);
-  draw_lesson_window(s);
   draw_welcome_window(s);
 }
 

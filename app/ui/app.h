@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app_state.h"
@@ -50,6 +51,8 @@ class App {
   bool quit_ = false;
   TouchGestures touch_;
   TouchFrame touch_frame_;
+  /// The lesson step the drawer last showed: a new one brings the Lesson tab to the front.
+  std::pair<const Lesson*, std::size_t> lesson_tab_step_{nullptr, 0};
   float framed_aspect_ = 1;  ///< the view's width / height when the camera distance was set
   bool dragging_ = false;
   float drag_distance_ = 0;

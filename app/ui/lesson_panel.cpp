@@ -1,5 +1,5 @@
 // [SECTION] prose: wrapped paragraphs with *emphasis*
-// [SECTION] the lesson window: step text, task, feedback, back and next
+// [SECTION] the lesson panel: step text, task, feedback, back and next
 // [SECTION] the welcome window and the Lessons menu
 
 #include "lesson_panel.h"
@@ -94,7 +94,7 @@ void draw_prose(const std::string& text) {
   }
 }
 
-// [SECTION] the lesson window --------------------------------------------------------------------
+// [SECTION] the lesson panel ---------------------------------------------------------------------
 
 namespace {
 
@@ -154,50 +154,40 @@ void draw_task(AppState& state, const LessonTask& task) {
 
 }  // namespace
 
-void draw_lesson_window(AppState& state) {
+void draw_lesson(AppState& state, float step_height) {
   LessonSession& lessons = state.lessons;
   const Lesson* lesson = lessons.open_lesson();
   if (!lesson) return;
-  const ViewRect& view = state.layout.view;
-  const float font = ImGui::GetFontSize();
-  const float width = std::min(26 * font, std::max(view.width - font, 12 * font));
-  // Below the 3D view's left edge, out of the swarm's middle; the student may move it.
-  ImGui::SetNextWindowPos(ImVec2(view.x + 0.5f * font, view.y + view.height - 0.5f * font),
-                          ImGuiCond_Appearing, ImVec2(0, 1));
-  ImGui::SetNextWindowSize(ImVec2(width, std::min(19 * font, 0.6f * view.height)),
-                           ImGuiCond_Appearing);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(12 * font, 6 * font),
-                                      ImVec2(view.width, 0.8f * view.height));
-  bool open = true;
-  if (ImGui::Begin("Lesson", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
-    keep_inside_viewport();
-    ImGui::TextColored(kEmphasis, "%s", lesson->title.c_str());
-    const std::size_t step = lessons.step(), steps = lesson->steps.size();
-    char progress[48];
-    std::snprintf(progress, sizeof progress, "step %zu of %zu", step + 1, steps);
-    ImGui::ProgressBar(float(step + 1) / float(steps), ImVec2(-1, 0), progress);
-    if (!lessons.error.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, kWrong);
-      draw_prose(lessons.error);
-      ImGui::PopStyleColor();
-    }
-    ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing()), false);
-    const LessonStep& s = lesson->steps[step];
-    draw_prose(s.text);
-    if (s.task) draw_task(state, *s.task);
-    ImGui::EndChild();
-    ImGui::BeginDisabled(step == 0);
-    if (ImGui::Button("\u2190 Back")) lessons.back(state);
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (step + 1 < steps) {
-      if (ImGui::Button("Next \u2192")) lessons.next(state);
-    } else if (ImGui::Button("Finish")) {
-      open = false;
-    }
+  ImGui::PushID("lesson");
+  ImGui::TextColored(kEmphasis, "%s", lesson->title.c_str());
+  const std::size_t step = lessons.step(), steps = lesson->steps.size();
+  char progress[48];
+  std::snprintf(progress, sizeof progress, "step %zu of %zu", step + 1, steps);
+  ImGui::ProgressBar(float(step + 1) / float(steps), ImVec2(-1, 0), progress);
+  if (!lessons.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kWrong);
+    draw_prose(lessons.error);
+    ImGui::PopStyleColor();
   }
-  ImGui::End();
-  if (!open) lessons.close();
+  ImGui::BeginChild("step", ImVec2(0, step_height), true);
+  const LessonStep& s = lesson->steps[step];
+  draw_prose(s.text);
+  if (s.task) draw_task(state, *s.task);
+  ImGui::EndChild();
+  ImGui::BeginDisabled(step == 0);
+  if (ImGui::Button("\u2190 Back")) lessons.back(state);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  bool close = false;
+  if (step + 1 < steps) {
+    if (ImGui::Button("Next \u2192")) lessons.next(state);
+  } else if (ImGui::Button("Finish")) {
+    close = true;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Close lesson")) close = true;
+  ImGui::PopID();
+  if (close) lessons.close();
 }
 
 // [SECTION] the welcome window and the Lessons menu ---------------------------------------------

@@ -26,6 +26,19 @@ std::string describe(swarm::Method m) {
   return text;
 }
 
+/// Continues the row when an item `width` wide still fits beside the last one, else starts the
+/// next row: on a phone the transport bar wraps instead of cutting off its end.
+void same_line_if_fits(float width) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right)
+    ImGui::SameLine();
+}
+
+/// The width of a button labelled `text`.
+float button_width(const char* text) {
+  return ImGui::CalcTextSize(text).x + 2 * ImGui::GetStyle().FramePadding.x;
+}
+
 }  // namespace
 
 void draw_simulation_panel(AppState& state) {
@@ -112,24 +125,23 @@ void draw_transport_bar(AppState& state) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(at_end ? "Space: the run is over; continue it for another run length"
                              : "Space");
-  ImGui::SameLine();
+  same_line_if_fits(button_width("Step"));
   if (ImGui::Button("Step")) state.step_once = true, state.playing = false;
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("S: one step of dt");
-  ImGui::SameLine();
+  same_line_if_fits(button_width("Reset"));
   if (ImGui::Button("Reset")) state.restart();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("R: back to t = 0");
-  ImGui::SameLine();
+  same_line_if_fits(9 * font);
   ImGui::SetNextItemWidth(9 * font);
   const double lo = 1e-3, hi = 1e4;
   ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, "speed %.3g /s",
                       ImGuiSliderFlags_Logarithmic);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
-  ImGui::SameLine();
+  same_line_if_fits(ImGui::GetFrameHeight() + button_width("Sound"));
   draw_sound_toggle(state);
 
   draw_time_buttons(state);
-  ImGui::SameLine();
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
   ImGui::TextUnformatted(labels::clock_text(state.preset, k, t).c_str());
@@ -139,7 +151,7 @@ void draw_transport_bar(AppState& state) {
         "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "
         "wall changes the motion and neither applies.");
   if (state.run->finished()) {
-    ImGui::SameLine();
+    same_line_if_fits(ImGui::CalcTextSize("end of run").x);
     ImGui::TextColored(colour_vec4(current_palette().text_warning), "end of run");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Continue (Space) runs on for as long again.");
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
