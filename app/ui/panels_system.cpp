@@ -73,7 +73,7 @@ void draw_table(AppState& state, ParticleList& list) {
     for (std::size_t i = 0; i < list.size(); ++i) {
       ImGui::PushID(int(i));
       ImGui::TableNextRow();
-      // The selected particle's row stands out, as its card does over the view.
+      // The selected particle's row stands out, as its card does among the instruments.
       if (state.selected == i)
         ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(200, 150, 40, 150));
       ImGui::TableNextColumn();
