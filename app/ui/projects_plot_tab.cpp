@@ -72,7 +72,7 @@ void draw_projects_tab(AppState& state, float plot_height) {
 
   if (plots.motion) {
     PlotSpec m;
-    m.title = "Centre of mass height and swarm size";
+    m.title = "CM height and size";
     m.x = time;
     m.y = {"length", false, std::nullopt, std::nullopt};
     m.y_from_zero = true;
@@ -83,44 +83,46 @@ void draw_projects_tab(AppState& state, float plot_height) {
   }
   if (plots.books) {
     PlotSpec b;
-    b.title = "Energy books: E - E\u2080 = work + heat - drag loss";
+    // A short title: the axis label and its power-of-ten factor share the line. The sum is
+    // drawn wide underneath, so E - E0 and a lone book on top of it stay visible.
+    b.title = "Energy books";
     b.x = time;
     b.y = {"energy", false, std::nullopt, std::nullopt};
     b.y_from_zero = true;
-    b.series = {{"work by the walls", &s.t, &s.wall_work, line(c.pressure), false, 1.5f},
+    b.series = {{"sum: work + heat - drag loss", &s.t, &s.net, line(c.energy_drift), false, 6.0f},
+                {"E - E\u2080", &s.t, &s.energy_change, line(c.total_energy), false, 2.0f},
+                {"work by the walls", &s.t, &s.wall_work, line(c.pressure), false, 1.5f},
                 {"heat from the wall", &s.t, &s.wall_heat, line(c.temperature), false, 1.5f},
-                {"drag loss", &s.t, &s.drag_loss, line(c.potential), false, 1.5f},
-                {"sum of the books", &s.t, &s.net, line(c.fit), false, 4.0f},
-                {"E - E\u2080", &s.t, &s.energy_change, line(c.total_energy), false, 1.5f}};
+                {"drag loss", &s.t, &s.drag_loss, line(c.kinetic), false, 1.5f}};
     draw_plot("project_books", b, plot_height);
   }
   if (plots.pv_loop) {
     const PvLoop& l = cache.loop;
     PlotSpec p;
-    p.title = "P-V loop of the moving wall";
+    p.title = "P-V loop";
     p.x = {"V = 4/3 \u03c0 R\u00b3 (length\u00b3)", false, std::nullopt, std::nullopt};
-    p.y = {"P, running mean (force/area)", false, std::nullopt, std::nullopt};
+    p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
     p.y_from_zero = true;
     p.empty_message = "waiting for the wall to move";
-    p.series = {{"the wall moving in", &l.V_in, &l.P_in, line(c.pressure), false, 2.0f}};
+    p.series = {{"wall moving in (P: running mean)", &l.V_in, &l.P_in, line(c.pressure), false,
+                 2.0f}};
     if (!l.V_out.empty())
       p.series.push_back(
-          {"the wall moving out", &l.V_out, &l.P_out, line(c.temperature), false, 2.0f});
+          {"wall moving out", &l.V_out, &l.P_out, line(c.temperature), false, 2.0f});
     draw_plot("project_pv", p, plot_height);
   }
   if (plots.speeds) {
     const HistogramSeries& h = cache.histogram;
-    char title[96];
-    std::snprintf(title, sizeof title, "Speeds now against the Maxwellian at T = %.4g",
-                  cache.speeds.T);
+    char maxwell[64];
+    std::snprintf(maxwell, sizeof maxwell, "Maxwellian at their T = %.4g", cache.speeds.T);
     PlotSpec v;
-    v.title = title;
+    v.title = "Speeds now";
     v.x = {"speed v \u221a(m/T)", false, 0.0, cache.speeds.histogram.x_max};
     v.y = {"probability density", false, std::nullopt, std::nullopt};
     v.y_from_zero = true;
     v.empty_message = "no motion yet: T = 0";
     v.series = {{"the particles now", &h.x, &h.measured, line(c.kinetic), true, 2.0f},
-                {"Maxwell distribution at their T", &h.x, &h.maxwell, line(c.fit), false, 2.0f}};
+                {maxwell, &h.x, &h.maxwell, line(c.fit), false, 2.0f}};
     draw_plot("project_speeds", v, plot_height);
   }
 }
