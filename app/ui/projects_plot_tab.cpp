@@ -61,8 +61,8 @@ void draw_projects_tab(AppState& state, float plot_height) {
   if (!plots.any()) {
     ImGui::TextWrapped(
         "Plots for the Appendix B projects: gravity, a floor, drag, moving or hot walls, hard "
-        "spheres. This preset has none of them; switch one on under Forces or Walls, or open a "
-        "project preset (Scenario).");
+        "spheres. This preset has none of them: switch one on under 'Gravity, floor, drag' or "
+        "'Walls and spheres', or open a project preset under Scenario.");
     return;
   }
   cache.update(state, plots);
