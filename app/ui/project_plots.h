@@ -28,15 +28,6 @@ struct ProjectSeries {
 };
 ProjectSeries project_series(const std::vector<swarm::Sample>& samples);
 
-/// P against V = 4/3 pi R^3, split where the wall is innermost: the way in (squeezing) and
-/// the way out. P is the running wall average over `half_window` either side of each sample
-/// (swarm::windowed_wall_averages), as in the CLI's pv-loop figure; the way out starts at the
-/// last point of the way in, so the loop is unbroken.
-struct PvLoop {
-  std::vector<double> V_in, P_in, V_out, P_out;
-};
-PvLoop pv_loop(const std::vector<swarm::Sample>& samples, double half_window);
-
 /// A speed histogram as plot series: bin centres with the measured density and the Maxwell
 /// density at each.
 struct HistogramSeries {

@@ -1,7 +1,7 @@
 // The plots of the Appendix B projects that fit the running preset: the centre of mass's
 // height and the swarm's size, the energy books, the P-V loop of a moving wall, and the
 // speeds against the Maxwellian. The numbers come from the run's samples and the core's speed
-// histogram (project_plots.h); this file only draws them.
+// histogram (project_plots.h, report/pv_loop.h); this file only draws them.
 
 #include <imgui.h>
 
@@ -12,6 +12,7 @@
 #include "panels.h"
 #include "plot_widget.h"
 #include "project_plots.h"
+#include "report/pv_loop.h"
 #include "theme_style.h"
 
 namespace swarmlab {
@@ -22,7 +23,7 @@ struct ProjectCache {
   long run = 0;  // LiveRun::id()
   std::size_t count = 0;
   ProjectSeries series;
-  PvLoop loop;
+  report::PvLoop loop;
   swarm::SpeedCheck speeds;
   HistogramSeries histogram;
 
@@ -34,7 +35,7 @@ struct ProjectCache {
     series = project_series(samples);
     // Each sample's P is over a few hits: the loop is drawn with the running wall average
     // over 3 % of the run, as in the CLI's pv-loop figure.
-    if (plots.pv_loop) loop = pv_loop(samples, 0.015 * state.preset.duration);
+    if (plots.pv_loop) loop = report::pv_loop(samples, 0.015 * state.preset.duration);
     if (plots.speeds) {
       // About sqrt(n) bins: enough particles in each to see the shape.
       const std::size_t n = state.run->system().particles.size();
@@ -97,7 +98,7 @@ void draw_projects_tab(AppState& state, float plot_height) {
     draw_plot("project_books", b, plot_height);
   }
   if (plots.pv_loop) {
-    const PvLoop& l = cache.loop;
+    const report::PvLoop& l = cache.loop;
     PlotSpec p;
     p.title = "P-V loop";
     p.x = {"V = 4/3 \u03c0 R\u00b3 (length\u00b3)", false, std::nullopt, std::nullopt};
