@@ -27,6 +27,11 @@ int main(int argc, char** argv) {
                  "Select particle N (numbered from 1, as in the particle table): its card and "
                  "x(t) plot")
       ->check(CLI::PositiveNumber);
+  int plot_tab = 0;
+  app.add_option("--plot-tab", plot_tab,
+                 "Open plot tab N (numbered from 1, left to right: 1 Wall P, T; 2 Energy; "
+                 "3 Expansion; 4 Compare; 5 Particle; 6 Projects)")
+      ->check(CLI::Range(1, 6));
   bool presentation = false;
   app.add_flag("--presentation", presentation,
                "Start in presentation mode: light theme, large text, the view and one plot");
@@ -70,7 +75,8 @@ int main(int argc, char** argv) {
   if (*bench_cmd) return swarmlab::bench_command(bench);
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
-  return swarmlab::run_desktop({window_preset, frames, screenshot, select, presentation});
+  return swarmlab::run_desktop(
+      {window_preset, frames, screenshot, select, presentation, plot_tab});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

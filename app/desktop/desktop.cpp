@@ -101,6 +101,7 @@ int run_desktop(const DesktopOptions& options) {
     }
     f.app->state().plots.tab = 4;
   }
+  if (options.plot_tab > 0) f.app->state().plots.tab = options.plot_tab - 1;
   if (options.presentation) set_presentation(f.app->state(), true);
 
   // The first frames build fonts and buffers; the timing summary leaves them out.

@@ -11,6 +11,7 @@ struct DesktopOptions {
   std::string screenshot_path;  ///< after the last frame, save the window as PNG; empty: none
   int select = 0;  ///< select this particle (numbered from 1, as in the table) at the start; 0: none
   bool presentation = false;    ///< start in presentation mode (light theme, large, one plot)
+  int plot_tab = 0;  ///< open this plot tab (numbered from 1, left to right) at the start; 0: the preset's
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

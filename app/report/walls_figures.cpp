@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pv_loop.h"
 #include "swarm/run.h"
 #include "swarm/thermometry.h"
 #include "swarm/wall.h"
@@ -11,30 +12,17 @@ namespace swarmlab::report {
 
 std::optional<NamedFigure> pv_loop_figure(const RunRecord& r) {
   if (r.preset.wall_moves.empty() || r.samples.size() < 3) return std::nullopt;
-  // Each sample's P is over a few steps and a few hits: the loop is drawn with the running
-  // wall average over 3 % of the run (swarm::windowed_wall_averages), at the sample's volume.
-  const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(r.samples);
+  // The running wall average over 3 % of the run; the way in and the way out in their own
+  // colours.
   const double half_window = 0.015 * (r.samples.back().t - r.samples.front().t);
-  const std::vector<swarm::WallReading> running =
-      swarm::windowed_wall_averages(intervals, half_window, half_window);
-  // Split where the wall is innermost: the way in and the way out in their own colours.
-  std::size_t innermost = 0;
-  for (std::size_t i = 0; i < running.size(); ++i)
-    if (r.samples[i + 1].R < r.samples[innermost + 1].R) innermost = i;
+  const PvLoop loop = pv_loop(r.samples, half_window);
   Series in, out;
   in.name = "squeezing: the wall moving in";
   in.colour = 0;
+  in.x = loop.V_in, in.y = loop.P_in;
   out.name = "letting out: the wall moving out";
   out.colour = 1;
-  for (std::size_t i = 0; i < running.size(); ++i) {
-    Series& branch = i <= innermost ? in : out;
-    branch.x.push_back(swarm::sphere_volume(r.samples[i + 1].R));
-    branch.y.push_back(running[i].P);
-  }
-  if (innermost + 1 < running.size()) {  // join the branches
-    out.x.insert(out.x.begin(), in.x.back());
-    out.y.insert(out.y.begin(), in.y.back());
-  }
+  out.x = loop.V_out, out.y = loop.P_out;
   Panel p{{"volume V", "length³"}, {"pressure P", "momentum / (length² time)"}};
   p.y.include_zero = true;
   p.series.push_back(in);

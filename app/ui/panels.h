@@ -28,6 +28,10 @@ void draw_instruments(AppState& state);
 void draw_particle_card(AppState& state);
 /// The selected particle's x(t) about the centre of mass, a plot tab (particle_plot.cpp).
 void draw_particle_tab(AppState& state, float plot_height);
+/// The plots of the Appendix B projects that fit the preset, a plot tab (projects_plot_tab.cpp),
+/// and how many of them it draws.
+void draw_projects_tab(AppState& state, float plot_height);
+int project_plot_count(const swarm::Preset& preset);
 
 // Helpers shared by the panels.
 

@@ -237,16 +237,20 @@ void draw_compare_tab(AppState& state, float plot_height) {
 }  // namespace
 
 void draw_plots_panel(AppState& state) {
-  const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare", "Particle"};
+  // The indices are fixed: --select, --plot-tab and the lessons open tabs by number.
+  const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare", "Particle", "Projects"};
   // Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
   if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
-  for (int i = 0; i < 5; ++i) {
+  for (int i = 0; i < 6; ++i) {
     const ImGuiTabItemFlags flags = state.plots.tab == i ? ImGuiTabItemFlags_SetSelected : 0;
     if (!ImGui::BeginTabItem(tabs[i], nullptr, flags)) continue;
     const float options = i == 0 ? 2.6f : i == 2 ? 1.4f : i == 1 ? 1.0f : i == 4 ? 3.0f : 0.0f;
     const float available =
         ImGui::GetContentRegionAvail().y - options * ImGui::GetFrameHeightWithSpacing();
-    const int plots = i == 2 ? 3 : i == 4 ? 1 : 2;
+    const int plots = i == 2   ? 3
+                      : i == 4 ? 1
+                      : i == 5 ? std::max(1, project_plot_count(state.preset))
+                               : 2;
     const float height = std::max(8 * ImGui::GetFontSize(),
                                   available / float(plots) - ImGui::GetStyle().ItemSpacing.y);
     switch (i) {
@@ -264,6 +268,9 @@ void draw_plots_panel(AppState& state) {
         break;
       case 4:
         draw_particle_tab(state, height);
+        break;
+      case 5:
+        draw_projects_tab(state, height);
         break;
     }
     ImGui::EndTabItem();
