@@ -14,6 +14,24 @@
 namespace swarmlab {
 namespace {
 
+/// A vector's three components side by side, each typed like any other number (so a touch
+/// screen brings up its on-screen keyboard for them too).
+bool input_vec3(const char* id, swarm::Vec3& v) {
+  ImGui::PushID(id);
+  const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
+  const float width = (ImGui::GetContentRegionAvail().x - 2 * spacing) / 3;
+  bool changed = false;
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) ImGui::SameLine(0, spacing);
+    ImGui::SetNextItemWidth(width);
+    ImGui::PushID(k);
+    changed |= input_double("##c", &v[k], "%.3g");
+    ImGui::PopID();
+  }
+  ImGui::PopID();
+  return changed;
+}
+
 constexpr std::size_t kTableLimit = 20;
 constexpr double kMinJ = 1e-6, kMaxJ = 100;  // slider range of |J|; any value can be typed
 
@@ -85,15 +103,9 @@ void draw_table(AppState& state, ParticleList& list) {
       ImGui::SetNextItemWidth(-1);
       changed |= input_double("##m", &list[i].m, "%.4g");
       ImGui::TableNextColumn();
-      ImGui::SetNextItemWidth(-1);
-      ImGui::InputScalarN("##r", ImGuiDataType_Double, list[i].r.data(), 3, nullptr, nullptr,
-                          "%.3g");
-      changed |= committed();
+      changed |= input_vec3("##r", list[i].r);
       ImGui::TableNextColumn();
-      ImGui::SetNextItemWidth(-1);
-      ImGui::InputScalarN("##v", ImGuiDataType_Double, list[i].v.data(), 3, nullptr, nullptr,
-                          "%.3g");
-      changed |= committed();
+      changed |= input_vec3("##v", list[i].v);
       ImGui::PopID();
     }
     ImGui::EndTable();
