@@ -70,6 +70,8 @@ TEST_CASE("senseless or out-of-range wall and sphere keys get one message naming
       {preset_with({{"container", R"({"radius": 1, "wall_temperature": 1, "moves": [{"to": 0.5, "speed": 1}]})"}}),
        "container.wall_temperature: a wall either moves"},
       {preset_with({{"hard_spheres", R"({"radius": 0})"}}), "hard_spheres.radius: must be > 0"},
+      {preset_with({{"hard_spheres", R"({"radius": 0.01})"}, {"floor", R"({"z": -0.9})"}}),
+       "floor: hard spheres on a floor are not modelled yet"},
       {preset_with({{"hard_spheres", R"({})"}}), "hard_spheres.radius: missing"},
       {preset_with({{"hard_spheres", R"({"radius": 0.6})"}}),
        "hard_spheres.radius: must be < container.radius / 2"},

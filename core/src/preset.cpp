@@ -292,6 +292,10 @@ void check_walls_and_contacts(const Preset& p, long count) {
     require(!p.expansion, "expansion",
             "the wall already moves (container.moves): give moves or an expansion, not both");
   if (!p.sphere_radius) return;
+  // The floor's contact test is made for a point: a sphere would sink by its radius into it.
+  require(!p.floor, "floor",
+          "hard spheres on a floor are not modelled yet (the floor would meet each sphere's "
+          "centre, not its surface): give floor or hard_spheres, not both");
   const double a = *p.sphere_radius;
   if (!p.container_radius) return;
   double smallest = *p.container_radius;
