@@ -3,9 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "swarm/printable_text.h"
+#include "swarm/strict_json.h"
 
 namespace swarmlab {
 namespace {
@@ -279,54 +279,6 @@ Lesson lesson_of(const json& j, const PresetLookup& lookup) {
   return l;
 }
 
-/// One JSON value and nothing after it, refusing a key given twice in one object (JSON leaves
-/// that open and nlohmann would keep the last one).
-json parse_strict(std::string_view text) {
-  struct Level {
-    bool is_array = false;
-    long index = 0;
-    std::string key;
-    std::set<std::string> keys;
-  };
-  std::vector<Level> levels;
-  auto path = [&levels]() {
-    std::string out;
-    for (const Level& l : levels)
-      out += l.is_array ? "[" + std::to_string(l.index) + "]"
-                        : (out.empty() ? "" : ".") + swarm::printable(l.key);
-    return out;
-  };
-  auto value_done = [&levels]() {
-    if (!levels.empty() && levels.back().is_array) ++levels.back().index;
-  };
-  const json::parser_callback_t on_event = [&](int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-        levels.push_back({false, 0, {}, {}});
-        break;
-      case json::parse_event_t::array_start:
-        levels.push_back({true, 0, {}, {}});
-        break;
-      case json::parse_event_t::key: {
-        Level& l = levels.back();
-        l.key = parsed.get<std::string>();
-        if (!l.keys.insert(l.key).second)
-          throw Invalid{path() + ": given twice (each key at most once)"};
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        levels.pop_back();
-        value_done();
-        break;
-      case json::parse_event_t::value:
-        value_done();
-        break;
-    }
-    return true;
-  };
-  return json::parse(text.begin(), text.end(), on_event);
-}
 
 }  // namespace
 
@@ -342,8 +294,10 @@ LessonParse parse_lesson(std::string_view json_text, const PresetLookup& lookup)
     return out;
   }
   try {
-    const json j = parse_strict(json_text);
+    const json j = swarm::parse_strict_json(json_text);
     out.lesson = lesson_of(j, lookup);
+  } catch (const swarm::DuplicateKey& e) {
+    out.error = e.what();
   } catch (const Invalid& e) {
     out.error = e.message;
   } catch (const json::parse_error& e) {

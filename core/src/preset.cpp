@@ -12,6 +12,7 @@
 #include "swarm/printable_text.h"
 #include "swarm/regime.h"
 #include "swarm/resource_budget.h"
+#include "swarm/strict_json.h"
 
 namespace swarm {
 namespace {
@@ -573,54 +574,6 @@ std::string overlong_string(std::string_view text) {
   return {};
 }
 
-/// Parses one JSON value and nothing after it, refusing a key given twice in one object (JSON
-/// leaves that open and nlohmann would keep the last).
-json parse_strict(std::string_view text) {
-  struct Level {
-    bool is_array = false;
-    long index = 0;
-    std::string key;
-    std::set<std::string> keys;
-  };
-  std::vector<Level> levels;
-  auto path = [&levels]() {
-    std::string out;
-    for (const Level& l : levels)
-      out += l.is_array ? "[" + std::to_string(l.index) + "]"
-                        : (out.empty() ? "" : ".") + printable(l.key);
-    return out;
-  };
-  auto value_done = [&levels]() {
-    if (!levels.empty() && levels.back().is_array) ++levels.back().index;
-  };
-  const json::parser_callback_t on_event = [&](int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-        levels.push_back({false, 0, {}, {}});
-        break;
-      case json::parse_event_t::array_start:
-        levels.push_back({true, 0, {}, {}});
-        break;
-      case json::parse_event_t::key: {
-        Level& l = levels.back();
-        l.key = parsed.get<std::string>();
-        if (!l.keys.insert(l.key).second)
-          throw Invalid{path() + ": given twice (each key at most once)"};
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        levels.pop_back();
-        value_done();
-        break;
-      case json::parse_event_t::value:
-        value_done();
-        break;
-    }
-    return true;
-  };
-  return json::parse(text.begin(), text.end(), on_event);
-}
 
 }  // namespace
 
@@ -645,9 +598,9 @@ PresetParse parse_preset(std::string_view json_text, const ResourceLimits& limit
   }
   json j;
   try {
-    j = parse_strict(json_text);
-  } catch (const Invalid& e) {
-    out.error = e.message;
+    j = parse_strict_json(json_text);
+  } catch (const DuplicateKey& e) {
+    out.error = e.what();
     return out;
   } catch (const json::parse_error& e) {
     out.error = printable(std::string("preset: not valid JSON (") + e.what() + ")", 300);
