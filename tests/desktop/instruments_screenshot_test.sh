@@ -27,22 +27,8 @@ fail() {
 command -v Xvfb >/dev/null || fail "Xvfb is not installed (apt-get install xvfb)"
 mkdir -p "$out"
 
-display=""
-for n in $(seq 141 190); do
-  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then
-    display=$n
-    break
-  fi
-done
-[ -n "$display" ] || fail "no free X display between :141 and :190"
-Xvfb ":$display" -screen 0 1280x800x24 -nolisten tcp >"$out/xvfb-instruments.log" 2>&1 &
-xvfb_pid=$!
-trap 'kill "$xvfb_pid" 2>/dev/null; wait "$xvfb_pid" 2>/dev/null' EXIT
-for _ in $(seq 1 50); do
-  [ -e "/tmp/.X11-unix/X$display" ] && break
-  kill -0 "$xvfb_pid" 2>/dev/null || fail "Xvfb did not start"
-  sleep 0.1
-done
+. "$(dirname "$0")/xvfb.sh"
+start_xvfb 141 190 "$out/xvfb-instruments.log"
 
 # A particle that does not exist is refused before any frame, naming the flag and the range.
 message=$(DISPLAY=":$display" timeout 120 "$binary" "$preset" --frames 2 --select 5 2>&1 >/dev/null)

@@ -26,24 +26,8 @@ fail() {
 command -v Xvfb >/dev/null || fail "Xvfb is not installed (apt-get install xvfb)"
 mkdir -p "$out"
 
-# A display number nobody uses: no lock file and no socket.
-display=""
-for n in $(seq 90 140); do
-  if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "/tmp/.X11-unix/X$n" ]; then
-    display=$n
-    break
-  fi
-done
-[ -n "$display" ] || fail "no free X display between :90 and :140"
-
-Xvfb ":$display" -screen 0 1280x800x24 -nolisten tcp >"$out/xvfb.log" 2>&1 &
-xvfb_pid=$!
-trap 'kill "$xvfb_pid" 2>/dev/null; wait "$xvfb_pid" 2>/dev/null' EXIT
-for _ in $(seq 1 50); do
-  [ -e "/tmp/.X11-unix/X$display" ] && break
-  kill -0 "$xvfb_pid" 2>/dev/null || fail "Xvfb did not start: $(cat "$out/xvfb.log")"
-  sleep 0.1
-done
+. "$(dirname "$0")/xvfb.sh"
+start_xvfb 90 140 "$out/xvfb.log"
 
 echo "running: swarmlab $(basename "$preset") --frames $frames --screenshot $shot (DISPLAY=:$display)"
 rm -f "$shot"
