@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cfloat>
 
 #include "fonts.h"
@@ -12,6 +13,8 @@
 
 namespace swarmlab {
 namespace {
+
+constexpr float kMaxUiFrameSeconds = 0.1f;  // s
 
 double seconds_since_start() {
   static const auto start = std::chrono::steady_clock::now();
@@ -86,6 +89,10 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplSDL2_NewFrame();
+  // ImGui repeats a key held longer than 0.275 s of its frame time. On a slow machine (a
+  // school Chromebook, a busy projector laptop) one quick press spanning two slow frames
+  // would toggle Play twice; the UI's clock is capped so a press repeats only when held.
+  ImGui::GetIO().DeltaTime = std::min(ImGui::GetIO().DeltaTime, kMaxUiFrameSeconds);
   apply_touch(*f.app);
   ImGui::NewFrame();
   f.app->update(seconds);
