@@ -70,6 +70,11 @@ Palette dark_palette() {
   p.total_energy = rgb(240, 240, 240);
   p.fit = rgb(255, 255, 255, 200);
   p.energy_drift = rgb(230, 120, 255);
+  p.timeline_track = rgb(98, 103, 116);
+  p.timeline_reached = rgb(150, 210, 255);
+  p.timeline_stage = rgb(230, 190, 90);
+  p.timeline_present = rgb(255, 255, 255);
+  p.timeline_target = rgb(255, 160, 80);
   return p;
 }
 
@@ -133,6 +138,11 @@ Palette light_palette() {
   p.total_energy = rgb(25, 25, 30);
   p.fit = rgb(0, 0, 0, 200);
   p.energy_drift = rgb(140, 40, 180);
+  p.timeline_track = rgb(135, 135, 142);
+  p.timeline_reached = rgb(15, 45, 115);
+  p.timeline_stage = rgb(150, 100, 0);
+  p.timeline_present = rgb(10, 10, 10);
+  p.timeline_target = rgb(200, 60, 0);
   return p;
 }
 

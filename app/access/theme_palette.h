@@ -29,6 +29,9 @@ struct Palette {
   Colour plot_background, plot_grid, plot_axis, plot_text, plot_dim_text, crosshair;
   Colour pressure, pressure_each_sample, temperature, temperature_each_sample;
   Colour kinetic, potential, total_energy, fit, energy_drift;
+  // The timeline under the view: the bar, the part computed so far, stage starts, the present
+  // and where a seek or fast-forward goes.
+  Colour timeline_track, timeline_reached, timeline_stage, timeline_present, timeline_target;
 };
 
 const Palette& palette(Theme theme);

@@ -5,14 +5,10 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "theme_style.h"
+
 namespace swarmlab {
 namespace {
-
-const ImU32 kTrack = IM_COL32(60, 64, 72, 255);
-const ImU32 kReached = IM_COL32(70, 120, 170, 255);
-const ImU32 kStage = IM_COL32(230, 190, 90, 200);
-const ImU32 kPresent = IM_COL32(255, 255, 255, 255);
-const ImU32 kTarget = IM_COL32(255, 160, 80, 255);
 
 const char* travel_name(TimeTravel::Kind kind) {
   switch (kind) {
@@ -76,21 +72,25 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("t = %.4g", double(step_at(ImGui::GetIO().MousePos.x)) * dt);
 
+  const Palette& colours = current_palette();
+  const ImU32 track = colours.timeline_track.packed(), reached = colours.timeline_reached.packed(),
+              stage = colours.timeline_stage.packed(), present = colours.timeline_present.packed(),
+              target = colours.timeline_target.packed();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float top = origin.y + 0.25f * bar_height, bottom = origin.y + 0.75f * bar_height;
-  draw->AddRectFilled(ImVec2(x0, top), ImVec2(x1, bottom), kTrack, 3);
-  draw->AddRectFilled(ImVec2(x0, top), ImVec2(x_of(timeline.reached()), bottom), kReached, 3);
+  draw->AddRectFilled(ImVec2(x0, top), ImVec2(x1, bottom), track, 3);
+  draw->AddRectFilled(ImVec2(x0, top), ImVec2(x_of(timeline.reached()), bottom), reached, 3);
   const std::vector<long> starts = timeline.stage_starts();
   if (starts.size() < std::size_t(x1 - x0) / 2)  // ticks no closer than 2 px
     for (long s : starts)
-      draw->AddLine(ImVec2(x_of(s), origin.y), ImVec2(x_of(s), origin.y + bar_height), kStage);
+      draw->AddLine(ImVec2(x_of(s), origin.y), ImVec2(x_of(s), origin.y + bar_height), stage);
   if (travel.active())
     draw->AddLine(ImVec2(x_of(travel.target), origin.y),
-                  ImVec2(x_of(travel.target), origin.y + bar_height), kTarget, 2);
+                  ImVec2(x_of(travel.target), origin.y + bar_height), target, 2);
   const float px = x_of(timeline.step());
   draw->AddTriangleFilled(ImVec2(px - 0.4f * font, origin.y), ImVec2(px + 0.4f * font, origin.y),
-                          ImVec2(px, top + 0.1f * font), kPresent);
-  draw->AddLine(ImVec2(px, top), ImVec2(px, origin.y + bar_height), kPresent, 2);
+                          ImVec2(px, top + 0.1f * font), present);
+  draw->AddLine(ImVec2(px, top), ImVec2(px, origin.y + bar_height), present, 2);
 
   if (travel.active() && travel.kind != TimeTravel::Kind::seek) {
     ImGui::SameLine();

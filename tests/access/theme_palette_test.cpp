@@ -20,7 +20,8 @@ void check_all(const char* theme, const std::vector<Named>& foreground,
   for (const Named& f : foreground)
     for (const Named& b : background) {
       const double ratio = contrast_ratio(f.second, b.second);
-      INFO(std::string(theme) << ": " << f.first << " on " << b.first << " = " << ratio << ":1");
+      const std::string what = std::string(theme) + ": " + f.first + " on " + b.first;
+      INFO(what << " = " << ratio << ":1");
       CHECK(ratio >= least);
     }
 }
@@ -109,6 +110,20 @@ void check_theme(Theme theme) {
             {{"plot", p.plot_background}}, kGraphics);
   // The hover tooltip marks each series' line with a swatch of its colour on the popup.
   check_all(name, series, {{"tooltip", p.popup}}, kGraphics);
+
+  // The timeline strip (the window, 85% opaque over the view): the bar and the marks above
+  // and across it on the strip, and the part computed so far apart from the rest of the bar.
+  Colour strip_window = p.window;
+  strip_window.a = 217;
+  const Colour strip = over(strip_window, p.view_background);
+  check_all(name,
+            {{"timeline bar", p.timeline_track},
+             {"stage start", p.timeline_stage},
+             {"present", p.timeline_present},
+             {"seek target", p.timeline_target}},
+            {{"timeline strip", strip}}, kGraphics);
+  check_all(name, {{"time computed", p.timeline_reached}}, {{"timeline bar", p.timeline_track}},
+            kGraphics);
 }
 
 }  // namespace
