@@ -386,6 +386,12 @@ void App::handle_view_input() {
     if (drag_distance_ < 4) pick_particle(io.MousePos.x, io.MousePos.y);
   }
   if (over_view && io.MouseWheel != 0) state_.camera.zoom(io.MouseWheel);
+  // The right button slides the view, as two fingers do.
+  if (over_view && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) panning_ = true;
+  if (panning_ && ImGui::IsMouseDown(ImGuiMouseButton_Right))
+    state_.camera.pan(io.MouseDelta.x, io.MouseDelta.y, view.height);
+  else
+    panning_ = false;
 }
 
 void App::pick_particle(float x, float y) {
@@ -412,6 +418,7 @@ void App::update_camera() {
   else if (s.reframe)
     s.camera.set_target(Eigen::Vector3f::Zero());
   if (s.reframe) {
+    s.camera.reset_pan();
     // An isolated swarm is framed about its centre of mass; a container about itself.
     if (!s.view.follow_cm && !s.preset.container_radius)
       s.camera.set_target(swarm::cm_position(system).cast<float>());

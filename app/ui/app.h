@@ -56,6 +56,7 @@ class App {
   float framed_aspect_ = 1;  ///< the view's width / height when the camera distance was set
   bool dragging_ = false;
   float drag_distance_ = 0;
+  bool panning_ = false;  ///< the right button went down on the view and is held
 };
 
 }  // namespace swarmlab

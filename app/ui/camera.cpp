@@ -30,20 +30,20 @@ void OrbitCamera::pan(float dx, float dy, float view_height) {
   const Eigen::Vector3f right = m.block<1, 3>(0, 0).transpose(), up = m.block<1, 3>(1, 0).transpose();
   // World length of one pixel at the target's depth.
   const float per_pixel = 2 * distance_ * std::tan(0.5f * fov_y_) / std::max(view_height, 1.0f);
-  target_ -= per_pixel * (dx * right - dy * up);
+  pan_offset_ -= per_pixel * (dx * right - dy * up);
 }
 
 void OrbitCamera::set_elevation(float radians) { elevation_ = std::clamp(radians, -1.55f, 1.55f); }
 
 Eigen::Vector3f OrbitCamera::eye() const {
   const float c = std::cos(elevation_);
-  return target_ + distance_ * Eigen::Vector3f(c * std::cos(azimuth_), c * std::sin(azimuth_),
+  return look_at() + distance_ * Eigen::Vector3f(c * std::cos(azimuth_), c * std::sin(azimuth_),
                                                std::sin(elevation_));
 }
 
 Eigen::Matrix4f OrbitCamera::view() const {
   const Eigen::Vector3f e = eye();
-  const Eigen::Vector3f forward = (target_ - e).normalized();
+  const Eigen::Vector3f forward = (look_at() - e).normalized();
   const Eigen::Vector3f right = forward.cross(Eigen::Vector3f::UnitZ()).normalized();
   const Eigen::Vector3f up = right.cross(forward);
   Eigen::Matrix4f m = Eigen::Matrix4f::Identity();

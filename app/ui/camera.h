@@ -34,9 +34,11 @@ class OrbitCamera {
   void zoom(float steps);
   /// Moves closer by this factor (a pinch that spread the fingers by it).
   void zoom_by(float factor);
-  /// Slides the target so the scene follows a two-finger drag of dx, dy pixels across a view
-  /// view_height pixels tall.
+  /// Slides the view so the scene follows a two-finger drag of dx, dy pixels across a view
+  /// view_height pixels tall. The slide is kept apart from the target, so a view that follows
+  /// the centre of mass keeps following it, shifted, until reset_pan().
   void pan(float dx, float dy, float view_height);
+  void reset_pan() { pan_offset_ = Eigen::Vector3f::Zero(); }
   float distance() const { return distance_; }
   float yaw() const { return azimuth_; }      ///< radians about z
   float pitch() const { return elevation_; }  ///< radians above the x-y plane
@@ -55,7 +57,10 @@ class OrbitCamera {
   void update(const ViewRect& rect);
 
  private:
+  Eigen::Vector3f look_at() const { return target_ + pan_offset_; }
+
   Eigen::Vector3f target_ = Eigen::Vector3f::Zero();
+  Eigen::Vector3f pan_offset_ = Eigen::Vector3f::Zero();  ///< world units
   float distance_ = 5;
   float azimuth_ = -1.1f;   ///< radians about z
   float elevation_ = 0.6f;  ///< radians above the x-y plane

@@ -132,6 +132,7 @@ void draw_help_window(AppState& state) {
     }
     const char* mouse[][2] = {{"drag", "orbit the camera"},
                               {"wheel", "zoom"},
+                              {"right-drag", "slide the view (Home: back)"},
                               {"drag the timeline", "back or on to any time reached"},
                               {"click", "select a particle (trail, orbit ahead)"},
                               {"Ctrl+click", "type a value into a slider"},

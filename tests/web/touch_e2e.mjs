@@ -1,9 +1,10 @@
 // Touch and screen layouts of the browser app (issue 12), in headless Chromium with touch
 // emulation: a tap selects a particle, a tap on empty space deselects without turning the
-// camera, one finger orbits, two fingers pinch to zoom, a finger drags a panel's content
-// without editing what it started on; swarmlab.set() refuses what it does not know; and at
-// the six classroom screen sizes (and 1280x720 at UI scale 1.5) every panel lies inside the
-// canvas, none over another or over the 3D view, with a screenshot of each in build/web-test/.
+// camera, one finger orbits, two fingers pinch to zoom and slide the view, a finger drags a
+// panel's content without editing what it started on; swarmlab.set() refuses what it does
+// not know; and at the six classroom screen sizes (and 1280x720 at UI scale 1.5) every panel
+// lies inside the canvas, none over another or over the 3D view, with a screenshot of each in
+// build/web-test/.
 // Run through tests/web/run.sh; the last line is "N passed, M failed".
 import * as harness from './harness.mjs';
 
@@ -87,6 +88,22 @@ async function gestures(page, context) {
   await fingers(page, cdp, [[cx - 120, cy, cx - 40, cy], [cx + 120, cy, cx + 40, cy]]);
   t = await appState(page);
   check('a pinch zooms out again', Math.abs(t.camera.distance / d1 - 3) < 0.15, `distance ${d1.toFixed(3)} -> ${t.camera.distance.toFixed(3)}`);
+
+  // Two fingers dragged together slide the scene with them, and it stays slid while the view
+  // follows the centre of mass. Particles nearer or farther than the centre move a little more
+  // or less than the fingers (perspective), so their mean is compared.
+  const seenAt = () => api(page, (n) => Array.from({ length: n }, (_, i) => window.swarmlab.screenPosition(i)), count);
+  const beforePan = await seenAt(), yaw2 = t.camera.yaw, d2 = t.camera.distance;
+  const [dx, dy] = [90, 50];
+  await fingers(page, cdp, [[cx - 60, cy, cx - 60 + dx, cy + dy], [cx + 60, cy, cx + 60 + dx, cy + dy]]);
+  await frames(page, 5);
+  const afterPan = await seenAt();
+  const mean = (k) => afterPan.reduce((sum, p, i) => sum + p[k] - beforePan[i][k], 0) / count;
+  t = await appState(page);
+  check('two fingers dragged together slide the scene with them', Math.abs(mean('x') / dx - 1) < 0.3 && Math.abs(mean('y') / dy - 1) < 0.3,
+        `fingers moved (${dx}, ${dy}) px, particles by (${mean('x').toFixed(1)}, ${mean('y').toFixed(1)}) on average`);
+  check('... without orbiting or zooming', t.camera.yaw === yaw2 && Math.abs(t.camera.distance / d2 - 1) < 0.02,
+        `yaw ${yaw2.toFixed(3)} -> ${t.camera.yaw.toFixed(3)}, distance ${d2.toFixed(3)} -> ${t.camera.distance.toFixed(3)}`);
 
   // A finger dragged up the controls scrolls them, and presses nothing it started on.
   const controls = t.panels.find((p) => p.name === 'Controls');
