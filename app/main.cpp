@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
   bool presentation = false;
   app.add_flag("--presentation", presentation,
                "Start in presentation mode: light theme, large text, the view and one plot");
+  bool sound = false;
+  app.add_flag("--sound", sound, "Start with a click at each wall hit (M turns it off)");
 
   swarmlab::RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a preset headless and report the results");
@@ -76,7 +78,7 @@ int main(int argc, char** argv) {
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop(
-      {window_preset, frames, screenshot, select, presentation, plot_tab});
+      {window_preset, frames, screenshot, select, presentation, plot_tab, sound});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

@@ -103,6 +103,7 @@ int run_desktop(const DesktopOptions& options) {
   }
   if (options.plot_tab > 0) f.app->state().plots.tab = options.plot_tab - 1;
   if (options.presentation) set_presentation(f.app->state(), true);
+  if (options.sound) f.app->state().presentation.sound = true;
 
   // The first frames build fonts and buffers; the timing summary leaves them out.
   constexpr int kWarmUp = 5;
@@ -138,6 +139,11 @@ int run_desktop(const DesktopOptions& options) {
     if (const auto& track = f.app->state().instruments.track; track && track->meter.period())
       std::printf("swarmlab: particle %zu: measured period %.6g, formula %.6g\n",
                   track->particle + 1, *track->meter.period(), *track->meter.formula_period());
+    if (const auto& sound = f.outputs.sound_tally(); f.app->state().presentation.sound)
+      std::printf(
+          "swarmlab: sound: %lld clicks played, %lld dropped, for %lld wall hits in %.3f s\n",
+          (long long)sound.clicks_played, (long long)sound.clicks_dropped,
+          (long long)sound.hits, sound.seconds);
     if (!options.screenshot_path.empty()) {
       if (screenshot_error.empty()) {
         std::printf("swarmlab: screenshot written to %s\n", options.screenshot_path.c_str());

@@ -12,6 +12,7 @@ struct DesktopOptions {
   int select = 0;  ///< select this particle (numbered from 1, as in the table) at the start; 0: none
   bool presentation = false;    ///< start in presentation mode (light theme, large, one plot)
   int plot_tab = 0;  ///< open this plot tab (numbered from 1, left to right) at the start; 0: the preset's
+  bool sound = false;  ///< start with the wall clicks on
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

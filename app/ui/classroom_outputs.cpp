@@ -129,6 +129,7 @@ void ClassroomOutputs::update_sound(AppState& state, double seconds) {
       state.status_is_error = true;
     }
     clicks_.reset();
+    tally_ = {};
     run_id_ = -1;
   } else if (!p.sound && sound_.is_open()) {
     sound_.close();
@@ -143,8 +144,10 @@ void ClassroomOutputs::update_sound(AppState& state, double seconds) {
     return;
   }
   const int n = clicks_.clicks(hits - hits_, seconds);
+  tally_.hits += hits - hits_;
+  tally_.seconds += seconds;
   hits_ = hits;
-  sound_.play(n, seconds);
+  if (n > 0) (sound_.play(n, seconds) ? tally_.clicks_played : tally_.clicks_dropped) += n;
 }
 
 }  // namespace swarmlab

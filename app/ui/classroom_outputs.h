@@ -23,6 +23,16 @@ class ClassroomOutputs {
   /// wall time.
   void update(AppState& state, SDL_Window* window, double seconds);
 
+  /// What the wall clicks did since sound was last turned on: the desktop's --frames summary
+  /// reports it, so a test can match the audio output against the wall hits.
+  struct SoundTally {
+    std::int64_t hits = 0;           ///< wall hits while sound was on
+    double seconds = 0;              ///< wall time of those frames
+    std::int64_t clicks_played = 0;  ///< clicks handed to the audio output
+    std::int64_t clicks_dropped = 0; ///< clicks left out because the output was behind
+  };
+  const SoundTally& sound_tally() const { return tally_; }
+
  private:
   void update_fullscreen(AppState& state, SDL_Window* window);
   void update_sound(AppState& state, double seconds);
@@ -37,6 +47,7 @@ class ClassroomOutputs {
   WallClicks clicks_;
   long run_id_ = -1;
   std::int64_t hits_ = 0;  // the run's wall hits at the last frame
+  SoundTally tally_;
 };
 
 /// The state as a listener needs it.

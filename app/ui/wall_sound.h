@@ -18,8 +18,9 @@ class WallSound {
   std::string open();
   void close();
   bool is_open() const { return open_; }
-  /// Plays `clicks` clicks spread evenly over the next `seconds`.
-  void play(int clicks, double seconds);
+  /// Plays `clicks` clicks spread evenly over the next `seconds`; false when they were
+  /// dropped (the output is behind, so they would be heard late).
+  bool play(int clicks, double seconds);
 
  private:
   bool open_ = false;

@@ -56,14 +56,14 @@ void WallSound::close() {
   device_ = 0;
 }
 
-void WallSound::play(int clicks, double seconds) {
-  if (!open_ || clicks <= 0 || !(seconds > 0)) return;
+bool WallSound::play(int clicks, double seconds) {
+  if (!open_ || clicks <= 0 || !(seconds > 0)) return false;
   const double queued = double(SDL_GetQueuedAudioSize(device_)) / (sizeof(float) * kSampleRate);
-  if (queued > kMostQueued) return;
+  if (queued > kMostQueued) return false;
   std::vector<float> samples(std::size_t(std::ceil(seconds * kSampleRate)), 0.0f);
   for (int i = 0; i < clicks; ++i)
     add_click(samples, std::size_t(double(i) / clicks * double(samples.size())));
-  SDL_QueueAudio(device_, samples.data(), Uint32(samples.size() * sizeof(float)));
+  return SDL_QueueAudio(device_, samples.data(), Uint32(samples.size() * sizeof(float))) == 0;
 }
 
 }  // namespace swarmlab

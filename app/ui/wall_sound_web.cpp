@@ -44,9 +44,10 @@ EM_JS(void, web_audio_suspend, (), {
   if (Module.swarmlabAudio) Module.swarmlabAudio.suspend();
 });
 
-EM_JS(void, web_audio_clicks, (int clicks, double seconds), {
+// 1 when the clicks were scheduled; 0 while the context waits for a gesture.
+EM_JS(int, web_audio_clicks, (int clicks, double seconds), {
   var ctx = Module.swarmlabAudio;
-  if (!ctx || ctx.state !== 'running') return;
+  if (!ctx || ctx.state !== 'running') return 0;
   var start = ctx.currentTime + 0.01;
   for (var i = 0; i < clicks; ++i) {
     var source = ctx.createBufferSource();
@@ -55,6 +56,7 @@ EM_JS(void, web_audio_clicks, (int clicks, double seconds), {
     source.start(start + i * seconds / clicks);
   }
   Module.swarmlabClicksPlayed = (Module.swarmlabClicksPlayed || 0) + clicks;
+  return 1;
 });
 
 }  // namespace
@@ -74,8 +76,8 @@ void WallSound::close() {
   open_ = false;
 }
 
-void WallSound::play(int clicks, double seconds) {
-  if (open_ && clicks > 0 && seconds > 0) web_audio_clicks(clicks, seconds);
+bool WallSound::play(int clicks, double seconds) {
+  return open_ && clicks > 0 && seconds > 0 && web_audio_clicks(clicks, seconds) != 0;
 }
 
 }  // namespace swarmlab
