@@ -9,25 +9,11 @@
 # Prints PASS or FAIL; exits non-zero on failure. Needs Xvfb and python3.
 set -uo pipefail
 
-here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-binary="${1:-$root/build/app/swarmlab}"
-presets="${2:-$root/assets/presets}"
-out="${3:-$(mktemp -d)}"
+. "$(dirname "$0")/window_test_setup.sh" "$@"
 preset="$presets/fig1-four-masses.json"
 shot="$out/desktop-instruments.png"
 frames=450
 
-fail() {
-  echo "FAIL: $*"
-  exit 1
-}
-
-[ -x "$binary" ] || fail "no swarmlab binary at $binary"
-command -v Xvfb >/dev/null || fail "Xvfb is not installed (apt-get install xvfb)"
-mkdir -p "$out"
-
-. "$(dirname "$0")/xvfb.sh"
 start_xvfb 141 190 "$out/xvfb-instruments.log"
 
 # A particle that does not exist is refused before any frame, naming the flag and the range.

@@ -7,26 +7,13 @@
 # Prints PASS or FAIL; exits non-zero on failure. Needs Xvfb and python3 (standard library).
 set -uo pipefail
 
-here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-binary="${1:-$root/build/app/swarmlab}"
-presets="${2:-$root/assets/presets}"
-out="${3:-$(mktemp -d)}"
+. "$(dirname "$0")/window_test_setup.sh" "$@"
 preset="$presets/fig4-equilibration.json"
 shot="$out/desktop-fig4.png"
 frames=90
 
-fail() {
-  echo "FAIL: $*"
-  exit 1
-}
-
-[ -x "$binary" ] || fail "no swarmlab binary at $binary"
 [ -f "$preset" ] || fail "no preset at $preset"
-command -v Xvfb >/dev/null || fail "Xvfb is not installed (apt-get install xvfb)"
-mkdir -p "$out"
 
-. "$(dirname "$0")/xvfb.sh"
 start_xvfb 90 140 "$out/xvfb.log"
 
 echo "running: swarmlab $(basename "$preset") --frames $frames --screenshot $shot (DISPLAY=:$display)"

@@ -9,23 +9,9 @@
 # Prints PASS or FAIL; exits non-zero on failure. Needs Xvfb and python3 (standard library).
 set -uo pipefail
 
-here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
-binary="${1:-$root/build/app/swarmlab}"
-presets="${2:-$root/assets/presets}"
-out="${3:-$(mktemp -d)}"
+. "$(dirname "$0")/window_test_setup.sh" "$@"
 frames=150
 
-fail() {
-  echo "FAIL: $*"
-  exit 1
-}
-
-[ -x "$binary" ] || fail "no swarmlab binary at $binary"
-command -v Xvfb >/dev/null || fail "Xvfb is not installed (apt-get install xvfb)"
-mkdir -p "$out"
-
-. "$(dirname "$0")/xvfb.sh"
 start_xvfb 191 240 "$out/xvfb-sound.log"
 
 # run NAME PRESET [FLAGS...]: the app for $frames frames, its audio in $out/NAME.raw and its
