@@ -22,8 +22,7 @@ async function main(url) {
     const start = await api(() => window.swarmlab.frames());
     await page.waitForFunction((target) => window.swarmlab.frames() >= target, start + n, { timeout: 15000 });
   };
-  // Two frames down: one that saw the key pressed, without the hold becoming a repeat.
-  const tap = async (key) => { await page.keyboard.down(key); await framesPass(2); await page.keyboard.up(key); await framesPass(3); };
+  const tap = async (key) => { await page.keyboard.down(key); await framesPass(3); await page.keyboard.up(key); await framesPass(3); };
   // Ctrl+Tab switches panels as Alt+Tab switches programs: Tab pressed k times with Ctrl held
   // goes k panels down the list of recently used ones. Tries k = 1, 2, ... until `wanted` has
   // the keyboard focus.

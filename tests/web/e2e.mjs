@@ -87,8 +87,7 @@ async function main(url) {
     const start = await page.evaluate(() => window.swarmlab.frames());
     await page.waitForFunction((target) => window.swarmlab.frames() >= target, start + n, { timeout: 10000 });
   };
-  // Two frames down: one that saw the key pressed, without the hold becoming a repeat.
-  const tap = async (key) => { await page.keyboard.down(key); await framesPass(2); await page.keyboard.up(key); await framesPass(3); };
+  const tap = async (key) => { await page.keyboard.down(key); await framesPass(3); await page.keyboard.up(key); await framesPass(3); };
   await page.mouse.click(620, 300); // focus the canvas (a click in the 3D view selects or deselects)
   await tap('Space');
   const paused = await clockAdvances(page, 400);
