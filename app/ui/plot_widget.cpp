@@ -52,16 +52,29 @@ void data_range(const PlotSpec& spec, bool x_axis, const Scale& x_scale, double&
   }
 }
 
-void set_range(Scale& s, double lo, double hi, const PlotAxis& axis, bool from_zero) {
+/// How an axis whose data sit at one value (the first sample, a constant) is opened up.
+enum class OneValue {
+  centred,   ///< a value axis: the point in the middle
+  at_start,  ///< the x axis: the first sample at the left, room for the run to come
+};
+
+void set_range(Scale& s, double lo, double hi, const PlotAxis& axis, bool from_zero,
+               OneValue one_value) {
   if (axis.min) lo = *axis.min;
   if (axis.max) hi = *axis.max;
   if (!(lo <= hi)) lo = hi = s.log ? 1.0 : 0.0;
   if (from_zero && !s.log) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
   double a = s.transform(lo), b = s.transform(hi);
   if (b - a < 1e-12 * std::max(1.0, std::abs(a))) {
-    const double half = s.log ? 0.5 : std::max(std::abs(a) * 0.1, 1e-9);
-    a -= half;
-    b += half;
+    // A fifth of the value wide, or 2 wide at zero (a first sample at t = 0, an energy change
+    // of exactly 0): never a range so narrow that its ticks read "x 10^-9".
+    const double width = s.log ? 1.0 : a != 0 ? 0.2 * std::abs(a) : 2.0;
+    if (one_value == OneValue::at_start && !s.log) {
+      b = a + width;
+    } else {
+      a -= 0.5 * width;
+      b = a + width;
+    }
   } else if (!axis.min || !axis.max) {
     const double pad = 0.05 * (b - a);  // keep the curve off the frame
     if (!axis.min && !(from_zero && lo == 0)) a -= pad;
@@ -120,9 +133,9 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   double lo, hi;
   data_range(spec, true, xs, lo, hi);
   const bool has_data = std::isfinite(lo);
-  set_range(xs, lo, hi, spec.x, false);
+  set_range(xs, lo, hi, spec.x, false, OneValue::at_start);
   data_range(spec, false, xs, lo, hi);
-  set_range(ys, lo, hi, spec.y, spec.y_from_zero);
+  set_range(ys, lo, hi, spec.y, spec.y_from_zero, OneValue::centred);
 
   // Grid, ticks and their labels: the figures' tick rule, with as many ticks as the labels
   // leave room for.
