@@ -2,17 +2,22 @@
 // and runs both): plain C++ with a steady clock, since Google Benchmark is not built for wasm.
 // Usage: wasm_bench [threads]   (native only: 1 or 2; wasm always runs one thread)
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <memory>
+#include <string>
 
 #include "scenarios/workloads.h"
 #include "swarm/engine.h"
 #include "swarm/fast_engine.h"
 #include "swarm/integrators.h"
+#include "swarm/preset.h"
 #include "swarm/run.h"
+#include "swarm/strict_json.h"
 
 namespace {
 
@@ -44,7 +49,8 @@ double expansion(bool repulsive, long n, long stages, long* hits) {
 double engine_steps(bool fast, long n, long steps, long* hits, double* build) {
   Preset p = swarmlab::scenarios::expansion_preset(false, n);
   System s = initial_system(p);
-  EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
+  EngineConfig config;
+  config.container_radius = 1.0;
   config.threads = g_threads;
   return seconds([&] {
     std::unique_ptr<Engine> e;
@@ -86,6 +92,43 @@ double throughput(bool fast, bool repulsive, long n) {
   return double(steps) * double(n) / t;
 }
 
+/// The text of a share link's preset that lists 12,000 particles: about 0.9 MB of JSON, 1.2
+/// million characters once base64url-encoded into the address (the browser test's long link).
+std::string listed_particles_json(long n) {
+  std::string text = R"({"name": "long link", "J": 1e-4, "container": {"radius": 1}, )"
+                     R"("dt": 0.01, "duration": 10, "particles": [)";
+  char particle[160];
+  for (long i = 0; i < n; ++i) {
+    auto x = [i](int k) { return 0.5 * std::sin(double(i) * 12.9898 + k * 78.233); };
+    std::snprintf(particle, sizeof particle,
+                  R"(%s{"m": 1, "r": [%.6f, %.6f, %.6f], "v": [%.6f, %.6f, %.6f]})",
+                  i ? ", " : "", x(1), x(2), x(3), x(4), x(5), x(6));
+    text += particle;
+  }
+  return text + "]}";
+}
+
+/// Best of five: opening the long link's preset as the app does (strict JSON, every rule) and,
+/// as the floor, nlohmann's plain parse of the same text.
+void share_link(long n) {
+  const std::string text = listed_particles_json(n);
+  double open = 1e30, plain = 1e30, strict = 1e30;
+  for (int k = 0; k < 5; ++k) {
+    open = std::min(open, seconds([&] {
+      if (!parse_preset(text).preset) std::abort();
+    }));
+    strict = std::min(strict, seconds([&] {
+      if (parse_strict_json(text).is_null()) std::abort();
+    }));
+    plain = std::min(plain, seconds([&] {
+      if (nlohmann::json::parse(text).is_null()) std::abort();
+    }));
+  }
+  std::printf("%-44s %8.3f s  (strict JSON %.3f s, plain JSON %.3f s: %.1fx, %.1fx)\n",
+              ("share link: preset of " + std::to_string(n) + " particles").c_str(), open, strict,
+              plain, open / plain, strict / plain);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -96,6 +139,7 @@ int main(int argc, char** argv) {
   (void)argv;
 #endif
   std::printf("threads %d\n", g_threads);
+  share_link(12000);
   long hits = 0;
   double t = expansion(false, 40000, 50, &hits);
   std::printf("%-44s %8.3f s  %ld hits\n", "headline: attractive N=40000, 500000 steps", t, hits);
