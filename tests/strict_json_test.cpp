@@ -38,6 +38,19 @@ TEST_CASE("a key given twice in one object is named by its path") {
   CHECK(duplicate_in(R"({"m": 1, "\u006d": 2})") == "m: given twice (each key at most once)");
 }
 
+TEST_CASE("an object of many keys: each repeat found, whether early or late") {
+  // A hostile link may hold one object of a hundred thousand keys (compared in pairs, that
+  // would be 5e9 comparisons); the first and the last key repeated, and none repeated.
+  std::string keys;
+  for (int i = 0; i < 100000; ++i) keys += "\"k" + std::to_string(i) + "\": 0, ";
+  CHECK(duplicate_in("{" + keys + "\"k0\": 1}") == "k0: given twice (each key at most once)");
+  CHECK(duplicate_in("{\"x\": [{" + keys + "\"k99999\": 1}]}") ==
+        "x[0].k99999: given twice (each key at most once)");
+  const nlohmann::json unique = parse_strict_json("{" + keys + "\"last\": 1}");
+  CHECK(unique.size() == 100001);
+  CHECK(unique.at("k54321") == 0);
+}
+
 TEST_CASE("text that is not exactly one JSON value is refused as nlohmann refuses it") {
   CHECK_THROWS_AS(parse_strict_json(R"({"a": 1} {"b": 2})"), nlohmann::json::parse_error);
   CHECK_THROWS_AS(parse_strict_json(R"({"a": 1,})"), nlohmann::json::parse_error);
