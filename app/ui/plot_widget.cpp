@@ -55,7 +55,7 @@ void data_range(const PlotSpec& spec, bool x_axis, const Scale& x_scale, double&
 /// How an axis whose data sit at one value (the first sample, a constant) is opened up.
 enum class OneValue {
   centred,   ///< a value axis: the point in the middle
-  at_start,  ///< the x axis: the first sample at the left, room for the run to come
+  at_start,  ///< a linear x axis: the first sample at the left, room for the run to come
 };
 
 void set_range(Scale& s, double lo, double hi, const PlotAxis& axis, bool from_zero,
@@ -65,15 +65,20 @@ void set_range(Scale& s, double lo, double hi, const PlotAxis& axis, bool from_z
   if (!(lo <= hi)) lo = hi = s.log ? 1.0 : 0.0;
   if (from_zero && !s.log) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
   double a = s.transform(lo), b = s.transform(hi);
-  if (b - a < 1e-12 * std::max(1.0, std::abs(a))) {
-    // A fifth of the value wide, or 2 wide at zero (a first sample at t = 0, an energy change
-    // of exactly 0): never a range so narrow that its ticks read "x 10^-9".
-    const double width = s.log ? 1.0 : a != 0 ? 0.2 * std::abs(a) : 2.0;
-    if (one_value == OneValue::at_start && !s.log) {
+  // One value, to the data's own precision: a spread of 1e-15 about 1e-15 (the exact method's
+  // energy error) is data to show, a spread of 1e-15 about 1 is not.
+  const double scale = std::max(std::abs(a), std::abs(b));
+  if (b - a <= 1e-12 * scale) {
+    // A fifth of the value wide, or 2 wide at zero (a first sample at t = 0, no pressure yet):
+    // never a range so narrow that its ticks read "x 10^-9".
+    const double width = s.log ? 1.0 : scale > 0 ? 0.2 * scale : 2.0;
+    const bool pinned_low = axis.min || (from_zero && lo == 0);
+    if (pinned_low || (one_value == OneValue::at_start && !s.log)) {
       b = a + width;
     } else {
-      a -= 0.5 * width;
-      b = a + width;
+      const double mid = 0.5 * (a + b);
+      a = mid - 0.5 * width;
+      b = mid + 0.5 * width;
     }
   } else if (!axis.min || !axis.max) {
     const double pad = 0.05 * (b - a);  // keep the curve off the frame
