@@ -443,6 +443,7 @@ void App::update_camera() {
     for (const swarm::Particle& p : system.particles) extent = std::max(extent, (p.r - cm).norm());
     const float wanted = float(1.15 * extent);
     if (std::isfinite(wanted) && wanted > 1.5f * s.framed_radius) {
+      s.camera.reset_pan();
       s.camera.set_target(cm.cast<float>());
       s.camera.scale_distance(wanted / s.framed_radius);
       s.framed_radius = wanted;

@@ -27,7 +27,8 @@ void OrbitCamera::zoom_by(float factor) {
 
 void OrbitCamera::pan(float dx, float dy, float view_height) {
   const Eigen::Matrix4f m = view();
-  const Eigen::Vector3f right = m.block<1, 3>(0, 0).transpose(), up = m.block<1, 3>(1, 0).transpose();
+  const Eigen::Vector3f right = m.block<1, 3>(0, 0).transpose();
+  const Eigen::Vector3f up = m.block<1, 3>(1, 0).transpose();
   // World length of one pixel at the target's depth.
   const float per_pixel = 2 * distance_ * std::tan(0.5f * fov_y_) / std::max(view_height, 1.0f);
   pan_offset_ -= per_pixel * (dx * right - dy * up);
@@ -37,8 +38,8 @@ void OrbitCamera::set_elevation(float radians) { elevation_ = std::clamp(radians
 
 Eigen::Vector3f OrbitCamera::eye() const {
   const float c = std::cos(elevation_);
-  return look_at() + distance_ * Eigen::Vector3f(c * std::cos(azimuth_), c * std::sin(azimuth_),
-                                               std::sin(elevation_));
+  return look_at() + distance_ * Eigen::Vector3f(c * std::cos(azimuth_),
+                                                 c * std::sin(azimuth_), std::sin(elevation_));
 }
 
 Eigen::Matrix4f OrbitCamera::view() const {

@@ -38,6 +38,7 @@ class OrbitCamera {
   /// view_height pixels tall. The slide is kept apart from the target, so a view that follows
   /// the centre of mass keeps following it, shifted, until reset_pan().
   void pan(float dx, float dy, float view_height);
+  /// Forgets the slide: the target is in the middle of the view again.
   void reset_pan() { pan_offset_ = Eigen::Vector3f::Zero(); }
   float distance() const { return distance_; }
   float yaw() const { return azimuth_; }      ///< radians about z

@@ -1,5 +1,7 @@
 #include "classroom_outputs.h"
 
+#include <algorithm>
+
 #include "theme_style.h"
 
 #ifdef __EMSCRIPTEN__
@@ -143,8 +145,10 @@ void ClassroomOutputs::update_sound(AppState& state, double seconds) {
     clicks_.reset();
     return;
   }
-  const int n = clicks_.clicks(hits - hits_, seconds);
-  tally_.hits += hits - hits_;
+  // Going back on the timeline lowers the run's count: no hits were made.
+  const std::int64_t new_hits = std::max<std::int64_t>(0, hits - hits_);
+  const int n = clicks_.clicks(new_hits, seconds);
+  tally_.hits += new_hits;
   tally_.seconds += seconds;
   hits_ = hits;
   if (n > 0) (sound_.play(n, seconds) ? tally_.clicks_played : tally_.clicks_dropped) += n;

@@ -26,10 +26,10 @@ class ClassroomOutputs {
   /// What the wall clicks did since sound was last turned on: the desktop's --frames summary
   /// reports it, so a test can match the audio output against the wall hits.
   struct SoundTally {
-    std::int64_t hits = 0;           ///< wall hits while sound was on
-    double seconds = 0;              ///< wall time of those frames
-    std::int64_t clicks_played = 0;  ///< clicks handed to the audio output
-    std::int64_t clicks_dropped = 0; ///< clicks left out because the output was behind
+    std::int64_t hits = 0;            ///< wall hits while sound was on
+    double seconds = 0;               ///< wall time of those frames
+    std::int64_t clicks_played = 0;   ///< clicks handed to the audio output
+    std::int64_t clicks_dropped = 0;  ///< clicks left out because the output was behind
   };
   const SoundTally& sound_tally() const { return tally_; }
 

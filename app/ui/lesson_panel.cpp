@@ -227,7 +227,8 @@ void draw_welcome_window(AppState& state) {
     draw_prose(
         "Particles that pull on each other like springs (F = J m\u2081 m\u2082 r), solved "
         "exactly. The *3D view*: drag to turn it, scroll or pinch to zoom, right-drag or "
-        "drag two fingers to slide it, click or tap a particle to follow it. Above it the play buttons and the clock, below it the "
+        "drag two fingers to slide it, click or tap a particle to follow it. Above it the "
+        "play buttons and the clock, below it the "
         "*read-outs* (hover one for its equation) and the timeline. Beside it (on a phone, in "
         "the tabs below) the *Controls* (the scenario, the masses, the container, the method) "
         "and live *Plots* with the *Instruments*: a stopwatch and a period meter.");

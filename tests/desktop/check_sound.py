@@ -65,9 +65,11 @@ def main():
         return 0
 
     ok = True
-    # Every click played reaches the output, but the last few queued may be cut off at exit.
-    if not (0.9 * played - 3 <= len(heard) <= played):
-        print(f'{len(heard)} clicks heard of the {played} played')
+    # Every click played reaches the output, but closing the device at exit drops what is still
+    # queued: at most 0.15 s (the app's limit) and the last frame, at most 60 clicks a second.
+    lost_at_exit = 25
+    if not (played - lost_at_exit <= len(heard) <= played):
+        print(f'{len(heard)} clicks heard of the {played} played (at most {lost_at_exit} may be cut off at exit)')
         ok = False
     # Each is the click's shape: its first crest and its tone (zero crossings over 1.5 ms).
     bad = []
@@ -81,15 +83,15 @@ def main():
     if bad:
         print(f'{len(bad)} clicks not of the click shape, e.g. ' + '; '.join(bad[:3]))
         ok = False
-    # The rate heard follows the wall's hit rate by the thinning rule, never above 60 a second.
-    # The rule smooths the hit rate over half a second, from zero when sound starts, and keeps
-    # every hit while the smoothed rate is low: the first half second may click at up to the
-    # cap, 30 clicks more than the steady rule.
+    # The rate heard follows the wall's hit rate by the thinning rule. The rule smooths the hit
+    # rate over half a second, from zero when sound starts, and keeps every hit while the
+    # smoothed rate is low: about the first second may click at up to the cap (60 a second,
+    # at least one a frame), so up to 60 clicks more than the steady rule.
     expected = click_rate(hits / seconds) * seconds
     made = played + dropped
-    if not (0.6 * expected <= made <= min(expected + 30, 60 * seconds + 1)):
+    if not (0.6 * expected <= made <= expected + 60):
         print(f'{made} clicks for {hits} hits in {seconds:.2f} s; the thinning rule gives about {expected:.0f} '
-              f'(+30 at the start), at most {60 * seconds:.0f}')
+              f'(+60 at the start)')
         ok = False
     if ok:
         print(f'ok: {len(heard)} clicks of the click shape for {hits} wall hits '

@@ -45,7 +45,7 @@ TEST_CASE("camera: a pan moves the scene with the fingers, and survives a moving
   const ScreenPoint followed = seen(camera, view, moved);
   CHECK(followed.x == doctest::Approx(after.x).epsilon(1e-3));
   CHECK(followed.y == doctest::Approx(after.y).epsilon(1e-3));
-  // Reframing brings the target back to the middle.
+  // Forgetting the slide (as a reframe does) brings the target back to the middle.
   camera.reset_pan();
   const ScreenPoint reset = seen(camera, view, moved);
   CHECK(reset.x == doctest::Approx(500).epsilon(1e-4));
