@@ -54,6 +54,11 @@ Palette dark_palette() {
   p.axis_x = rgb(240, 90, 90);
   p.axis_y = rgb(110, 220, 110);
   p.axis_z = rgb(110, 160, 255);
+  p.wall_hot = rgb(255, 90, 60, 180);
+  p.wall_neutral = rgb(235, 235, 240, 180);
+  p.wall_cold = rgb(110, 170, 255, 180);
+  p.floor_grid = rgb(200, 180, 130, 170);
+  p.gravity_arrow = rgb(120, 230, 140, 230);
   p.plot_background = rgb(22, 26, 34);
   p.plot_grid = rgb(255, 255, 255, 28);
   p.plot_axis = rgb(200, 205, 215, 200);
@@ -70,6 +75,10 @@ Palette dark_palette() {
   p.total_energy = rgb(240, 240, 240);
   p.fit = rgb(255, 255, 255, 200);
   p.energy_drift = rgb(230, 120, 255);
+  p.particle_track = rgb(120, 230, 140);
+  p.particle_start = rgb(255, 90, 90);
+  p.starting_value = rgb(255, 255, 255, 110);
+  p.residual = rgb(255, 255, 255, 220);
   p.timeline_track = rgb(98, 103, 116);
   p.timeline_reached = rgb(150, 210, 255);
   p.timeline_stage = rgb(230, 190, 90);
@@ -123,6 +132,11 @@ Palette light_palette() {
   p.axis_x = rgb(190, 30, 30);
   p.axis_y = rgb(20, 120, 20);
   p.axis_z = rgb(30, 70, 200);
+  p.wall_hot = rgb(190, 30, 20, 200);
+  p.wall_neutral = rgb(60, 60, 70, 200);
+  p.wall_cold = rgb(20, 60, 190, 200);
+  p.floor_grid = rgb(100, 80, 40, 190);
+  p.gravity_arrow = rgb(20, 120, 40);
   p.plot_background = rgb(255, 255, 255);
   p.plot_grid = rgb(0, 0, 0, 36);
   p.plot_axis = rgb(60, 62, 70);
@@ -138,6 +152,10 @@ Palette light_palette() {
   p.total_energy = rgb(25, 25, 30);
   p.fit = rgb(0, 0, 0, 200);
   p.energy_drift = rgb(140, 40, 180);
+  p.particle_track = rgb(20, 120, 50);
+  p.particle_start = rgb(190, 30, 30);
+  p.starting_value = rgb(0, 0, 0, 120);
+  p.residual = rgb(0, 0, 0, 220);
   p.timeline_track = rgb(135, 135, 142);
   p.timeline_reached = rgb(15, 45, 115);
   p.timeline_stage = rgb(150, 100, 0);

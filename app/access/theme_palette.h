@@ -25,10 +25,16 @@ struct Palette {
   // The 3D view.
   Colour view_background, view_text, legend_background, container, trail, selected, orbit_ahead,
       centre_of_mass, spring_attractive, spring_repulsive, ghost, axis_x, axis_y, axis_z;
+  // Appendix B in the view: a hot wall's glass (hotter than the gas, as warm, colder), the
+  // floor's grid and the arrow of gravity.
+  Colour wall_hot, wall_neutral, wall_cold, floor_grid, gravity_arrow;
   // Plots.
   Colour plot_background, plot_grid, plot_axis, plot_text, plot_dim_text, crosshair;
   Colour pressure, pressure_each_sample, temperature, temperature_each_sample;
   Colour kinetic, potential, total_energy, fit, energy_drift;
+  // The selected particle's x(t) plot: its curve, its start and its starting value; the
+  // residuals of a power-law fit.
+  Colour particle_track, particle_start, starting_value, residual;
   // The timeline under the view: the bar, the part computed so far, stage starts, the present
   // and where a seek or fast-forward goes.
   Colour timeline_track, timeline_reached, timeline_stage, timeline_present, timeline_target;

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include "plot_widget.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 
@@ -19,7 +20,8 @@ void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm:
   r.x = {"", log_x, std::nullopt, std::nullopt};
   r.y = {"ln y \u2212 fit", false, std::nullopt, std::nullopt};
   r.y_from_zero = true;  // the zero line is in view: a wave or a trend about it shows
-  r.series = {{"residual", &used_x, &fit.residuals, IM_COL32(255, 255, 255, 220), true, 2.0f}};
+  r.series = {{"residual", &used_x, &fit.residuals, current_palette().residual.packed(), true,
+               2.0f}};
   draw_plot(id, r, height);
 
   ImGui::Text("R\u00b2 = %.4f   Durbin-Watson = %.2f   (%zu stages)", fit.r_squared,
@@ -30,7 +32,7 @@ void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm:
         "when the residuals scatter at random, near 0 when neighbours share their sign (a wave "
         "or a trend the power law does not follow).");
   if (judged.poor()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.35f, 1.0f));
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
     ImGui::TextWrapped("%s",
                        judged.systematic
                            ? "The residuals wave or trend: a power law does not describe these "

@@ -115,7 +115,7 @@ void draw_energy_tab(AppState& state, float plot_height) {
   series.update(*state.run, state.plots.average_window);
   // Timing the energy plot's swings gives half the period, a trap worth naming.
   if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
-    ImGui::TextColored(ImVec4(1.0f, 0.82f, 0.4f, 1.0f),
+    ImGui::TextColored(colour_vec4(colours().text_warning),
                        "KE and PE swing at 2ω: one swing is half a period.");
   const std::vector<double>& t_all = series.t_all;
   PlotSpec e;

@@ -10,6 +10,7 @@
 #include "panels.h"
 #include "swarm/regime.h"
 #include "swarm/system.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 namespace {
@@ -93,7 +94,7 @@ void draw_table(AppState& state, ParticleList& list) {
       ImGui::TableNextRow();
       // The selected particle's row stands out, as its card does among the instruments.
       if (state.selected == i)
-        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(200, 150, 40, 150));
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().header_active.packed());
       ImGui::TableNextColumn();
       if (ImGui::SmallButton("x")) remove = i;
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove particle %zu", i + 1);

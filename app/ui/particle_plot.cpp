@@ -5,6 +5,7 @@
 
 #include "panels.h"
 #include "plot_widget.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 
@@ -26,9 +27,11 @@ void draw_particle_tab(AppState& state, float plot_height) {
   p.title = "Particle " + std::to_string(track->particle + 1) + ": x(t) \u2212 X_cm(t)";
   p.x = {"t (time)", false, std::nullopt, std::nullopt};
   p.y = {"x about the CM (length)", false, std::nullopt, std::nullopt};
-  p.series = {{"starting value", &level_t, &level_x, IM_COL32(255, 255, 255, 110), false, 1.0f},
-              {"x(t)", &track->t, &track->x, IM_COL32(120, 230, 140, 255), false, 2.0f},
-              {"start", &start_t, &start_x, IM_COL32(255, 90, 90, 255), true, 2.0f}};
+  const Palette& colours = current_palette();
+  p.series = {
+      {"starting value", &level_t, &level_x, colours.starting_value.packed(), false, 1.0f},
+      {"x(t)", &track->t, &track->x, colours.particle_track.packed(), false, 2.0f},
+      {"start", &start_t, &start_x, colours.particle_start.packed(), true, 2.0f}};
   draw_plot("particle_x", p, plot_height);
   ImGui::TextWrapped(
       "Each time x(t) crosses its starting value in the same direction, one period has passed. "

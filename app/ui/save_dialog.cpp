@@ -8,6 +8,7 @@
 
 #include "app_state.h"
 #include "report/run_csv.h"
+#include "theme_style.h"
 
 namespace swarmlab {
 namespace {
@@ -152,7 +153,7 @@ void draw_save_dialogs(AppState& state) {
       const std::string location = (std::filesystem::path(d.folder) / d.file_name).string();
       ImGui::TextDisabled("%s", location.c_str());
       if (!d.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.4f, 1));
+        ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
         ImGui::TextWrapped("%s", d.error.c_str());
         ImGui::PopStyleColor();
       }

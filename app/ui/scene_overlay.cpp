@@ -57,10 +57,14 @@ ImU32 with_alpha(ImU32 colour, float alpha) {
 /// two agree; the ratio Tw / T sets how far (fully saturated at a factor of 4).
 ImU32 wall_temperature_colour(double Tw, double T_gas) {
   const double x = T_gas > 0 ? std::clamp(std::log(Tw / T_gas) / std::log(4.0), -1.0, 1.0) : 1.0;
-  const auto mix = [x](int neutral, int hot, int cold) {
-    return int(neutral + (x > 0 ? x * (hot - neutral) : -x * (cold - neutral)));
+  const Palette& p = current_palette();
+  const Colour& end = x > 0 ? p.wall_hot : p.wall_cold;
+  const auto mix = [&](std::uint8_t neutral, std::uint8_t far) {
+    return std::uint8_t(std::lround(neutral + std::abs(x) * (double(far) - neutral)));
   };
-  return IM_COL32(mix(235, 255, 70), mix(235, 70, 140), mix(235, 40, 255), 0);
+  return Colour{mix(p.wall_neutral.r, end.r), mix(p.wall_neutral.g, end.g),
+                mix(p.wall_neutral.b, end.b), mix(p.wall_neutral.a, end.a)}
+      .packed();
 }
 
 /// Latitude and longitude circles; the far half fainter than the near half, plus the outline,
@@ -70,8 +74,7 @@ ImU32 wall_temperature_colour(double Tw, double T_gas) {
 void draw_container(const Painter& paint, double radius, std::optional<ImU32> tint = {}) {
   const float R = float(radius);
   const Vec3f eye = paint.camera.eye();
-  const ImU32 near_colour = tint ? with_alpha(*tint | IM_COL32_A_MASK, 0.43f)
-                                 : current_palette().container.packed();
+  const ImU32 near_colour = tint ? *tint : current_palette().container.packed();
   const ImU32 far_colour = with_alpha(near_colour, 0.36f);
   constexpr int kSegments = 72;
   auto circle_segments = [&](auto point_at) {
@@ -207,7 +210,7 @@ void draw_legend(AppState& state, ImDrawList* draw) {
 void draw_floor(const Painter& paint, double h, const swarm::Vec3& cm, float extent) {
   const float z = float(h), x0 = float(cm.x()), y0 = float(cm.y());
   constexpr int kLines = 8;
-  const ImU32 colour = IM_COL32(170, 150, 110, 120);
+  const ImU32 colour = current_palette().floor_grid.packed();
   for (int k = -kLines; k <= kLines; ++k) {
     const float o = extent * float(k) / kLines;
     paint.line(Vec3f(x0 - extent, y0 + o, z), Vec3f(x0 + extent, y0 + o, z), colour, 1.0f);
@@ -223,7 +226,7 @@ void draw_gravity_arrow(const Painter& paint, const swarm::Vec3& g, const swarm:
   const Vec3f side = dir.cross(std::abs(dir.z()) < 0.9f ? Vec3f::UnitZ() : Vec3f::UnitX()).normalized();
   const Vec3f start = cm.cast<float>() + side * (0.8f * extent) - dir * (0.15f * extent);
   const Vec3f end = start + dir * (0.35f * extent);
-  const ImU32 colour = IM_COL32(120, 230, 140, 230);
+  const ImU32 colour = current_palette().gravity_arrow.packed();
   paint.line(start, end, colour, 2.5f);
   const ScreenPoint a = paint.project(start), b = paint.project(end);
   if (!a.visible || !b.visible) return;

@@ -92,7 +92,12 @@ void check_theme(Theme theme) {
              {"ghost", p.ghost},
              {"x axis", p.axis_x},
              {"y axis", p.axis_y},
-             {"z axis", p.axis_z}},
+             {"z axis", p.axis_z},
+             {"hot wall", p.wall_hot},
+             {"wall as warm as the gas", p.wall_neutral},
+             {"cold wall", p.wall_cold},
+             {"floor", p.floor_grid},
+             {"gravity", p.gravity_arrow}},
             {{"view", p.view_background}}, kGraphics);
 
   // Plots: labels are text, every series and fit line a graphic; the legend box is the plot
@@ -104,7 +109,9 @@ void check_theme(Theme theme) {
       {"temperature", p.temperature},   {"temperature, each sample", p.temperature_each_sample},
       {"kinetic energy", p.kinetic},    {"potential energy", p.potential},
       {"total energy", p.total_energy}, {"power-law fit", p.fit},
-      {"energy drift", p.energy_drift}};
+      {"energy drift", p.energy_drift}, {"x(t)", p.particle_track},
+      {"x(t) start", p.particle_start}, {"starting value", p.starting_value},
+      {"residuals", p.residual}};
   check_all(name, series, {{"plot", p.plot_background}}, kGraphics);
   check_all(name, {{"axis", p.plot_axis}, {"cross-hair", p.crosshair}},
             {{"plot", p.plot_background}}, kGraphics);
