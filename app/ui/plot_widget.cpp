@@ -200,11 +200,14 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   for (const PlotSeries& s : spec.series) {
     const std::size_t n = std::min(s.x->size(), s.y->size());
     line.clear();
-    float column = -1e9f, column_lo = 0, column_hi = 0;
+    float column = -1e9f, column_lo = 0, column_hi = 0, column_first = 0, column_last = 0;
+    // The column's extremes in the order the curve meets them on its way through, so that a
+    // steep stretch is drawn as one stroke, not a zigzag of up-down pairs.
     auto flush = [&] {
       if (column < -1e8f) return;
-      line.push_back(ImVec2(column, column_lo));
-      if (column_hi != column_lo) line.push_back(ImVec2(column, column_hi));
+      const bool downward = column_last >= column_first;  // pixels grow downward
+      line.push_back(ImVec2(column, downward ? column_lo : column_hi));
+      if (column_hi != column_lo) line.push_back(ImVec2(column, downward ? column_hi : column_lo));
     };
     auto end_line = [&] {
       flush();
@@ -232,11 +235,12 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       if (std::floor(px) != column) {
         flush();
         column = std::floor(px);
-        column_lo = column_hi = py;
+        column_lo = column_hi = column_first = py;
       } else {
         column_lo = std::min(column_lo, py);
         column_hi = std::max(column_hi, py);
       }
+      column_last = py;
     }
     end_line();
   }
