@@ -74,6 +74,13 @@ std::optional<double> window_start(const AppState& state, double now) {
 }
 
 void draw_wall_tab(AppState& state, float plot_height) {
+  if (!state.preset.container_radius) {
+    // Without a wall there is nothing to measure: no plots of zeros and blanks.
+    ImGui::TextWrapped(
+        "No container: pressure and temperature are measured where the particles hit the "
+        "wall. Switch one on under Container (in the Controls) to measure them.");
+    return;
+  }
   const float width = 0.42f * ImGui::GetContentRegionAvail().x;
   ImGui::SetNextItemWidth(width);
   ImGui::InputDouble("average over", &state.plots.average_window, 0, 0, "%.4g");
@@ -87,9 +94,7 @@ void draw_wall_tab(AppState& state, float plot_height) {
   help_marker("Scroll: show only this much of the most recent time (0: the whole run).");
 
   series.update(*state.run, state.plots.average_window);
-  const std::string empty = state.preset.container_radius
-                                ? "waiting for the first samples"
-                                : "no container: switch one on to measure P and T";
+  const std::string empty = "waiting for the first samples";
   PlotSpec p;
   p.title = "Wall pressure";
   p.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
@@ -159,6 +164,10 @@ void draw_expansion_tab(AppState& state, float plot_height) {
   }
   const swarm::StageFits fits = state.run->primary().fits();
   const bool log = state.plots.log_log;
+  char first_stage[96] = "the first stage ends with Expand now (E)";
+  if (state.preset.expansion)
+    std::snprintf(first_stage, sizeof first_stage, "the first stage ends at t = tau = %.4g",
+                  state.preset.expansion->tau);
   auto plot = [&](const char* id, const char* title, const char* x_label,
                   const std::vector<double>& x, const char* y_label, const std::vector<double>& y,
                   const swarm::PowerLawFit& fit, const char* law, ImU32 colour) {
@@ -167,7 +176,7 @@ void draw_expansion_tab(AppState& state, float plot_height) {
     s.x = {x_label, log, std::nullopt, std::nullopt};
     s.y = {y_label, log, std::nullopt, std::nullopt};
     s.y_from_zero = !log;
-    s.empty_message = "the first stage ends at t = tau";
+    s.empty_message = first_stage;
     s.series = {{"stages", &x, &y, colour, true, 2.0f}};
     if (fit.valid) {
       char label[96];

@@ -190,9 +190,13 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
 
   draw->PushClipRect(ImVec2(left, top - 1), ImVec2(right + 1, bottom + 1), true);
   if (!has_data) {
-    const ImVec2 size = ImGui::CalcTextSize(spec.empty_message.c_str());
-    draw->AddText(ImVec2(0.5f * (left + right - size.x), 0.5f * (top + bottom - size.y)), kDimText,
-                  spec.empty_message.c_str());
+    // Wrapped to the frame: a phone's narrow plot must not cut the sentence off.
+    const float wrap = std::max(right - left - font, 4 * font);
+    const char* text = spec.empty_message.c_str();
+    const ImVec2 size = ImGui::CalcTextSize(text, nullptr, false, wrap);
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+                  ImVec2(0.5f * (left + right - size.x), 0.5f * (top + bottom - size.y)), kDimText,
+                  text, nullptr, wrap);
   }
   // Series: lines thinned to at most two points per pixel column (min and max), so that
   // thousands of samples cost no more than the plot is wide.
