@@ -29,6 +29,7 @@ Palette dark_palette() {
   p.tab = rgb(35, 52, 80);
   p.tab_hovered = rgb(55, 95, 150);
   p.tab_active = rgb(48, 82, 130);
+  p.selected_row = rgb(120, 85, 20);  // amber, as the selected particle's mark in the view
   p.text = rgb(240, 242, 245);
   p.text_disabled = rgb(190, 192, 200);
   p.text_error = rgb(255, 120, 110);
@@ -107,6 +108,7 @@ Palette light_palette() {
   p.tab = rgb(214, 222, 238);
   p.tab_hovered = rgb(176, 198, 238);
   p.tab_active = rgb(160, 186, 232);
+  p.selected_row = rgb(250, 215, 140);
   p.text = rgb(12, 12, 16);
   p.text_disabled = rgb(70, 72, 80);
   p.text_error = rgb(170, 20, 20);

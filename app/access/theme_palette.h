@@ -19,6 +19,7 @@ struct Palette {
   Colour button, button_hovered, button_active;
   Colour header, header_hovered, header_active;  ///< collapsing headers, selected list rows
   Colour tab, tab_hovered, tab_active;
+  Colour selected_row;  ///< the selected particle's row in the particle table
   Colour text, text_disabled, text_error, text_warning, text_ok, text_key;
   // Marks on the panels that must be seen (3:1 against what they sit on).
   Colour slider_grab, check_mark, nav_highlight, border, scrollbar_grab;

@@ -94,7 +94,7 @@ void draw_table(AppState& state, ParticleList& list) {
       ImGui::TableNextRow();
       // The selected particle's row stands out, as its card does among the instruments.
       if (state.selected == i)
-        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().header_active.packed());
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().selected_row.packed());
       ImGui::TableNextColumn();
       if (ImGui::SmallButton("x")) remove = i;
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove particle %zu", i + 1);

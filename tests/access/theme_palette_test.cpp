@@ -47,7 +47,8 @@ void check_theme(Theme theme) {
                                                 {"active header", on_window(p.header_active)},
                                                 {"tab", on_window(p.tab)},
                                                 {"hovered tab", on_window(p.tab_hovered)},
-                                                {"active tab", on_window(p.tab_active)}};
+                                                {"active tab", on_window(p.tab_active)},
+                                                {"selected table row", p.selected_row}};
   // Every panel text on every panel background.
   check_all(name, {{"text", p.text}}, panel_backgrounds, kText);
   // The dimmed text (units, hints, the title, menu shortcuts) where ImGui draws it: on the

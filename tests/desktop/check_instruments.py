@@ -11,12 +11,12 @@ from check_screenshot import count, read_png
 
 
 def x_curve(r, g, b):
-    """The x(t) line, IM_COL32(120, 230, 140)."""
+    """The x(t) line: the dark theme's particle_track (120, 230, 140)."""
     return abs(r - 120) <= 40 and abs(g - 230) <= 30 and abs(b - 140) <= 40
 
 
 def amber(r, g, b):
-    """The highlighted row: IM_COL32(200, 150, 40) at alpha 150 over the table."""
+    """The highlighted row: the dark theme's selected_row (120, 85, 20), app/access/theme_palette.cpp."""
     return r >= 110 and r - b >= 60 and 0.6 * r <= g <= 0.95 * r
 
 
