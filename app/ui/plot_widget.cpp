@@ -126,7 +126,14 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       x += w;
     }
   }
-  const float legend_top = origin.y + 1.3f * font;
+  // The y axis's label goes beside the title, or on a line of its own below it when the two
+  // (with room for a scale like "x 10^-14") do not fit side by side.
+  const float title_width = ImGui::CalcTextSize(spec.title.c_str()).x;
+  const std::string y_label_base = spec.y.label + (spec.y.log ? "  [log]" : "");
+  const bool y_label_below = title_width + 1.5f * font + ImGui::CalcTextSize(y_label_base.c_str()).x +
+                                 5.0f * font >
+                             width - 0.5f * font;
+  const float legend_top = origin.y + (y_label_below ? 2.5f : 1.3f) * font;
   const float left = origin.x + 4.2f * font, right = origin.x + width - 0.6f * font;
   const float top = legend_top + 1.2f * font * float(legend_rows) + 0.4f * font;
   const float bottom = origin.y + height - 2.4f * font;
@@ -183,10 +190,10 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   draw->AddText(ImVec2(0.5f * (left + right) - 0.5f * x_label_width, bottom + 1.25f * font), kText,
                 x_label.c_str());
   const std::string y_label = axis_label(spec.y, yt.scale_suffix);
-  const float title_width = ImGui::CalcTextSize(spec.title.c_str()).x;
-  draw->AddText(
-      ImVec2(std::max(left, origin.x + title_width + 1.5f * font), origin.y + 0.2f * font),
-      kDimText, y_label.c_str());
+  draw->AddText(y_label_below ? ImVec2(origin.x + 0.5f * font, origin.y + 1.4f * font)
+                              : ImVec2(std::max(left, origin.x + title_width + 1.5f * font),
+                                       origin.y + 0.2f * font),
+                kDimText, y_label.c_str());
 
   draw->PushClipRect(ImVec2(left, top - 1), ImVec2(right + 1, bottom + 1), true);
   if (!has_data) {

@@ -77,7 +77,7 @@ void wall_rows(const swarm::WallEstimate& w) {
   row("T", value,
       (std::string("T = half the mean kinetic energy of the particles hitting the wall "
                    "(k_B = 1)") + window).c_str());
-  std::snprintf(value, sizeof value, "last %.4g of time, %d parts", w.window, w.blocks);
+  std::snprintf(value, sizeof value, "last %.4g, %d parts", w.window, w.blocks);
   row("P, T over", value,
       "The averaging window of P and T: the plots' 'average over' (Wall P, T tab), or the "
       "whole run when it is 0. \u00b1 is the standard error of the means of its parts (batch "
