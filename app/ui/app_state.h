@@ -43,6 +43,8 @@ struct PlotOptions {
   double scroll_window = 0;   ///< show the last stretch of this length; 0: the whole run
   bool log_log = true;        ///< P-V, T-V, P-T on log-log axes
   int tab = -1;               ///< tab to select on the next frame, -1: leave as is
+  int shown_tab = -1;         ///< the tab open in the last frame
+  unsigned tab_window = 0;    ///< an ImGui id of the window that drew the tabs last frame
 };
 
 struct Layout {

@@ -249,10 +249,17 @@ void draw_plots_panel(AppState& state) {
   // The indices are fixed: --select, --plot-tab and the lessons open tabs by number.
   const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare", "Particle", "Projects"};
   // Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
+  // Another window draws the tabs after a change of layout or presentation mode: its new tab
+  // bar opens on the tab that was open, not on the first.
+  const unsigned window = ImGui::GetID("##plot-tabs");  // differs with the window drawing it
+  if (window != state.plots.tab_window && state.plots.tab < 0)
+    state.plots.tab = state.plots.shown_tab;
+  state.plots.tab_window = window;
   if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
   for (int i = 0; i < 6; ++i) {
     const ImGuiTabItemFlags flags = state.plots.tab == i ? ImGuiTabItemFlags_SetSelected : 0;
     if (!ImGui::BeginTabItem(tabs[i], nullptr, flags)) continue;
+    state.plots.shown_tab = i;
     const float options = i == 0 ? 2.6f : i == 2 ? 1.4f : i == 1 ? 1.0f : i == 4 ? 3.0f : 0.0f;
     const float available =
         ImGui::GetContentRegionAvail().y - options * ImGui::GetFrameHeightWithSpacing();
