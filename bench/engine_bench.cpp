@@ -10,12 +10,12 @@
 #include <cstdio>
 #include <memory>
 
-#include "fast_engine_window.h"
+#include "engine/fast_engine_window.h"
 #include "scenarios/process_memory.h"
 #include "scenarios/workloads.h"
-#include "swarm/engine.h"
-#include "swarm/fast_engine.h"
-#include "swarm/integrators.h"
+#include "swarm/engine/engine.h"
+#include "swarm/engine/fast_engine.h"
+#include "swarm/methods/integrators.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <benchmark/benchmark.h>
 
 #include "scenarios/workloads.h"
-#include "swarm/engine.h"
-#include "swarm/preset.h"
+#include "swarm/engine/engine.h"
+#include "swarm/preset/preset.h"
 
 namespace {
 

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <memory>
 
-#include "swarm/engine.h"
-#include "swarm/fast_engine.h"
-#include "swarm/initial_conditions.h"
+#include "swarm/engine/engine.h"
+#include "swarm/engine/fast_engine.h"
+#include "swarm/preset/initial_conditions.h"
 
 namespace {
 

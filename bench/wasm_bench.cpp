@@ -12,12 +12,12 @@
 #include <string>
 
 #include "scenarios/workloads.h"
-#include "swarm/engine.h"
-#include "swarm/fast_engine.h"
-#include "swarm/integrators.h"
-#include "swarm/preset.h"
-#include "swarm/run.h"
-#include "swarm/strict_json.h"
+#include "swarm/engine/engine.h"
+#include "swarm/engine/fast_engine.h"
+#include "swarm/methods/integrators.h"
+#include "swarm/preset/preset.h"
+#include "swarm/run/run.h"
+#include "swarm/preset/strict_json.h"
 
 namespace {
 

@@ -20,8 +20,8 @@ command -v ccache >/dev/null && launcher=(ccache)
 # The core's sources compile once each, on every core; only changed files are rebuilt.
 objects=()
 jobs=$(nproc 2>/dev/null || echo 2)
-for src in core/src/*.cpp tests/fuzz/preset_fuzz.cpp; do
-  obj="$out/obj/$(basename "${src%.cpp}").o"
+for src in core/src/*/*.cpp tests/fuzz/preset_fuzz.cpp; do
+  obj="$out/obj/$(tr / _ <<<"${src%.cpp}").o"
   if [ ! -f "$obj" ] || [ "$src" -nt "$obj" ] || [ -n "$(find core/include core/src -newer "$obj" -name '*.h' -print -quit)" ]; then
     while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
     "${launcher[@]}" clang++ "${flags[@]}" -c "$src" -o "$obj" &

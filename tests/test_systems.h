@@ -12,11 +12,11 @@
 #include <utility>
 #include <vector>
 
-#include "swarm/diagnostics.h"
-#include "swarm/engine.h"
-#include "swarm/initial_conditions.h"
-#include "swarm/preset.h"
-#include "swarm/system.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/engine/engine.h"
+#include "swarm/preset/initial_conditions.h"
+#include "swarm/preset/preset.h"
+#include "swarm/physics/system.h"
 
 namespace swarm::testing {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "storage_controls.h"
-#include "ui/save_dialog.h"
+#include "ui/platform/save_dialog.h"
 #include "web_app.h"
 #include "web_preset_store.h"
 
@@ -102,7 +102,7 @@ EMSCRIPTEN_KEEPALIVE double swarmlab_select(double index) {
   swarmlab::App* app = swarmlab::web_app();
   if (!app) return 0;
   const auto chosen = index < 0 ? std::nullopt : std::optional<std::size_t>(std::size_t(index));
-  if (swarmlab::select_particle(app->state(), chosen)) return -1;
+  if (app->state().select_particle(chosen)) return -1;
   return double(app->state().run->system().particles.size());
 }
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "ui/lessons/lesson_scene.h"
 #include "web_app.h"
 
 namespace {
@@ -32,7 +33,7 @@ json lesson_state(swarmlab::AppState& app) {
       task["particle"] = t.particle ? json(*t.particle) : json(nullptr);
       if (t.window > 0) task["window"] = t.window;
       // What the app's instruments read for the quantity now (the read-outs, the wall plot).
-      task["reading"] = number_or_null(lessons.reading(app));
+      task["reading"] = number_or_null(lessons.reading(*app.run));
     } else {
       task["options"] = t.options;
     }
@@ -73,7 +74,7 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson(const char* text, int is_j
   swarmlab::App* app = swarmlab::web_app();
   if (!app) return "the app has not started";
   swarmlab::AppState& s = app->state();
-  std::string error = is_json ? s.lessons.open_json(s, text) : s.lessons.open_id(s, text);
+  std::string error = is_json ? swarmlab::open_lesson_json(s, text) : swarmlab::open_lesson_id(s, text);
   if (!error.empty()) {
     error = std::string(source) + ": " + error;
     s.lessons.error = error;
@@ -108,8 +109,8 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_answer(double value) {
     swarmlab::AppState& s = app->state();
     const swarmlab::Marking m =
         step->task->kind == swarmlab::LessonTask::Kind::measure
-            ? s.lessons.answer_number(s, value)
-            : s.lessons.answer_option(
+            ? s.lessons.answer_number(*s.run, value)
+            : swarmlab::answer_lesson_option(
                   s, value >= 0 && std::isfinite(value) ? std::size_t(value) : std::size_t(-1));
     out = {{"correct", m.correct ? json(*m.correct) : json(nullptr)}, {"feedback", m.feedback}};
   }
@@ -122,9 +123,9 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_move(int direction) {
   if (swarmlab::App* app = swarmlab::web_app()) {
     swarmlab::AppState& s = app->state();
     if (direction > 0)
-      s.lessons.next(s);
+      swarmlab::show_lesson_scene(s, s.lessons.next());
     else
-      s.lessons.back(s);
+      swarmlab::show_lesson_scene(s, s.lessons.back());
   }
   return swarmlab_lesson_state();
 }

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "ui/presentation.h"
+#include "ui/classroom/presentation.h"
 #include "web_app.h"
 
 namespace {
@@ -53,7 +53,7 @@ const Key kKeys[] = {
        else s.selected = v.get<std::size_t>();
        s.update_followed();
      }},
-    // The projector and the classroom (app/ui/presentation.h). Presentation comes after the
+    // The projector and the classroom (app/ui/classroom/presentation.h). Presentation comes after the
     // theme, so {presentation: true, theme: "dark"} is presentation mode, light.
     {"theme", "must be \"dark\" or \"light\"",
      [](const AppState&, const json& v) { return v == "dark" || v == "light"; },

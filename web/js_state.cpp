@@ -59,7 +59,7 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["stopwatch"] = {{"running", in.stopwatch.running()}, {"elapsed", in.stopwatch.elapsed()}};
   const auto period = in.track ? in.track->meter.period() : std::nullopt;
   j["measured_period"] = period ? nlohmann::json(*period) : nlohmann::json(nullptr);
-  // The projector and the classroom (app/ui/presentation.h).
+  // The projector and the classroom (app/ui/classroom/presentation.h).
   j["theme"] = swarmlab::theme_name(s.presentation.theme);
   j["presentation"] = s.presentation.on;
   j["sound"] = s.presentation.sound;

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <string>
 
-#include "ui/time_travel.h"
+#include "ui/time/time_controls.h"
 #include "web_app.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <map>
 
-#include "ui/panels.h"
+#include "ui/panels/panels.h"
 #include "web_app.h"
 #include "web_preset_store.h"
 

@@ -12,11 +12,11 @@
 #include "files/preset_file.h"
 #include "scenarios/process_memory.h"
 #include "scenarios/workloads.h"
-#include "swarm/diagnostics.h"
-#include "swarm/engine.h"
-#include "swarm/fast_engine.h"
-#include "swarm/run.h"
-#include "swarm/side_by_side.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/engine/engine.h"
+#include "swarm/engine/fast_engine.h"
+#include "swarm/run/run.h"
+#include "swarm/run/side_by_side.h"
 
 namespace swarmlab {
 namespace {

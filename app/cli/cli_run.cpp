@@ -11,9 +11,9 @@
 #include "report/report.h"
 #include "report/run_csv.h"
 #include "result_json.h"
-#include "swarm/printable_text.h"
-#include "swarm/resource_budget.h"
-#include "swarm/side_by_side.h"
+#include "swarm/preset/printable_text.h"
+#include "swarm/preset/resource_budget.h"
+#include "swarm/run/side_by_side.h"
 
 namespace swarmlab {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "swarm/preset.h"
-#include "swarm/side_by_side.h"
+#include "swarm/preset/preset.h"
+#include "swarm/run/side_by_side.h"
 
 namespace swarmlab {
 

@@ -12,9 +12,10 @@
 #include "files/atomic_file.h"
 #include "screenshot.h"
 #include "ui/main_loop.h"
+#include "ui/lessons/lesson_scene.h"
 #include "lessons/lesson_file.h"
-#include "ui/preset_store.h"
-#include "ui/presentation.h"
+#include "ui/platform/preset_store.h"
+#include "ui/classroom/presentation.h"
 
 namespace swarmlab {
 namespace {
@@ -74,7 +75,7 @@ int run_desktop(const DesktopOptions& options) {
                                   : make_file_progress_store(),
                               shipped_preset_lookup(shipped_preset_directory()));
   if (!lesson_text.empty()) {
-    const std::string e = f.app->state().lessons.open_json(f.app->state(), lesson_text);
+    const std::string e = open_lesson_json(f.app->state(), lesson_text);
     if (!e.empty()) {
       std::fprintf(stderr, "error: %s: %s\n", options.preset_path.c_str(), e.c_str());
       f.app.reset();
@@ -92,7 +93,7 @@ int run_desktop(const DesktopOptions& options) {
   if (options.select > 0) {
     // Selected as by a click, with its x(t) plot open (the instruments' screenshot).
     const std::size_t n = f.app->state().run->system().particles.size();
-    if (!select_particle(f.app->state(), std::size_t(options.select - 1))) {
+    if (!f.app->state().select_particle(std::size_t(options.select - 1))) {
       std::fprintf(stderr, "error: --select: must be in [1, %zu] (the preset has %zu particles)\n",
                    n, n);
       f.app.reset();

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "swarm/preset.h"
+#include "swarm/preset/preset.h"
 
 namespace swarmlab {
 

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "swarm/regime.h"
+#include "swarm/physics/regime.h"
 
 namespace swarmlab::labels {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/preset.h"
+#include "swarm/preset/preset.h"
 
 namespace swarmlab::labels {
 

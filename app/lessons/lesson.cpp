@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "swarm/printable_text.h"
-#include "swarm/strict_json.h"
+#include "swarm/preset/printable_text.h"
+#include "swarm/preset/strict_json.h"
 
 namespace swarmlab {
 namespace {

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "swarm/preset.h"
+#include "swarm/preset/preset.h"
 
 namespace swarmlab {
 

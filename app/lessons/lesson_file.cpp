@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "files/preset_file.h"
-#include "swarm/printable_text.h"
+#include "swarm/preset/printable_text.h"
 
 namespace swarmlab {
 

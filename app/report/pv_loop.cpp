@@ -1,7 +1,7 @@
 #include "pv_loop.h"
 
-#include "swarm/thermometry.h"
-#include "swarm/wall.h"
+#include "swarm/measure/thermometry.h"
+#include "swarm/physics/wall.h"
 
 namespace swarmlab::report {
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "swarm/run.h"
+#include "swarm/run/run.h"
 
 namespace swarmlab::report {
 

@@ -7,8 +7,8 @@
 
 #include "plotting/decimate.h"
 #include "walls_figures.h"
-#include "swarm/analytic.h"
-#include "swarm/fit.h"
+#include "swarm/physics/analytic.h"
+#include "swarm/measure/fit.h"
 
 namespace swarmlab::report {
 namespace {

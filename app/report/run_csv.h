@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "swarm/run.h"
+#include "swarm/run/run.h"
 
 namespace swarmlab::report {
 

@@ -2,7 +2,7 @@
 // The workloads that the benchmarks, `swarmlab bench` and the tests share: the paper's
 // expansion presets scaled to N particles.
 
-#include "swarm/preset.h"
+#include "swarm/preset/preset.h"
 
 namespace swarmlab::scenarios {
 

@@ -1,4 +1,6 @@
-#include "app.h"
+#include "ui/app.h"
+#include "ui/platform/save_dialog.h"
+#include "ui/time/time_controls.h"
 
 #include <imgui.h>
 
@@ -8,14 +10,14 @@
 #include <limits>
 #include <utility>
 
-#include "lesson_panel.h"
-#include "panels.h"
-#include "plot_export.h"
-#include "presentation.h"
-#include "scene_overlay.h"
-#include "shortcuts.h"
-#include "timeline_strip.h"
-#include "swarm/system.h"
+#include "ui/lessons/lesson_panel.h"
+#include "ui/panels/panels.h"
+#include "ui/plots/plot_export.h"
+#include "ui/classroom/presentation.h"
+#include "ui/view/scene_overlay.h"
+#include "ui/input/shortcuts.h"
+#include "ui/time/timeline_strip.h"
+#include "swarm/physics/system.h"
 
 namespace swarmlab {
 namespace {
@@ -87,7 +89,8 @@ void App::update(double real_seconds) {
   ++stats.frames;
   handle_shortcuts(state_);
   advance_simulation(state_.fixed_frame_time ? kFixedFrameSeconds : real_seconds);
-  update_instruments(state_);
+  state_.instruments.update(*state_.run, state_.selected, state_.plots.average_window,
+                            state_.preset.container_radius.has_value());
   layout_windows();
   handle_view_input();
   update_camera();

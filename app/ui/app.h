@@ -8,9 +8,10 @@
 #include <utility>
 #include <vector>
 
-#include "app_state.h"
-#include "particle_renderer.h"
-#include "touch_gestures.h"
+#include "ui/app_state.h"
+#include "ui/platform/save_dialog.h"
+#include "ui/view/particle_renderer.h"
+#include "ui/input/touch_gestures.h"
 
 namespace swarmlab {
 

@@ -1,10 +1,10 @@
-#include "app_state.h"
+#include "ui/app_state.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "labels/system_labels.h"
-#include "swarm/regime.h"
+#include "swarm/physics/regime.h"
 
 namespace swarmlab {
 namespace {
@@ -124,6 +124,13 @@ void AppState::restart() {
   particle_radius = float(
       std::clamp(0.25 * scene_radius / std::cbrt(n), 0.003 * scene_radius, 0.06 * scene_radius));
   update_followed();
+}
+
+bool AppState::select_particle(std::optional<std::size_t> index) {
+  if (index && *index >= run->system().particles.size()) return false;
+  selected = index;
+  update_followed();
+  return true;
 }
 
 void AppState::update_followed() {

@@ -10,15 +10,15 @@
 #include <vector>
 
 #include "access/theme_palette.h"
-#include "camera.h"
-#include "colour_map.h"
-#include "instruments.h"
-#include "lesson_session.h"
-#include "live_run.h"
-#include "preset_store.h"
-#include "screen_layout.h"
-#include "time_travel.h"
-#include "save_dialog.h"
+#include "ui/view/camera.h"
+#include "ui/view/colour_map.h"
+#include "ui/time/instruments.h"
+#include "ui/lessons/lesson_session.h"
+#include "ui/time/live_run.h"
+#include "ui/platform/preset_store.h"
+#include "ui/classroom/screen_layout.h"
+#include "ui/time/time_travel.h"
+#include "ui/platform/save_request.h"
 
 namespace swarmlab {
 
@@ -149,7 +149,7 @@ struct AppState {
   ColourScale colour_scale;
   ViewOptions view;
   PlotOptions plots;
-  SaveDialog save_dialog;  ///< save, export and quit dialogs (save_dialog.h)
+  SaveDialog save_dialog;  ///< save, export and quit dialogs (save_request.h)
   Layout layout;
   Presentation presentation;
   FrameStats stats;
@@ -173,6 +173,9 @@ struct AppState {
   void restart();
   /// The trails to keep: the selected particle, and every particle of a small system.
   void update_followed();
+  /// Selects particle `index` of the running system (none: no selection), as a click on it
+  /// does. Returns false, changing nothing, when there is no such particle.
+  bool select_particle(std::optional<std::size_t> index);
 };
 
 }  // namespace swarmlab

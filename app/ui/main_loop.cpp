@@ -1,4 +1,4 @@
-#include "main_loop.h"
+#include "ui/main_loop.h"
 
 #include <backends/imgui_impl_opengl3.h>
 #include <backends/imgui_impl_sdl.h>
@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cfloat>
 
-#include "fonts.h"
-#include "gl_api.h"
-#include "plot_export.h"
+#include "ui/platform/fonts.h"
+#include "ui/platform/gl_api.h"
+#include "ui/plots/plot_export.h"
 
 namespace swarmlab {
 namespace {

@@ -5,9 +5,9 @@
 #include <chrono>
 #include <memory>
 
-#include "app.h"
-#include "classroom_outputs.h"
-#include "sdl_window.h"
+#include "ui/app.h"
+#include "ui/classroom/classroom_outputs.h"
+#include "ui/platform/sdl_window.h"
 
 namespace swarmlab {
 

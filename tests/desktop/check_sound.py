@@ -6,7 +6,7 @@
 
 AUDIO.raw is mono 32-bit float at 44.1 kHz (what the app asks SDL for). SUMMARY.txt is the app's
 --frames output with its line "swarmlab: sound: C clicks played, D dropped, for H wall hits in S s".
-A click is the Geiger counter's of app/ui/wall_sound_sdl.cpp: 0.5 sin(2 pi 2500 t) exp(-t / 1.2 ms).
+A click is the Geiger counter's of app/ui/platform/wall_sound_sdl.cpp: 0.5 sin(2 pi 2500 t) exp(-t / 1.2 ms).
 """
 import array
 import math

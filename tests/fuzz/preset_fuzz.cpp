@@ -12,9 +12,9 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "swarm/preset.h"
-#include "swarm/resource_budget.h"
-#include "swarm/side_by_side.h"
+#include "swarm/preset/preset.h"
+#include "swarm/preset/resource_budget.h"
+#include "swarm/run/side_by_side.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Runs presets with the native swarmlab and with the WebAssembly build under node and checks
 that both write the same result to the last bit: the core computes its elementary functions
-itself (core/src/portable_math.h), so no difference between glibc's and musl's libm reaches a
+itself (core/src/math/portable_math.h), so no difference between glibc's and musl's libm reaches a
 run. On a mismatch it reports the largest difference in the final state (per quantity,
 relative to its RMS size over the particles) and the wall-hit counts.
 

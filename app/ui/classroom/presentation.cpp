@@ -1,0 +1,66 @@
+#include "ui/classroom/presentation.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "ui/classroom/theme_style.h"
+
+namespace swarmlab {
+
+void set_presentation(AppState& state, bool on) {
+  Presentation& p = state.presentation;
+  Layout& layout = state.layout;
+  if (p.on == on) return;
+  p.on = on;
+  if (on) {
+    p.saved_controls = layout.controls;
+    p.saved_plots = layout.plots;
+    p.saved_ui_scale = layout.pending_ui_scale;
+    p.saved_theme = p.theme;
+    layout.controls = false;
+    layout.plots = true;
+    layout.pending_ui_scale = std::max(kPresentationUiScale, layout.pending_ui_scale);
+    p.theme = Theme::light;
+  } else {
+    layout.controls = p.saved_controls;
+    layout.plots = p.saved_plots;
+    layout.pending_ui_scale = p.saved_ui_scale;
+    p.theme = p.saved_theme;
+  }
+  layout.resize_panels = true;
+}
+
+void set_theme(AppState& state, Theme theme) { state.presentation.theme = theme; }
+
+void set_sound(AppState& state, bool on) {
+  state.presentation.sound = on;
+  if (!on) state.presentation.sound_status.clear();
+}
+
+void set_fullscreen(AppState& state, bool on) { state.presentation.fullscreen_wanted = on; }
+
+void draw_presentation_menu_items(AppState& state) {
+  Presentation& p = state.presentation;
+  ImGui::Separator();
+  if (ImGui::MenuItem("Presentation mode", "F5", p.on)) set_presentation(state, !p.on);
+  if (ImGui::MenuItem("Light theme", nullptr, p.theme == Theme::light))
+    set_theme(state, p.theme == Theme::light ? Theme::dark : Theme::light);
+  if (ImGui::MenuItem("Fullscreen", "F11", p.fullscreen_wanted))
+    set_fullscreen(state, !p.fullscreen_wanted);
+  if (ImGui::MenuItem("Sound: wall hits", "M", p.sound)) set_sound(state, !p.sound);
+}
+
+void draw_sound_toggle(AppState& state) {
+  Presentation& p = state.presentation;
+  bool on = p.sound;
+  if (ImGui::Checkbox("Sound", &on)) set_sound(state, on);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("M: a click at each wall hit, thinned to a rate you can hear");
+  if (!p.sound_status.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", p.sound_status.c_str());
+  }
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,21 @@
+#pragma once
+// The lesson panel (the open lesson's step, its task, feedback, back and next) and the
+// welcome window (what is on the screen, three things to try, the lessons).
+
+#include "ui/app_state.h"
+
+namespace swarmlab {
+
+/// The open lesson's step, its task, feedback, back and next, with the step's text in a box
+/// step_height tall: at the top of the Controls panel in the wide layout and as the drawer's
+/// first tab in the compact ones, so that it never covers the swarm. Nothing without a lesson.
+void draw_lesson(AppState& state, float step_height);
+/// The welcome window, on the first start and from Help. Its ImGui name is "Welcome".
+void draw_welcome_window(AppState& state);
+/// The Lessons menu of the menu bar: every shipped lesson, and the welcome.
+void draw_lessons_menu(AppState& state);
+/// Lesson text: paragraphs split by a blank line, *emphasis* in the accent colour, wrapped
+/// to the window.
+void draw_prose(const std::string& text);
+
+}  // namespace swarmlab

@@ -1,0 +1,68 @@
+#include "ui/lessons/lesson_scene.h"
+
+namespace swarmlab {
+namespace {
+
+std::size_t plot_tab(LessonPlot plot) {
+  switch (plot) {
+    case LessonPlot::wall: return 0;
+    case LessonPlot::energy: return 1;
+    case LessonPlot::expansion: return 2;
+    case LessonPlot::compare: return 3;
+  }
+  return 0;
+}
+
+SpringOverlay overlay_of(LessonOverlay overlay) {
+  switch (overlay) {
+    case LessonOverlay::none: return SpringOverlay::off;
+    case LessonOverlay::springs: return SpringOverlay::pairs;
+    case LessonOverlay::springs_to_cm: return SpringOverlay::to_cm;
+  }
+  return SpringOverlay::off;
+}
+
+}  // namespace
+
+void show_lesson_scene(AppState& app, const LessonScene& scene) {
+  if (scene.preset_step) {
+    app.open(*scene.preset_step->preset, scene.location);
+    app.shipped_id = scene.preset_step->preset_name;
+  }
+  if (!scene.step) return;
+  const LessonStep& s = *scene.step;
+  if (s.plot) app.plots.tab = int(plot_tab(*s.plot));
+  if (s.select && *s.select < app.run->system().particles.size()) {
+    app.selected = *s.select;
+    app.update_followed();
+  }
+  if (s.overlay) app.view.springs = overlay_of(*s.overlay);
+  if (scene.pause) app.playing = false;
+}
+
+void open_lesson(AppState& app, const Lesson& lesson) {
+  show_lesson_scene(app, app.lessons.open(lesson));
+}
+
+std::string open_lesson_json(AppState& app, const std::string& json) {
+  LessonScene scene;
+  std::string error = app.lessons.open_json(json, &scene);
+  if (error.empty()) show_lesson_scene(app, scene);
+  return error;
+}
+
+std::string open_lesson_id(AppState& app, const std::string& id) {
+  LessonScene scene;
+  std::string error = app.lessons.open_id(id, &scene);
+  if (error.empty()) show_lesson_scene(app, scene);
+  return error;
+}
+
+Marking answer_lesson_option(AppState& app, std::size_t option) {
+  bool play = false;
+  const Marking marking = app.lessons.answer_option(option, &play);
+  if (play) app.playing = true;
+  return marking;
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,25 @@
+#pragma once
+// A lesson step carried out on the app: the session (lesson_session.h) says what a step
+// shows, this opens its preset and sets its plot, selection and overlay.
+
+#include <cstddef>
+#include <string>
+
+#include "ui/app_state.h"
+
+namespace swarmlab {
+
+/// Moves the app to what a lesson step shows: opens the scene's preset when it changes, then
+/// sets the plot tab, the selection and the spring overlay, and pauses for a prediction.
+void show_lesson_scene(AppState& app, const LessonScene& scene);
+
+/// Opens a lesson (a shipped one, or JSON text, or an id) and moves the app to it. The
+/// text and id forms return "" or the message, the running lesson staying.
+void open_lesson(AppState& app, const Lesson& lesson);
+std::string open_lesson_json(AppState& app, const std::string& json);
+std::string open_lesson_id(AppState& app, const std::string& id);
+
+/// Marks a picked option; a prediction plays the run.
+Marking answer_lesson_option(AppState& app, std::size_t option);
+
+}  // namespace swarmlab

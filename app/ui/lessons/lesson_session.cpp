@@ -1,0 +1,262 @@
+#include "ui/lessons/lesson_session.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "files/atomic_file.h"
+#include "lessons/lesson_file.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/physics/regime.h"
+#include "swarm/measure/thermometry.h"
+
+namespace swarmlab {
+namespace {
+
+using json = nlohmann::json;
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+
+class MemoryProgressStore final : public ProgressStore {
+ public:
+  explicit MemoryProgressStore(std::string text) : text_(std::move(text)) {}
+  std::string load() override { return text_; }
+  void save(const std::string& json) override { text_ = json; }
+
+ private:
+  std::string text_;
+};
+
+class FileProgressStore final : public ProgressStore {
+ public:
+  FileProgressStore() {
+    const char* config = std::getenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    if (config && *config)
+      folder_ = std::string(config) + "/swarmlab";
+    else if (home && *home)
+      folder_ = std::string(home) + "/.config/swarmlab";
+  }
+  std::string load() override {
+    if (folder_.empty()) return {};
+    std::string error;
+    std::string text = read_text_file(folder_ + "/progress.json", error);
+    return error.empty() ? text : std::string();
+  }
+  void save(const std::string& json) override {
+    if (folder_.empty()) return;
+    std::error_code ignored;
+    std::filesystem::create_directories(folder_, ignored);
+    // Progress is a convenience: a read-only home folder must not stop a lesson.
+    const std::string error = write_file_atomically(folder_ + "/progress.json", json + "\n");
+    if (!error.empty()) std::fprintf(stderr, "swarmlab: lesson progress not saved: %s\n", error.c_str());
+  }
+
+ private:
+  std::string folder_;
+};
+
+/// The step whose preset sets the scene of step i (the last one at or before it).
+std::size_t scene_of(const Lesson& lesson, std::size_t i) {
+  while (i > 0 && !lesson.steps[i].preset) --i;
+  return i;
+}
+
+}  // namespace
+
+std::unique_ptr<ProgressStore> make_memory_progress_store(std::string initial) {
+  return std::make_unique<MemoryProgressStore>(std::move(initial));
+}
+
+std::unique_ptr<ProgressStore> make_file_progress_store() {
+  return std::make_unique<FileProgressStore>();
+}
+
+void LessonSession::load(const std::string& lesson_directory, std::unique_ptr<ProgressStore> store,
+                         const PresetLookup& lookup) {
+  lookup_ = lookup;
+  store_ = std::move(store);
+  std::string problems;
+  shipped_ = load_shipped_lessons(lesson_directory, lookup, problems);
+  if (!problems.empty()) std::fprintf(stderr, "%s", problems.c_str());
+  // Progress that cannot be read is started afresh rather than refused: it is the app's own.
+  progress_.clear();
+  welcomed_ = false;
+  const json j = json::parse(store_->load(), nullptr, false);
+  if (j.is_object()) {
+    welcomed_ = j.value("welcomed", false);
+    if (j.contains("lessons") && j["lessons"].is_object())
+      for (const auto& [id, p] : j["lessons"].items()) {
+        if (!p.is_object()) continue;
+        LessonProgress& lp = progress_[id];
+        if (p.contains("step") && p["step"].is_number_unsigned()) lp.step = p["step"].get<std::size_t>();
+        if (p.contains("solved") && p["solved"].is_array())
+          for (const json& s : p["solved"])
+            if (s.is_number_unsigned()) lp.solved.insert(s.get<std::size_t>());
+        if (p.contains("predicted") && p["predicted"].is_object())
+          for (const auto& [step, option] : p["predicted"].items())
+            if (option.is_number_unsigned())
+              lp.predicted[std::size_t(std::atol(step.c_str()))] = option.get<std::size_t>();
+      }
+  }
+  // The welcome is shown once: on the first start, whether or not it is closed.
+  show_welcome = !welcomed_;
+  if (!welcomed_) {
+    welcomed_ = true;
+    save_progress();
+  }
+}
+
+void LessonSession::save_progress() {
+  json lessons = json::object();
+  for (const auto& [id, p] : progress_) {
+    json predicted = json::object();
+    for (const auto& [step, option] : p.predicted) predicted[std::to_string(step)] = option;
+    lessons[id] = {{"step", p.step}, {"solved", p.solved}, {"predicted", predicted}};
+  }
+  store_->save(json{{"version", 1}, {"welcomed", welcomed_}, {"lessons", lessons}}.dump());
+}
+
+void LessonSession::dismiss_welcome() { show_welcome = false; }
+
+const LessonStep* LessonSession::current_step() const {
+  return open_ ? &open_->steps[step_] : nullptr;
+}
+
+const LessonProgress* LessonSession::progress_of(const std::string& id) const {
+  const auto found = progress_.find(id);
+  return found == progress_.end() ? nullptr : &found->second;
+}
+
+LessonScene LessonSession::open(const Lesson& lesson) {
+  open_ = lesson;
+  error.clear();
+  const LessonProgress* p = progress_of(lesson.id);
+  // The scene of the step resumed at is set even when it has no preset of its own, and even
+  // when the same lesson was open.
+  scene_.reset();
+  return go_to(p ? std::min(p->step, lesson.steps.size() - 1) : 0);
+}
+
+std::string LessonSession::open_json(const std::string& text, LessonScene* scene) {
+  const LessonParse parsed = parse_lesson(text, lookup_);
+  if (!parsed.lesson) return parsed.error;
+  *scene = open(*parsed.lesson);
+  return {};
+}
+
+std::string LessonSession::open_id(const std::string& id, LessonScene* scene) {
+  for (const Lesson& l : shipped_)
+    if (l.id == id) {
+      *scene = open(l);
+      return {};
+    }
+  return "no shipped lesson \"" + id + "\"";
+}
+
+void LessonSession::close() {
+  open_.reset();
+  scene_.reset();
+  marking_.reset();
+}
+
+LessonScene LessonSession::go_to(std::size_t i) {
+  if (!open_) return {};
+  step_ = std::min(i, open_->steps.size() - 1);
+  marking_.reset();
+  typed.clear();
+  LessonScene scene;
+  scene.step = &open_->steps[step_];
+  const std::size_t with_preset = scene_of(*open_, step_);
+  if (with_preset != scene_) {
+    scene.preset_step = &open_->steps[with_preset];
+    const std::string& name = scene.preset_step->preset_name;
+    scene.location = "my-" + (name.empty() ? open_->id + ".json" : name);
+    scene_ = with_preset;
+  }
+  // A prediction is made before the run: the clock waits for it.
+  const LessonStep& s = *scene.step;
+  scene.pause = s.task && s.task->kind == LessonTask::Kind::predict && !prediction();
+  progress_[open_->id].step = step_;
+  save_progress();
+  return scene;
+}
+
+double LessonSession::reading(LiveRun& run) const {
+  const LessonStep* s = current_step();
+  if (!s || !s->task || s->task->kind != LessonTask::Kind::measure) return kNone;
+  const LessonTask& task = *s->task;
+  const swarm::System& system = run.system();
+  const double k = swarm::stiffness(system);
+  switch (task.quantity) {
+    case Quantity::period:
+      return swarm::regime_of(k) == swarm::Regime::attractive ? swarm::period_of(k) : kNone;
+    case Quantity::omega:
+      return k != 0 ? swarm::omega_of(k) : kNone;
+    case Quantity::M:
+      return swarm::total_mass(system);
+    case Quantity::E:
+      return swarm::kinetic_energy(system) + swarm::potential_energy_cm(system);
+    case Quantity::P:
+    case Quantity::T: {
+      if (!run.primary().engine().container_radius()) return kNone;
+      const std::vector<swarm::WallInterval> intervals =
+          swarm::wall_intervals(run.primary().samples());
+      std::size_t first = 0;
+      if (task.window > 0 && !intervals.empty()) {
+        const double from = intervals.back().t_end - task.window;
+        while (first < intervals.size() && intervals[first].t_end <= from) ++first;
+      }
+      const swarm::WallReading r = swarm::wall_average(intervals, first, intervals.size());
+      if (r.hits == 0) return kNone;
+      return task.quantity == Quantity::P ? r.P : r.T;
+    }
+  }
+  return kNone;
+}
+
+Marking LessonSession::answer_number(LiveRun& run, double value) {
+  const LessonStep* s = current_step();
+  if (!s || !s->task || s->task->kind != LessonTask::Kind::measure) {
+    marking_ = Marking{std::nullopt, "This step asks for no number."};
+    return *marking_;
+  }
+  marking_ = mark_measurement(*s->task, value, reading(run));
+  if (marking_->correct && *marking_->correct) {
+    progress_[open_->id].solved.insert(step_);
+    save_progress();
+  }
+  return *marking_;
+}
+
+Marking LessonSession::answer_option(std::size_t option, bool* play) {
+  const LessonStep* s = current_step();
+  if (!s || !s->task || s->task->kind == LessonTask::Kind::measure) {
+    marking_ = Marking{std::nullopt, "This step has no options to pick from."};
+    return *marking_;
+  }
+  marking_ = mark_option(*s->task, option);
+  LessonProgress& p = progress_[open_->id];
+  if (s->task->kind == LessonTask::Kind::predict && option < s->task->options.size()) {
+    p.predicted[step_] = option;
+    p.solved.insert(step_);
+    *play = true;
+  } else if (marking_->correct && *marking_->correct) {
+    p.solved.insert(step_);
+  }
+  save_progress();
+  return *marking_;
+}
+
+std::optional<std::size_t> LessonSession::prediction() const {
+  if (!open_) return std::nullopt;
+  const LessonProgress* p = progress_of(open_->id);
+  if (!p) return std::nullopt;
+  const auto found = p->predicted.find(step_);
+  if (found == p->predicted.end()) return std::nullopt;
+  return found->second;
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,110 @@
+#pragma once
+// The lesson a student has open: which step, what they answered, and their progress over
+// visits. Opening a step says what the app is to show (a LessonScene: preset, plot,
+// selection, overlay), which lesson_scene.h carries out; between steps the student is free to
+// play. The values a measure task is checked against are read from the running simulation
+// through the core. lesson_panel.cpp draws it.
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "lessons/lesson.h"
+#include "ui/time/live_run.h"
+
+namespace swarmlab {
+
+/// Where the student's progress lives between visits: a file on the desktop, localStorage in
+/// the browser. One JSON text, read once and written on every change.
+class ProgressStore {
+ public:
+  virtual ~ProgressStore() = default;
+  virtual std::string load() = 0;  ///< "" when there is none yet
+  virtual void save(const std::string& json) = 0;
+};
+
+/// Keeps nothing between visits (scripted runs and screenshots leave the user's progress alone).
+std::unique_ptr<ProgressStore> make_memory_progress_store(std::string initial = {});
+/// $XDG_CONFIG_HOME/swarmlab/progress.json (or ~/.config/...), written atomically.
+std::unique_ptr<ProgressStore> make_file_progress_store();
+
+/// What a student did in one lesson.
+struct LessonProgress {
+  std::size_t step = 0;                        ///< where they were
+  std::set<std::size_t> solved;                ///< steps whose task they answered right
+  std::map<std::size_t, std::size_t> predicted;  ///< step -> the option they predicted
+};
+
+/// What the app is to show for a step (lesson_scene.h sets it): the preset to open when the
+/// step's scene changes, then the step's plot, selection and overlay.
+struct LessonScene {
+  const LessonStep* preset_step = nullptr;  ///< the step whose preset opens; none: keep the run
+  std::string location;                     ///< the name the opened preset is saved under
+  const LessonStep* step = nullptr;         ///< the step shown; none when no lesson is open
+  bool pause = false;                       ///< a prediction is due: the clock waits for it
+};
+
+class LessonSession {
+ public:
+  /// Loads the shipped lessons (sorted by file name; an invalid one is left out with a message
+  /// on stderr) and the progress.
+  void load(const std::string& lesson_directory, std::unique_ptr<ProgressStore> store,
+            const PresetLookup& lookup);
+
+  const std::vector<Lesson>& shipped() const { return shipped_; }
+  const Lesson* open_lesson() const { return open_ ? &*open_ : nullptr; }
+  std::size_t step() const { return step_; }
+  const LessonStep* current_step() const;
+  const LessonProgress* progress_of(const std::string& id) const;
+
+  /// Opens a lesson at the step the student reached last time: the scene to move the app to.
+  LessonScene open(const Lesson& lesson);
+  /// Opens a lesson from JSON text (a link, a file, the JS API) into *scene: "" or the message,
+  /// in which case the running lesson stays.
+  std::string open_json(const std::string& json, LessonScene* scene);
+  /// Opens a shipped lesson by id into *scene: "" or a message.
+  std::string open_id(const std::string& id, LessonScene* scene);
+  void close();
+  /// Moves to step i (clamped): the scene it shows.
+  LessonScene go_to(std::size_t i);
+  LessonScene next() { return go_to(step_ + 1); }
+  LessonScene back() { return go_to(step_ > 0 ? step_ - 1 : 0); }
+  /// The running simulation's value of what the current measure task asks for (NaN when the
+  /// running system has none, e.g. a period with J <= 0).
+  double reading(LiveRun& run) const;
+  /// Marks a typed number against reading().
+  Marking answer_number(LiveRun& run, double value);
+  /// Marks a picked option (choice), or records a prediction and sets *play: the run goes on.
+  Marking answer_option(std::size_t option, bool* play);
+  const std::optional<Marking>& marking() const { return marking_; }
+  /// The prediction made in the current step, if any (kept over visits).
+  std::optional<std::size_t> prediction() const;
+
+  /// The welcome window: shown on the first start (recorded at once, so it appears once), and
+  /// from Help and the Lessons menu.
+  bool show_welcome = false;
+  void dismiss_welcome();
+
+  /// What the answer field of a measure task holds (the panel edits it).
+  std::string typed;
+  /// The last refusal of a lesson (a broken link or file), shown in the panel.
+  std::string error;
+
+ private:
+  void save_progress();
+
+  std::vector<Lesson> shipped_;
+  std::optional<Lesson> open_;
+  std::size_t step_ = 0;
+  std::optional<std::size_t> scene_;  ///< the step whose preset the lesson opened last
+  std::optional<Marking> marking_;
+  std::map<std::string, LessonProgress> progress_;
+  bool welcomed_ = false;
+  std::unique_ptr<ProgressStore> store_ = make_memory_progress_store();
+  PresetLookup lookup_;
+};
+
+}  // namespace swarmlab

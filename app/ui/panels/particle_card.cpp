@@ -1,0 +1,76 @@
+// The selected particle's card: its mass, where it is and how fast it moves relative to the
+// centre of mass, its own energy and the orbit it is on (swarm::particle_orbit).
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <string>
+
+#include "ui/panels/panels.h"
+#include "swarm/physics/particle_orbit.h"
+#include "swarm/physics/system.h"
+
+namespace swarmlab {
+namespace {
+
+void row(const char* name, const std::string& value, const char* meaning) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(name);
+  bool hovered = ImGui::IsItemHovered();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(value.c_str());
+  hovered |= ImGui::IsItemHovered();
+  if (hovered) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
+    ImGui::TextUnformatted(meaning);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+std::string number(const char* format, double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, v);
+  return text;
+}
+
+}  // namespace
+
+void draw_particle_card(AppState& state) {
+  const swarm::System& s = state.run->system();
+  if (!state.selected || *state.selected >= s.particles.size()) return;
+  const std::size_t i = *state.selected;
+  const swarm::ParticleOrbit o = swarm::particle_orbit(
+      s.particles[i], swarm::cm_position(s), swarm::cm_velocity(s), swarm::stiffness(s));
+  const std::string title = "Particle " + std::to_string(i + 1) + "###particle_card";
+  if (!ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
+  if (!ImGui::BeginTable("particle_card", 2, flags)) return;
+  row("m", number("%.5g", o.m), "Its mass. Its spring to the centre of mass is k = J M m.");
+  row("|r \u2212 R|", number("%.5g", o.distance), "Distance from the centre of mass R.");
+  row("speed", number("%.5g", o.speed) + "  (" + number("%.5g", o.speed_cm) + " about R)",
+      "|v| in the lab, and |v \u2212 V| relative to the moving centre of mass.");
+  row("energy", number("%.6g", o.energy) + " = " + number("%.4g", o.kinetic_cm) + " + " +
+                    number("%.4g", o.spring),
+      "Its own energy: \u00bd m |v \u2212 V|\u00b2 (kinetic, centre-of-mass frame) + "
+      "\u00bd J M m |r \u2212 R|\u00b2 (its spring, its share of the potential energy, eq. "
+      "13). Constant between wall hits; the particles' energies and the centre of mass's "
+      "\u00bd M V\u00b2 add up to E.");
+  if (o.period) {
+    row("period", number("%.5g", *o.period),
+        "2\u03c0/\u221a(J M) from the analytic solution: the same for every particle.");
+    row("semi-axes", number("%.4g", *o.semi_major) + ", " + number("%.4g", *o.semi_minor),
+        "The ellipse it is on now (eq. 7 from its present position and velocity about the "
+        "centre of mass): its largest and smallest distance from R. A wall hit puts it on "
+        "another.");
+  } else {
+    row("period", "none",
+        "J \u2264 0: the motion about the centre of mass is free flight or a runaway, with no "
+        "period or amplitude.");
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace swarmlab

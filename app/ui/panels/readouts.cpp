@@ -1,0 +1,174 @@
+// The read-outs over the 3D view: each quantity with the equation behind it on hover.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "ui/panels/panels.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/physics/regime.h"
+#include "swarm/physics/wall.h"
+
+namespace swarmlab {
+namespace {
+
+/// One name and value: two cells of the table, which wraps to its next row by itself.
+void row(const char* name, const char* value, const char* equation) {
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(name);
+  bool hovered = ImGui::IsItemHovered();
+  ImGui::TableNextColumn();
+  ImGui::TextUnformatted(value);
+  hovered |= ImGui::IsItemHovered();
+  if (hovered) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
+    ImGui::TextUnformatted(equation);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+/// Wall hits per unit of simulated time over the plots' averaging window (or the whole run).
+double hit_rate(LiveRun& run, double window) {
+  const auto& samples = run.primary().samples();
+  if (samples.size() < 2) return 0;
+  const double now = samples.back().t;
+  const double from = window > 0 ? now - window : 0;
+  long hits = 0;
+  double start = now;
+  for (auto s = samples.rbegin(); s != samples.rend() - 1; ++s) {
+    if (s->t <= from) break;
+    hits += s->hits;
+    start = (s + 1)->t;
+  }
+  return now > start ? double(hits) / (now - start) : 0;
+}
+
+/// "1.234 ± 0.05", or the value alone without an uncertainty.
+void format_estimate(char* out, std::size_t size, double v, const std::optional<double>& error) {
+  if (error)
+    std::snprintf(out, size, "%.4g ± %.2g", v, *error);
+  else
+    std::snprintf(out, size, "%.4g", v);
+}
+
+/// P and T over the plots' averaging window, with standard errors from its sub-windows.
+void wall_rows(const swarm::WallEstimate& w) {
+  char value[96], window[160];
+  std::snprintf(window, sizeof window,
+                " over the last %.4g of time (%d samples; the plots' 'average over', 0: the "
+                "whole run). ±: standard error of the %d sub-windows' values.",
+                w.window, w.intervals, w.blocks);
+  if (w.intervals == 0) {
+    row("P", "waiting for samples", "Wall pressure, once the first samples arrive.");
+    return;
+  }
+  format_estimate(value, sizeof value, w.mean.P, w.P_stderr);
+  row("P", value, (std::string("P = Σ |Δpᵣ| / (4π R² t)") + window).c_str());
+  if (w.mean.hits > 0)
+    format_estimate(value, sizeof value, w.mean.T, w.T_stderr);
+  else
+    std::snprintf(value, sizeof value, "no wall hits yet");
+  row("T", value,
+      (std::string("T = half the mean kinetic energy of the particles hitting the wall "
+                   "(k_B = 1)") + window).c_str());
+  std::snprintf(value, sizeof value, "last %.4g, %d parts", w.window, w.blocks);
+  row("P, T over", value,
+      "The averaging window of P and T: the plots' 'average over' (Wall P, T tab), or the "
+      "whole run when it is 0. \u00b1 is the standard error of the means of its parts (batch "
+      "means); parts shorter than about a period understate it.");
+}
+
+}  // namespace
+
+void draw_readouts(AppState& state) {
+  if (!ImGui::CollapsingHeader("Read-outs", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  // The O(N) diagnostics below only run while the section is open.
+  const swarm::System& s = state.run->system();
+  const double M = swarm::total_mass(s);
+  const double k = swarm::stiffness(s);
+  const swarm::Regime regime = swarm::regime_of(k);
+  const double rate = swarm::omega_of(k);
+  const swarm::EnergyParts energy = state.run->primary().energy_now();
+  const double E = energy.kinetic + energy.potential;  // with gravity's potential
+  const double p = swarm::total_momentum(s).norm();
+  const double L = swarm::angular_momentum_cm(s).norm();
+
+  char value[96];
+  const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
+  // As many name-value pairs across as the width holds: a strip under the view is short.
+  const int pairs = std::clamp(int(ImGui::GetContentRegionAvail().x / (14 * ImGui::GetFontSize())), 1, 6);
+  if (!ImGui::BeginTable("readouts", 2 * pairs, flags)) return;
+  std::snprintf(value, sizeof value, "%zu", s.particles.size());
+  row("N", value, "Number of particles.");
+  std::snprintf(value, sizeof value, "%.5g", M);
+  row("M", value,
+      "M = \u03a3 m\u1d62, the total mass. Every particle feels one spring "
+      "k\u1d62 = J M m\u1d62 to the centre of mass.");
+  if (regime == swarm::Regime::attractive) {
+    std::snprintf(value, sizeof value, "%.5g", rate);
+    row("\u03c9", value,
+        "\u03c9 = \u221a(J M): the one angular frequency of every particle "
+        "about the centre of mass (J > 0).");
+    std::snprintf(value, sizeof value, "%.5g", swarm::period_of(k));
+    row("period", value,
+        "2\u03c0 / \u03c9 = 2\u03c0 / \u221a(J M): every orbit closes after "
+        "this time, whatever its size and mass.");
+  } else if (regime == swarm::Regime::repulsive) {
+    std::snprintf(value, sizeof value, "%.5g", rate);
+    row("\u03a9", value,
+        "\u03a9 = \u221a(\u2212J M) (J < 0): distances from the centre of mass "
+        "grow as e^(\u03a9t); no period.");
+  } else {
+    row("\u03c9", "0", "J = 0: no force, every particle moves in a straight line.");
+  }
+  std::snprintf(value, sizeof value, "%.6g", E);
+  row("E", value,
+      "E = \u03a3 \u00bd m\u1d62 v\u1d62\u00b2 + \u00bd J M \u03a3 m\u1d62 "
+      "|r\u1d62 \u2212 R|\u00b2: kinetic plus the springs' potential energy (eq. 13), "
+      "and \u2212\u03a3 m\u1d62 g\u00b7r\u1d62 under gravity. "
+      "Conserved by the exact solution and by elastic wall hits; drag and an inelastic "
+      "floor take energy out (Gravity, floor, drag panel).");
+  std::snprintf(value, sizeof value, "%+.2e",
+                swarm::relative_energy_change(state.run->primary().samples().front(), E));
+  row("\u0394E/|E\u2080|", value,
+      "Relative change of the energy since t = 0 (over KE\u2080 + |PE\u2080| when "
+      "E\u2080 = 0). Euler's grows, Euler-Cromer's wobbles. The analytic method's orbits "
+      "are exact but for rounding, yet E = KE + PE is a difference: for J < 0 both grow as "
+      "e^(2\u03a9t) while E stays put, so their rounding (10\u207b\u00b9\u2076 of KE + |PE|) "
+      "shows as a \u0394E of percents once \u03a9t passes about 17. Walls stop the growth.");
+  std::snprintf(value, sizeof value, "%.5g", p);
+  row("|p|", value,
+      "p = \u03a3 m\u1d62 v\u1d62 = M V: constant for an isolated system; wall "
+      "hits exchange momentum with the container.");
+  std::snprintf(value, sizeof value, "%.5g", L);
+  row("|L|", value,
+      "L = \u03a3 m\u1d62 (r\u1d62 \u2212 R) \u00d7 (v\u1d62 \u2212 V) about the "
+      "centre of mass: conserved by the central springs, changed by wall hits "
+      "only through the moving centre of mass.");
+  if (const auto R = state.run->primary().engine().container_radius()) {
+    std::snprintf(value, sizeof value, "%.4g   V = %.4g", *R, swarm::sphere_volume(*R));
+    row("R", value, "Container radius and volume V = 4/3 \u03c0 R\u00b3.");
+    wall_rows(state.instruments.wall);
+    std::snprintf(value, sizeof value, "%.4g", hit_rate(*state.run, state.plots.average_window));
+    row("hits/time", value,
+        "Wall hits per unit of simulated time, over the plots' averaging "
+        "window. P = \u03a3 |\u0394p\u1d63| / (4\u03c0 R\u00b2 t).");
+  }
+  std::snprintf(value, sizeof value, "%.0f  (%.1f ms)", 1000.0 / state.stats.frame_ms,
+                state.stats.frame_ms);
+  row("FPS", value, "Frames per second and the time of one frame.");
+  std::snprintf(value, sizeof value, "%.1f + %.1f ms", state.stats.simulation_ms,
+                state.stats.scene_ms);
+  row("step + draw", value,
+      "Time per frame spent advancing the simulation, and preparing the "
+      "particles for drawing (colours, sizes, upload).");
+  ImGui::EndTable();
+}
+
+}  // namespace swarmlab

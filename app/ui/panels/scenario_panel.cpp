@@ -1,0 +1,129 @@
+// The scenario panel: the shipped presets with their descriptions, open and save by path,
+// reset to the preset as opened.
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <string>
+
+#include "labels/system_labels.h"
+#include "ui/panels/panels.h"
+#include "ui/platform/save_dialog.h"
+#include "ui/classroom/theme_style.h"
+
+namespace swarmlab {
+
+void show_refusal(AppState& state, Section section) {
+  if (state.draft_error.empty() || state.draft_error_section != section) return;
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
+  ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
+  ImGui::PopStyleColor();
+  if (ImGui::SmallButton("Undo the edit")) state.revert_draft();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Show the running values again. Until then the run goes on with the "
+        "last valid preset.");
+}
+
+void help_marker(const char* text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28);
+    ImGui::TextUnformatted(text);
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+bool committed() { return ImGui::IsItemDeactivatedAfterEdit(); }
+
+void draw_scenario_panel(AppState& state) {
+  ImGui::TextDisabled("Shipped presets");
+  const float list_height = ImGui::GetTextLineHeightWithSpacing() *
+                            (float(std::min<std::size_t>(state.shipped.size(), 7)) + 0.4f);
+  if (ImGui::BeginListBox("##presets", ImVec2(-1, list_height))) {
+    for (const ShippedPreset& s : state.shipped) {
+      const bool current = state.shipped_id == s.id;
+      const std::string label = (s.preset.name.empty() ? s.id : s.preset.name) + "##" + s.id;
+      if (ImGui::Selectable(label.c_str(), current)) {
+        // Saving goes to a copy in the working directory, never over the shipped file.
+        state.open(s.preset, "my-" + s.id);
+        state.shipped_id = s.id;
+      }
+      if (ImGui::IsItemHovered() && !s.preset.description.empty()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
+        ImGui::TextUnformatted(s.preset.description.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
+    }
+    ImGui::EndListBox();
+  }
+
+  ImGui::Spacing();
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_key));
+  ImGui::TextWrapped("%s", labels::title(state.preset, state.modified).c_str());
+  ImGui::PopStyleColor();
+  // The description was written for the preset as shipped; after an edit it may no longer hold.
+  if (state.modified && !state.preset.description.empty())
+    ImGui::TextDisabled("As shipped (before the edits):");
+  if (!state.preset.description.empty()) {
+    // ImGui wraps the whole text every frame: a description of a million characters (from a
+    // link or a file) would take the frame rate down to one a second, so a long one is cut.
+    constexpr std::size_t kShown = 2000;  // bytes of UTF-8
+    const std::string& text = state.preset.description;
+    std::size_t end = std::min(text.size(), kShown);
+    while (end < text.size() && end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
+      --end;  // not inside a character
+    const std::string shown = end < text.size() ? text.substr(0, end) + "..." : text;
+    ImGui::TextWrapped("%s", shown.c_str());
+  }
+  if (state.modified && ImGui::Button("Reset to preset")) {
+    state.draft = state.origin;
+    state.apply_draft(Section::scenario);
+  }
+
+  ImGui::Spacing();
+  if (state.storage_controls) {
+    state.storage_controls(state);
+  } else {
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputTextWithHint("##location", state.store->location_hint(), &state.location);
+    if (ImGui::Button("Open")) {
+      const swarm::PresetParse parsed = state.store->open(state.location);
+      if (parsed.preset) {
+        state.open(*parsed.preset, state.location);
+        state.status = "Opened " + state.location;
+        state.status_is_error = false;
+      } else {
+        state.status = parsed.error;
+        state.status_is_error = true;
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Save...")) request_save_preset(state);
+    help_marker(
+        "Open reads a preset file; Save asks for a name, folder and file name and writes the "
+        "running preset (every edit you made) as a preset file that 'swarmlab run' and the "
+        "browser run identically. Files are written whole or not at all.");
+  }
+  if (ImGui::Button("Export samples CSV")) request_samples_csv(state);
+  if (!state.run->primary().stages().empty()) {
+    ImGui::SameLine();
+    if (ImGui::Button("Export stages CSV")) request_stages_csv(state);
+  }
+  if (!state.status.empty()) {
+    const Palette& colours = current_palette();
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(state.status_is_error ? colours.text_error
+                                                                           : colours.text_ok));
+    ImGui::TextWrapped("%s", state.status.c_str());
+    ImGui::PopStyleColor();
+  }
+  show_refusal(state, Section::scenario);
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,167 @@
+// The simulation panel (method, dt, duration, methods compared) and the transport bar over the
+// 3D view (play, pause, step, reset, speed, clock).
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "labels/system_labels.h"
+#include "ui/panels/panels.h"
+#include "ui/time/time_controls.h"
+#include "ui/time/timeline_strip.h"
+#include "ui/classroom/presentation.h"
+#include "ui/classroom/theme_style.h"
+#include "swarm/physics/regime.h"
+
+namespace swarmlab {
+namespace {
+
+/// The method's row of the core's table as a tooltip: what it does, its order and its cost.
+std::string describe(swarm::Method m) {
+  const swarm::MethodInfo& info = swarm::info_of(m);
+  std::string text = std::string(info.display_name) + ": " + std::string(info.description) + ". ";
+  text += info.order == 0 ? std::string("Exact") : "Order " + std::to_string(info.order);
+  text += info.pairwise ? ", O(N^2) per step." : ", O(N) per step.";
+  return text;
+}
+
+/// Continues the row when an item `width` wide still fits beside the last one, else starts the
+/// next row: on a phone the transport bar wraps instead of cutting off its end.
+void same_line_if_fits(float width) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right)
+    ImGui::SameLine();
+}
+
+/// The width of a button labelled `text`.
+float button_width(const char* text) {
+  return ImGui::CalcTextSize(text).x + 2 * ImGui::GetStyle().FramePadding.x;
+}
+
+}  // namespace
+
+void draw_simulation_panel(AppState& state) {
+  swarm::Preset& d = state.draft;
+  bool changed = false;
+  const float width = 0.55f * ImGui::GetContentRegionAvail().x;
+  ImGui::SetNextItemWidth(width);
+  if (ImGui::BeginCombo("method", std::string(swarm::name_of(d.method)).c_str())) {
+    for (const swarm::MethodInfo& info : swarm::method_table()) {
+      const swarm::Method m = info.id;
+      if (ImGui::Selectable(std::string(swarm::name_of(m)).c_str(), m == d.method)) {
+        d.method = m;
+        changed = true;
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(m).c_str());
+    }
+    ImGui::EndCombo();
+  }
+  help_marker(describe(d.method).c_str());
+
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputDouble("dt", &d.dt, 0, 0, "%.6g");
+  changed |= committed();
+  help_marker(
+      "The time step. The analytic map is exact for any dt; the numerical methods' "
+      "errors shrink as dt^order. Wall hits are placed to within one step (paper rule).");
+  if (!d.expansion) {
+    ImGui::SetNextItemWidth(width);
+    ImGui::InputDouble("duration", &d.duration, 0, 0, "%.6g");
+    changed |= committed();
+  }
+
+  ImGui::TextUnformatted("Side by side with");
+  help_marker(
+      "Run other methods from the same initial state in lockstep. With 'analytic' "
+      "among them, its positions are drawn as hollow ghosts and the Compare plots show "
+      "each numerical method's position and energy errors.");
+  for (const swarm::MethodInfo& info : swarm::method_table()) {
+    const swarm::Method m = info.id;
+    if (m == d.method) continue;
+    bool on = std::find(d.compare.begin(), d.compare.end(), m) != d.compare.end();
+    if (ImGui::Checkbox(std::string(swarm::name_of(m)).c_str(), &on)) {
+      if (on)
+        d.compare.push_back(m);
+      else
+        d.compare.erase(std::find(d.compare.begin(), d.compare.end(), m));
+      changed = true;
+    }
+    ImGui::SameLine();
+  }
+  ImGui::NewLine();
+  // A method compared with itself tells nothing: drop it when it becomes the primary.
+  if (changed)
+    d.compare.erase(std::remove(d.compare.begin(), d.compare.end(), d.method), d.compare.end());
+  if (changed) state.apply_draft(Section::simulation);
+  show_refusal(state, Section::simulation);
+
+  ImGui::Separator();
+  const swarm::RunPlan& plan = state.run->primary().plan();
+  ImGui::TextDisabled("%ld steps, a sample every %ld steps", plan.steps, plan.sample_every);
+  ImGui::TextDisabled("one step: %.3g ms", state.stats.step_ms);
+  const bool pairwise =
+      swarm::is_pairwise(state.preset.method) ||
+      std::any_of(state.preset.compare.begin(), state.preset.compare.end(), swarm::is_pairwise);
+  if (pairwise && state.run->system().particles.size() > 2000) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
+    ImGui::TextWrapped(
+        "The numerical methods sum over all %zu^2 / 2 pairs every step: expect a "
+        "slow simulation. The analytic method is O(N).",
+        state.run->system().particles.size());
+    ImGui::PopStyleColor();
+  }
+}
+
+void draw_transport_bar(AppState& state) {
+  const float font = ImGui::GetFontSize();
+  const bool at_end = !state.playing && state.run->finished();
+  // One ID for every label, so keyboard focus stays on the button when its label changes.
+  if (ImGui::Button(state.playing  ? "\u2016 Pause###play"
+                    : at_end       ? "\u25b6 Continue###play"
+                                   : "\u25b6 Play###play",
+                    ImVec2(6.5f * font, 0)))
+    play_or_continue(state);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(at_end ? "Space: the run is over; continue it for another run length"
+                             : "Space");
+  same_line_if_fits(button_width("Step"));
+  if (ImGui::Button("Step")) state.step_once = true, state.playing = false;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("S: one step of dt");
+  same_line_if_fits(button_width("Reset"));
+  if (ImGui::Button("Reset")) state.restart();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("R: back to t = 0");
+  same_line_if_fits(9 * font);
+  ImGui::SetNextItemWidth(9 * font);
+  const double lo = 1e-3, hi = 1e4;
+  ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, "speed %.3g /s",
+                      ImGuiSliderFlags_Logarithmic);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
+  same_line_if_fits(ImGui::GetFrameHeight() + button_width("Sound"));
+  draw_sound_toggle(state);
+
+  draw_time_buttons(state);
+  const double t = state.run->time();
+  const double k = swarm::stiffness(state.run->system());
+  ImGui::TextUnformatted(labels::clock_text(state.preset, k, t).c_str());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Simulated time; for an isolated system also in periods of the common oscillation "
+        "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "
+        "wall changes the motion and neither applies.");
+  if (state.run->finished()) {
+    same_line_if_fits(ImGui::CalcTextSize("end of run").x);
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "end of run");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Continue (Space) runs on for as long again.");
+  } else if (state.playing && state.stats.speed_ratio < 0.97) {
+    ImGui::SameLine();
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "(%.0f%% of the speed)",
+                       100 * state.stats.speed_ratio);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The steps of this speed do not fit in a frame on this machine.");
+  }
+}
+
+}  // namespace swarmlab

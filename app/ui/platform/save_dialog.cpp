@@ -1,0 +1,184 @@
+#include "ui/platform/save_dialog.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <cctype>
+#include <filesystem>
+
+#include "report/run_csv.h"
+#include "ui/classroom/theme_style.h"
+
+namespace swarmlab {
+namespace {
+
+std::string preset_json_named(const AppState& state, const std::string& name) {
+  swarm::Preset p = state.preset;
+  p.name = name;
+  return swarm::preset_to_json(p) + "\n";
+}
+
+/// Writes the request where the user said; on success a preset becomes the saved, unedited
+/// origin under its new name. Returns the error, empty on success.
+std::string write(AppState& state, const SaveRequest& request, const std::string& location,
+                  const std::string& preset_name) {
+  const std::string content =
+      request.preset ? preset_json_named(state, preset_name) : request.content;
+  const std::string error = state.store->export_file(location, content, request.mime);
+  state.status = error.empty() ? "Saved " + location : error;
+  state.status_is_error = !error.empty();
+  if (error.empty() && request.preset) {
+    state.preset.name = state.draft.name = preset_name;
+    state.origin = state.preset;
+    state.modified = false;
+    state.location = location;
+  }
+  return error;
+}
+
+/// A CSV file named after the running preset; returns the file name proposed.
+std::string request_csv(AppState& state, std::string what, const char* suffix,
+                        std::string content) {
+  const std::string name = file_stem_of(state.preset.name) + suffix;
+  request_save(state, {std::move(what), name, std::move(content), "text/csv", false});
+  return name;
+}
+
+}  // namespace
+
+std::string file_stem_of(const std::string& name) {
+  std::string stem;
+  for (const unsigned char c : name) {
+    if (std::isalnum(c))
+      stem += char(std::tolower(c));
+    else if (!stem.empty() && stem.back() != '-')
+      stem += '-';
+  }
+  while (!stem.empty() && stem.back() == '-') stem.pop_back();
+  return stem.empty() ? "swarm-lab" : stem;
+}
+
+void request_save(AppState& state, SaveRequest request) {
+  SaveDialog& d = state.save_dialog;
+  const std::string folder = state.store->default_folder();
+  if (folder.empty()) {  // the browser: a download, named by the app
+    write(state, request, request.file_name, state.preset.name);
+    return;
+  }
+  if (d.folder.empty()) d.folder = folder;
+  d.file_name = request.file_name;
+  d.preset_name = state.preset.name;
+  d.error.clear();
+  d.request = std::move(request);
+  d.open_popup = true;
+}
+
+void request_save_preset(AppState& state) {
+  SaveRequest r;
+  r.what = "the running preset (every edit included)";
+  r.file_name = file_stem_of(state.preset.name) + ".json";
+  r.mime = "application/json";
+  r.preset = true;
+  request_save(state, std::move(r));
+}
+
+std::string request_samples_csv(AppState& state) {
+  return request_csv(state, "the samples as CSV (the columns of swarmlab run --csv)",
+                     "-samples.csv", report::samples_csv(state.run->primary().samples()));
+}
+
+std::string request_stages_csv(AppState& state) {
+  return request_csv(state, "the expansion stages as CSV (R,V,P,T,E,hits)", "-stages.csv",
+                     report::stages_csv(state.run->primary().stages()));
+}
+
+void request_quit(AppState& state) {
+  if (state.modified && !state.store->default_folder().empty())
+    state.save_dialog.asking_quit = true;
+  else
+    state.save_dialog.quit_confirmed = true;
+}
+
+void draw_save_dialogs(AppState& state) {
+  SaveDialog& d = state.save_dialog;
+  const float font = ImGui::GetFontSize();
+  const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
+
+  if (d.asking_quit) ImGui::OpenPopup("Unsaved edits");
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("\u201c%s\u201d has edits that are not saved.", state.preset.name.c_str());
+    ImGui::TextDisabled("Quit anyway, or save the preset first?");
+    if (ImGui::Button("Save...")) {
+      d.asking_quit = false;
+      d.quit_after_save = true;
+      ImGui::CloseCurrentPopup();
+      request_save_preset(state);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard and quit")) {
+      d.asking_quit = false;
+      d.quit_confirmed = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+      d.asking_quit = false;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+
+  if (d.open_popup) {
+    ImGui::OpenPopup("Save");
+    d.open_popup = false;
+  }
+  ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(34 * font, 0), ImGuiCond_Appearing);
+  if (ImGui::BeginPopupModal("Save", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
+    if (!d.request) {
+      ImGui::CloseCurrentPopup();
+    } else {
+      ImGui::TextWrapped("Save %s", d.request->what.c_str());
+      ImGui::Spacing();
+      if (d.request->preset) {
+        ImGui::SetNextItemWidth(-8 * font);
+        ImGui::InputText("preset name", &d.preset_name);
+      }
+      ImGui::SetNextItemWidth(-8 * font);
+      ImGui::InputText("folder", &d.folder);
+      ImGui::SetNextItemWidth(-8 * font);
+      ImGui::InputText("file name", &d.file_name);
+      const std::string location = (std::filesystem::path(d.folder) / d.file_name).string();
+      ImGui::TextDisabled("%s", location.c_str());
+      if (!d.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
+        ImGui::TextWrapped("%s", d.error.c_str());
+        ImGui::PopStyleColor();
+      }
+      const bool can_save = !d.file_name.empty() && !(d.request->preset && d.preset_name.empty());
+      ImGui::BeginDisabled(!can_save);
+      const bool save = ImGui::Button("Save", ImVec2(6 * font, 0));
+      ImGui::EndDisabled();
+      ImGui::SameLine();
+      const bool cancel =
+          ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+      if (save) {
+        // The folder is made if missing; the file appears whole or not at all.
+        d.error = write(state, *d.request, location, d.preset_name);
+        if (d.error.empty()) {
+          if (d.quit_after_save && d.request->preset) d.quit_confirmed = true;
+          d.request.reset();
+          ImGui::CloseCurrentPopup();
+        }
+      } else if (cancel) {
+        d.request.reset();
+        d.quit_after_save = false;
+        ImGui::CloseCurrentPopup();
+      }
+    }
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,46 @@
+#include "ui/plots/fit_quality.h"
+
+#include <imgui.h>
+
+#include "ui/plots/plot_widget.h"
+#include "ui/classroom/theme_style.h"
+
+namespace swarmlab {
+
+void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm::PowerLawFit& fit,
+                      bool log_x, float height) {
+  if (!fit.valid) return;
+  const swarm::PowerLawAdequacy judged = swarm::judge_power_law(fit);
+  static std::vector<double> used_x;
+  used_x.clear();
+  for (int i : fit.used) used_x.push_back(x[std::size_t(i)]);
+
+  PlotSpec r;
+  r.title = "Residuals";
+  r.x = {"", log_x, std::nullopt, std::nullopt};
+  r.y = {"ln y \u2212 fit", false, std::nullopt, std::nullopt};
+  r.y_from_zero = true;  // the zero line is in view: a wave or a trend about it shows
+  r.series = {{"residual", &used_x, &fit.residuals, current_palette().residual.packed(), true,
+               2.0f}};
+  draw_plot(id, r, height);
+
+  ImGui::Text("R\u00b2 = %.4f   Durbin-Watson = %.2f   (%zu stages)", fit.r_squared,
+              judged.durbin_watson, fit.used.size());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "R\u00b2: the share of the variance of ln y the line explains. Durbin-Watson: about 2 "
+        "when the residuals scatter at random, near 0 when neighbours share their sign (a wave "
+        "or a trend the power law does not follow).");
+  if (judged.poor()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
+    ImGui::TextWrapped("%s",
+                       judged.systematic
+                           ? "The residuals wave or trend: a power law does not describe these "
+                             "stages, whatever the exponent (paper, Appendix C)."
+                           : "The stages scatter far from any line (R\u00b2 < 0.9): the "
+                             "exponent means little.");
+    ImGui::PopStyleColor();
+  }
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,298 @@
+// The live plots: wall pressure and temperature with a running average, the energies, the
+// expansion's P-V, T-V and P-T with power-law fits, and the errors of the numerical methods.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ui/plots/fit_quality.h"
+#include "ui/panels/panels.h"
+#include "ui/plots/plot_widget.h"
+#include "swarm/physics/regime.h"
+#include "ui/classroom/theme_style.h"
+
+namespace swarmlab {
+namespace {
+
+/// The series colours of the current theme (access/theme_palette.h).
+const Palette& colours() { return current_palette(); }
+
+/// A method's plot colour, from the core's method table.
+ImU32 colour_of(swarm::Method m) {
+  const auto& [r, g, b] = swarm::info_of(m).colour;
+  return plot_line_colour(Colour{std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 255},
+                          current_theme())
+      .packed();
+}
+
+/// The sample series of the primary run, with P and T averaged over a trailing time window.
+/// Rebuilt only when a sample arrives or the window changes.
+struct SampleSeries {
+  long run = 0;  // LiveRun::id()
+  std::size_t count = 0;
+  double window = -1;
+  std::vector<double> t, P, T, P_mean, T_mean;  // from the second sample on
+  std::vector<double> t_all, KE, PE, E, drift;  // every sample
+
+  void update(LiveRun& live, double average_window) {
+    const auto& samples = live.primary().samples();
+    if (run == live.id() && count == samples.size() && window == average_window) return;
+    run = live.id();
+    count = samples.size();
+    window = average_window;
+    for (auto* v : {&t, &P, &T, &P_mean, &T_mean, &t_all, &KE, &PE, &E, &drift}) v->clear();
+    // P and T over a trailing window, by the core's one definition of a wall average.
+    const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(samples);
+    const std::vector<swarm::WallReading> means =
+        swarm::windowed_wall_averages(intervals, average_window, 0);
+    for (std::size_t i = 0; i < intervals.size(); ++i) {
+      const swarm::WallReading& w = intervals[i].reading;
+      t.push_back(intervals[i].t_end);
+      P.push_back(w.P);
+      // Without a hit there is no temperature: a gap in the curve, not T = 0.
+      T.push_back(w.hits > 0 ? w.T : std::nan(""));
+      P_mean.push_back(means[i].P);
+      T_mean.push_back(means[i].hits > 0 ? means[i].T : std::nan(""));
+    }
+    for (const swarm::Sample& s : samples) {
+      t_all.push_back(s.t);
+      KE.push_back(s.KE);
+      PE.push_back(s.PE);
+      E.push_back(s.E);
+      drift.push_back(swarm::relative_energy_change(samples.front(), s.E));
+    }
+  }
+};
+
+SampleSeries series;
+
+std::optional<double> window_start(const AppState& state, double now) {
+  if (state.plots.scroll_window <= 0) return std::nullopt;
+  return std::max(0.0, now - state.plots.scroll_window);
+}
+
+void draw_wall_tab(AppState& state, float plot_height) {
+  if (!state.preset.container_radius) {
+    // Without a wall there is nothing to measure: no plots of zeros and blanks.
+    ImGui::TextWrapped(
+        "No container: pressure and temperature are measured where the particles hit the "
+        "wall. Switch one on under Container (in the Controls) to measure them.");
+    return;
+  }
+  const float width = 0.42f * ImGui::GetContentRegionAvail().x;
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputDouble("average over", &state.plots.average_window, 0, 0, "%.4g");
+  state.plots.average_window = std::max(0.0, state.plots.average_window);
+  help_marker(
+      "Running average of P and T over this much simulated time (0: none). P and T "
+      "from a single interval are noisy: few particles hit the wall in each one.");
+  ImGui::SetNextItemWidth(width);
+  ImGui::InputDouble("show last", &state.plots.scroll_window, 0, 0, "%.4g");
+  state.plots.scroll_window = std::max(0.0, state.plots.scroll_window);
+  help_marker("Scroll: show only this much of the most recent time (0: the whole run).");
+
+  series.update(*state.run, state.plots.average_window);
+  const std::string empty = "waiting for the first samples";
+  PlotSpec p;
+  p.title = "Wall pressure";
+  p.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
+  p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
+  p.y_from_zero = true;
+  p.empty_message = empty;
+  p.series = {
+      {"each sample", &series.t, &series.P, colours().pressure_each_sample.packed(), false, 1.0f},
+      {"running average", &series.t, &series.P_mean, colours().pressure.packed(), false, 2.5f}};
+  draw_plot("pressure", p, plot_height);
+
+  PlotSpec t = p;
+  t.title = "Wall temperature";
+  t.y = {"T (energy, k_B = 1)", false, std::nullopt, std::nullopt};
+  t.series = {
+      {"each sample", &series.t, &series.T, colours().temperature_each_sample.packed(), false,
+       1.0f},
+      {"running average", &series.t, &series.T_mean, colours().temperature.packed(), false, 2.5f}};
+  draw_plot("temperature", t, plot_height);
+}
+
+void draw_energy_tab(AppState& state, float plot_height) {
+  series.update(*state.run, state.plots.average_window);
+  // Timing the energy plot's swings gives half the period, a trap worth naming.
+  if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
+    ImGui::TextColored(colour_vec4(colours().text_warning),
+                       "KE and PE swing at 2ω: one swing is half a period.");
+  const std::vector<double>& t_all = series.t_all;
+  PlotSpec e;
+  e.title = "KE, PE and E";
+  e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
+  e.y = {"energy", false, std::nullopt, std::nullopt};
+  e.y_from_zero = true;
+  e.series = {{"KE", &t_all, &series.KE, colours().kinetic.packed(), false, 2.0f},
+              {"PE", &t_all, &series.PE, colours().potential.packed(), false, 2.0f},
+              {"E = KE + PE", &t_all, &series.E, colours().total_energy.packed(), false, 2.5f}};
+  draw_plot("energies", e, plot_height);
+
+  PlotSpec d;
+  d.title = "Energy change";
+  d.x = e.x;
+  d.y = {"(E - E\u2080) / |E\u2080|", false, std::nullopt, std::nullopt};
+  d.series = {{std::string(swarm::name_of(state.preset.method)), &t_all, &series.drift,
+               colour_of(state.preset.method), false, 2.0f}};
+  draw_plot("drift", d, plot_height);
+}
+
+void draw_expansion_tab(AppState& state, float plot_height) {
+  if (!state.preset.expansion && state.run->primary().stages().empty()) {
+    ImGui::TextWrapped(
+        "No stages yet. With a container, each Expand now (E) ends a stage, averaged like "
+        "the protocol's, and plots it here; or under Container switch on the stepwise "
+        "expansion.");
+    return;
+  }
+  ImGui::Checkbox("log-log axes", &state.plots.log_log);
+  help_marker(
+      "On log-log axes a power law y = a x^b is a straight line of slope b. The fit is "
+      "least squares of ln y on ln x over the stages with P, T > 0 (paper Appendix C).");
+  const auto& stages = state.run->primary().stages();
+  static std::vector<double> V, P, T;
+  V.clear(), P.clear(), T.clear();
+  for (const swarm::Stage& s : stages) {
+    V.push_back(s.V);
+    P.push_back(s.P);
+    T.push_back(s.T);
+  }
+  const swarm::StageFits fits = state.run->primary().fits();
+  const bool log = state.plots.log_log;
+  char first_stage[96] = "the first stage ends with Expand now (E)";
+  if (state.preset.expansion)
+    std::snprintf(first_stage, sizeof first_stage, "the first stage ends at t = tau = %.4g",
+                  state.preset.expansion->tau);
+  auto plot = [&](const char* id, const char* title, const char* x_label,
+                  const std::vector<double>& x, const char* y_label, const std::vector<double>& y,
+                  const swarm::PowerLawFit& fit, const char* law, ImU32 colour) {
+    PlotSpec s;
+    s.title = title;
+    s.x = {x_label, log, std::nullopt, std::nullopt};
+    s.y = {y_label, log, std::nullopt, std::nullopt};
+    s.y_from_zero = !log;
+    s.empty_message = first_stage;
+    s.series = {{"stages", &x, &y, colour, true, 2.0f}};
+    if (fit.valid) {
+      char label[96];
+      std::snprintf(label, sizeof label, "%s^%.3f \u00b1 %.3f", law, fit.slope, fit.slope_stderr);
+      s.fits.push_back({label, std::exp(fit.intercept), fit.slope, colours().fit.packed()});
+    }
+    draw_plot(id, s, plot_height);
+    if (fit.valid && ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::Text("ln y = %.4g + (%.4g \u00b1 %.2g) ln x,  R\u00b2 = %.4f over %zu stages",
+                  fit.intercept, fit.slope, fit.slope_stderr, fit.r_squared, fit.used.size());
+      ImGui::EndTooltip();
+    }
+    draw_fit_quality((std::string(id) + " residuals").c_str(), x, fit, log, 0.45f * plot_height);
+  };
+  plot("pv", "P against V", "V (length\u00b3)", V, "P (force/area)", P, fits.P_V, "P \u221d V",
+       colours().pressure.packed());
+  plot("tv", "T against V", "V (length\u00b3)", V, "T (energy)", T, fits.T_V, "T \u221d V",
+       colours().temperature.packed());
+  plot("pt", "P against T", "T (energy)", T, "P (force/area)", P, fits.P_T, "P \u221d T",
+       colours().energy_drift.packed());
+}
+
+void draw_compare_tab(AppState& state, float plot_height) {
+  const auto& errors = state.run->errors();
+  if (state.preset.compare.empty()) {
+    ImGui::TextWrapped(
+        "Nothing runs side by side. Under Simulation, tick 'analytic' next to a "
+        "numerical method (or the other way round) to compare them here.");
+    return;
+  }
+  static std::vector<std::vector<double>> energy_t, energy;
+  PlotSpec e;
+  e.title = "Energy error";
+  e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
+  e.y = {"(E - E\u2080) / |E\u2080|", false, std::nullopt, std::nullopt};
+  // Every run's energy from its own samples, so methods compare even without 'analytic'.
+  const std::size_t runs = 1 + state.run->compared_count();
+  energy_t.resize(runs);
+  energy.resize(runs);
+  for (std::size_t k = 0; k < runs; ++k) {
+    swarm::Run& run = k == 0 ? state.run->primary() : state.run->compared(k - 1);
+    const swarm::Method m = k == 0 ? state.preset.method : state.run->compared_method(k - 1);
+    energy_t[k].clear();
+    energy[k].clear();
+    for (const swarm::Sample& s : run.samples()) {
+      energy_t[k].push_back(s.t);
+      energy[k].push_back(swarm::relative_energy_change(run.samples().front(), s.E));
+    }
+    e.series.push_back(
+        {std::string(swarm::name_of(m)), &energy_t[k], &energy[k], colour_of(m), false, 2.0f});
+  }
+  draw_plot("energy_error", e, plot_height);
+
+  PlotSpec p;
+  p.title = "Position error";
+  p.x = e.x;
+  p.y = {"max |\u0394r| from the exact orbit (length)", false, std::nullopt, std::nullopt};
+  p.y_from_zero = true;
+  p.empty_message = "tick 'analytic' under Side by side to measure position errors";
+  for (const swarm::ErrorFromExact& track : errors)
+    p.series.push_back({std::string(swarm::name_of(track.method)), &track.t, &track.position_error,
+                        colour_of(track.method), false, 2.0f});
+  draw_plot("position_error", p, plot_height);
+}
+
+}  // namespace
+
+void draw_plots_panel(AppState& state) {
+  // The indices are fixed: --select, --plot-tab and the lessons open tabs by number.
+  const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare", "Particle", "Projects"};
+  // Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
+  // Another window draws the tabs after a change of layout or presentation mode: its new tab
+  // bar opens on the tab that was open, not on the first.
+  const unsigned window = ImGui::GetID("##plot-tabs");  // differs with the window drawing it
+  if (window != state.plots.tab_window && state.plots.tab < 0)
+    state.plots.tab = state.plots.shown_tab;
+  state.plots.tab_window = window;
+  if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
+  for (int i = 0; i < 6; ++i) {
+    const ImGuiTabItemFlags flags = state.plots.tab == i ? ImGuiTabItemFlags_SetSelected : 0;
+    if (!ImGui::BeginTabItem(tabs[i], nullptr, flags)) continue;
+    state.plots.shown_tab = i;
+    const float options = i == 0 ? 2.6f : i == 2 ? 1.4f : i == 1 ? 1.0f : i == 4 ? 3.0f : 0.0f;
+    const float available =
+        ImGui::GetContentRegionAvail().y - options * ImGui::GetFrameHeightWithSpacing();
+    const int plots = i == 2   ? 3
+                      : i == 4 ? 1
+                      : i == 5 ? std::max(1, project_plot_count(state.preset))
+                               : 2;
+    const float height = std::max(8 * ImGui::GetFontSize(),
+                                  available / float(plots) - ImGui::GetStyle().ItemSpacing.y);
+    switch (i) {
+      case 0:
+        draw_wall_tab(state, height);
+        break;
+      case 1:
+        draw_energy_tab(state, height);
+        break;
+      case 2:
+        draw_expansion_tab(state, height);
+        break;
+      case 3:
+        draw_compare_tab(state, height);
+        break;
+      case 4:
+        draw_particle_tab(state, height);
+        break;
+      case 5:
+        draw_projects_tab(state, height);
+        break;
+    }
+    ImGui::EndTabItem();
+  }
+  state.plots.tab = -1;
+  ImGui::EndTabBar();
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,131 @@
+// The plots of the Appendix B projects that fit the running preset: the centre of mass's
+// height and the swarm's size, the energy books, the P-V loop of a moving wall, and the
+// speeds against the Maxwellian. The numbers come from the run's samples and the core's speed
+// histogram (project_plots.h, report/pv_loop.h); this file only draws them.
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ui/panels/panels.h"
+#include "ui/plots/plot_widget.h"
+#include "ui/plots/project_plots.h"
+#include "report/pv_loop.h"
+#include "ui/classroom/theme_style.h"
+
+namespace swarmlab {
+namespace {
+
+/// The series, rebuilt only when a sample arrives or the run restarts.
+struct ProjectCache {
+  long run = 0;  // LiveRun::id()
+  std::size_t count = 0;
+  ProjectSeries series;
+  report::PvLoop loop;
+  swarm::SpeedCheck speeds;
+  HistogramSeries histogram;
+
+  void update(AppState& state, const ProjectPlots& plots) {
+    const auto& samples = state.run->primary().samples();
+    if (run == state.run->id() && count == samples.size()) return;
+    run = state.run->id();
+    count = samples.size();
+    series = project_series(samples);
+    // Each sample's P is over a few hits: the loop is drawn with the running wall average
+    // over 3 % of the run, as in the CLI's pv-loop figure.
+    if (plots.pv_loop) loop = report::pv_loop(samples, 0.015 * state.preset.duration);
+    if (plots.speeds) {
+      // About sqrt(n) bins: enough particles in each to see the shape.
+      const std::size_t n = state.run->system().particles.size();
+      const int bins = std::clamp(int(std::lround(std::sqrt(double(n)))), 5, 40);
+      speeds = swarm::check_speeds(state.run->system(), bins);
+      histogram = histogram_series(speeds.histogram);
+    }
+  }
+};
+
+ProjectCache cache;
+
+ImU32 line(const Colour& c) { return c.packed(); }
+
+}  // namespace
+
+int project_plot_count(const swarm::Preset& preset) {
+  const ProjectPlots p = project_plots_for(preset);
+  return int(p.motion) + int(p.books) + int(p.pv_loop) + int(p.speeds);
+}
+
+void draw_projects_tab(AppState& state, float plot_height) {
+  const ProjectPlots plots = project_plots_for(state.preset);
+  if (!plots.any()) {
+    ImGui::TextWrapped(
+        "Plots for the Appendix B projects: gravity, a floor, drag, moving or hot walls, hard "
+        "spheres. This preset has none of them: switch one on under 'Gravity, floor, drag' or "
+        "'Walls and spheres', or open a project preset under Scenario.");
+    return;
+  }
+  cache.update(state, plots);
+  const Palette& c = current_palette();
+  const ProjectSeries& s = cache.series;
+  const PlotAxis time{"t (time)", false, std::nullopt, std::nullopt};
+
+  if (plots.motion) {
+    PlotSpec m;
+    m.title = "CM height and size";
+    m.x = time;
+    m.y = {"length", false, std::nullopt, std::nullopt};
+    m.y_from_zero = true;
+    m.series = {{"CM height z", &s.t, &s.cm_height, line(c.pressure), false, 2.0f},
+                {"size: rms distance from the CM", &s.t, &s.size, line(c.temperature), false,
+                 2.0f}};
+    draw_plot("project_motion", m, plot_height);
+  }
+  if (plots.books) {
+    PlotSpec b;
+    // A short title: the axis label and its power-of-ten factor share the line. The sum is
+    // drawn wide underneath, so E - E0 and a lone book on top of it stay visible.
+    b.title = "Energy books";
+    b.x = time;
+    b.y = {"energy", false, std::nullopt, std::nullopt};
+    b.y_from_zero = true;
+    b.series = {{"sum: work + heat - drag loss", &s.t, &s.net, line(c.energy_drift), false, 6.0f},
+                {"E - E\u2080", &s.t, &s.energy_change, line(c.total_energy), false, 2.0f},
+                {"work by the walls", &s.t, &s.wall_work, line(c.pressure), false, 1.5f},
+                {"heat from the wall", &s.t, &s.wall_heat, line(c.temperature), false, 1.5f},
+                {"drag loss", &s.t, &s.drag_loss, line(c.kinetic), false, 1.5f}};
+    draw_plot("project_books", b, plot_height);
+  }
+  if (plots.pv_loop) {
+    const report::PvLoop& l = cache.loop;
+    PlotSpec p;
+    p.title = "P-V loop";
+    p.x = {"V = 4/3 \u03c0 R\u00b3 (length\u00b3)", false, std::nullopt, std::nullopt};
+    p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
+    p.y_from_zero = true;
+    p.empty_message = "waiting for the wall to move";
+    p.series = {{"wall moving in (P: running mean)", &l.V_in, &l.P_in, line(c.pressure), false,
+                 2.0f}};
+    if (!l.V_out.empty())
+      p.series.push_back(
+          {"wall moving out", &l.V_out, &l.P_out, line(c.temperature), false, 2.0f});
+    draw_plot("project_pv", p, plot_height);
+  }
+  if (plots.speeds) {
+    const HistogramSeries& h = cache.histogram;
+    char maxwell[64];
+    std::snprintf(maxwell, sizeof maxwell, "Maxwellian at their T = %.4g", cache.speeds.T);
+    PlotSpec v;
+    v.title = "Speeds now";
+    v.x = {"speed v \u221a(m/T)", false, 0.0, cache.speeds.histogram.x_max};
+    v.y = {"probability density", false, std::nullopt, std::nullopt};
+    v.y_from_zero = true;
+    v.empty_message = "no motion yet: T = 0";
+    v.series = {{"the particles now", &h.x, &h.measured, line(c.kinetic), true, 2.0f},
+                {maxwell, &h.x, &h.maxwell, line(c.fit), false, 2.0f}};
+    draw_plot("project_speeds", v, plot_height);
+  }
+}
+
+}  // namespace swarmlab

@@ -1,0 +1,52 @@
+#pragma once
+// Draws every particle as a shaded sphere impostor in one draw call fed by one buffer upload
+// per frame: instanced camera-facing quads for small systems, point sprites for large ones.
+
+#include <cstdint>
+#include <vector>
+
+#include "ui/view/camera.h"
+#include "ui/view/colour_map.h"
+#include "ui/platform/gl_api.h"
+
+namespace swarmlab {
+
+/// One particle as the GPU sees it: 20 bytes.
+struct ParticleInstance {
+  float x, y, z;
+  float radius;  ///< world units
+  Rgba8 colour;
+};
+
+enum class ParticleStyle {
+  solid,  ///< lit spheres
+  ghost,  ///< hollow rings: the analytic positions beside a numerical run
+};
+
+class ParticleRenderer {
+ public:
+  ParticleRenderer();
+  ~ParticleRenderer();
+  ParticleRenderer(const ParticleRenderer&) = delete;
+  ParticleRenderer& operator=(const ParticleRenderer&) = delete;
+
+  /// Draws into the view rectangle. framebuffer_scale converts ImGui pixels to framebuffer
+  /// pixels (HiDPI screens); window_height is in ImGui pixels.
+  void draw(const std::vector<ParticleInstance>& particles, ParticleStyle style,
+            const OrbitCamera& camera, const ViewRect& rect, float framebuffer_scale,
+            float window_height);
+
+ private:
+  struct Program {
+    Program(const char* name, const char* vertex_source, const char* corner_source);
+    GLuint id = 0;
+    GLint view, projection, ghost, min_radius, pixels_per_unit, max_point_size;
+  };
+
+  Program quads_, sprites_;
+  GLuint quad_vao_ = 0, sprite_vao_ = 0, corner_buffer_ = 0, instance_buffer_ = 0;
+  float max_point_size_ = 64;
+  std::size_t capacity_ = 0;
+};
+
+}  // namespace swarmlab

@@ -1,0 +1,69 @@
+#pragma once
+/// The fast engine: Appendix A (paper collisions, analytic method) at a cost that grows with
+/// the number of wall hits rather than with N times the number of steps.
+///
+/// Each lab position is split as r_i(t) = y_i(t) + o(t). y_i is a free oscillator about the
+/// origin (y'' = -k y, k = J M) that changes only at particle i's own wall hits; o = R_cm - Y,
+/// with Y = sum m_i y_i / M, is one shared 3-vector. Right after a re-base y_i is particle i's
+/// displacement from the CM and Y = 0; later hits move Y away from 0. A hit of particle j changes
+/// v_j by dv: that is y_j's velocity alone, plus m_j dv / M on the shared R_cm and Y velocities,
+/// whose difference o' does not change. So a hit costs O(1), not O(N).
+///
+/// |y_i(t)|^2 is a constant plus a sinusoid in 2 omega t (exponentials for J < 0, a quadratic
+/// for J = 0), so the first time particle i can come within a margin G of the wall is known
+/// in closed form (core/src/engine/fast_engine_window.h); a particle is checked only in the steps it
+/// is due, which a timing wheel keeps (core/src/engine/timing_wheel.h). Within a few steps of that
+/// window its exact predicted positions at the next step ends are looked at
+/// (core/src/engine/fast_engine_lookahead.h), so it is checked again only when it can actually hit.
+/// Positions are materialised only when system() is called.
+///
+/// The margin G must bound |o|. An "anchor" (core/src/engine/fast_engine_anchor.h) fixes the
+/// coordinates a schedule is made in: y_i minus Y's path as it was when the anchor was set, so
+/// that the anchor's offset moves only with the CM and the later kicks. A particle keeps its
+/// window, and the anchor it was made in, until its next hit; the anchor stays valid while its
+/// offset stays within its margin, which is checked every step, and when it does not the
+/// particles relying on it are rescheduled. When J < 0 the kicks' effect grows like
+/// exp(Omega t), so a new anchor is set every few steps (O(1)); the engine also re-bases now
+/// and then, folding Y into every y_i (O(N)), to keep the digits of the y_i, which the
+/// anchors carry over.
+///
+/// The particles are split into two lanes by index, checked on two threads when
+/// EngineConfig::threads is 2 (core/src/engine/two_lane_worker.h); the lanes' sums are combined in
+/// lane order, so the results do not depend on the thread count.
+///
+/// The engine reproduces the reference engine's wall hits step by step (same predicate on the
+/// same prediction, evaluated from an algebraically identical state) up to rounding.
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "swarm/engine/engine.h"
+
+namespace swarm {
+
+/// Whether make_fast_engine can run this configuration: the analytic method with paper
+/// collisions (with a container or without: isolated, it is the analytic solution).
+bool fast_engine_applies(const EngineConfig& config);
+
+/// The most particles the fast engine takes (ids are packed into 26 bits).
+inline constexpr std::size_t kMaxFastEngineParticles = std::size_t(1) << 26;
+
+/// Throws std::invalid_argument when !fast_engine_applies(config) or there are more than
+/// kMaxFastEngineParticles particles.
+std::unique_ptr<Engine> make_fast_engine(System initial, const EngineConfig& config);
+
+/// Work counters of a fast engine, for benchmarks and tests.
+struct FastEngineStats {
+  std::int64_t checks = 0;          ///< particles whose hit predicate was evaluated
+  std::int64_t hits = 0;            ///< wall hits
+  std::int64_t rebases = 0;         ///< O(N) re-bases (each sets a new anchor)
+  std::int64_t reschedules = 0;     ///< O(N) full reschedules (radius or dt changed)
+  std::int64_t expired = 0;         ///< particles rescheduled because their anchor expired
+  std::int64_t parallel_steps = 0;  ///< steps whose checks ran on two threads
+};
+
+/// The counters of engine if it is a fast engine, else nothing.
+std::optional<FastEngineStats> fast_engine_stats(const Engine& engine);
+
+}  // namespace swarm

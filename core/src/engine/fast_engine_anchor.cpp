@@ -1,0 +1,47 @@
+#include "engine/fast_engine_anchor.h"
+
+#include <algorithm>
+
+namespace swarm::fast {
+namespace {
+
+// A margin's width beyond the anchor's current offset, as a fraction of the wall radius, at
+// least; and how many time units 1 / sqrt|k| of CM drift it should absorb.
+constexpr double kMarginFloor = 0.004;
+constexpr double kMarginDriftTimes = 4;
+// At most N / kShellBudget particles within reach of a widened margin (J > 0).
+constexpr std::size_t kShellBudget = 100;
+
+}  // namespace
+
+Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in) {
+  const double Rw = in.R;
+  constexpr int kBins = GapHistogram::kBins;
+  double extra = kMarginFloor * Rw;
+  if (in.k != 0) extra = std::max(extra, kMarginDriftTimes * in.cm_speed / in.omega);
+  if (in.k > 0) {
+    const std::size_t budget = std::max<std::size_t>(64, in.particles / kShellBudget);
+    std::size_t within = 0;
+    int bin = 0;
+    while (bin < kBins && within + in.gaps->counts[std::size_t(bin)] <= budget)
+      within += in.gaps->counts[std::size_t(bin++)];
+    extra = std::max(extra, 0.5 * Rw * bin / kBins);
+  }
+  extra = std::min(extra, 0.5 * Rw);
+  anchor.margin = base + extra;
+  anchor.threshold = Rw - anchor.margin;
+  anchor.threshold2 = anchor.threshold * anchor.threshold;
+  anchor.renew_level = base + 0.5 * extra;
+  return anchor;
+}
+
+void Anchors::move_all_to_current(const std::array<std::size_t, 2>& lane_sizes) {
+  old_.clear();
+  std::fill(anchor_of_.begin(), anchor_of_.end(), current_.id);
+  for (std::size_t lane = 0; lane < relying_.size(); ++lane) {
+    relying_[lane].count.fill(0);
+    relying_[lane].count[current_.id] = std::int32_t(lane_sizes[lane]);
+  }
+}
+
+}  // namespace swarm::fast

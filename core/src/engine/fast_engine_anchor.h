@@ -1,0 +1,160 @@
+#pragma once
+// The coordinates the fast engine's schedules are made in (anchors) and the margins that keep
+// them valid; and the shared motion every particle's lab position adds to its oscillation.
+//
+// [SECTION] Shared motion: r_i = y_i + o, o = R_cm - Y
+// [SECTION] Anchors: coordinates y_i minus a reference path, valid within a margin
+// [SECTION] Margins: how wide a new anchor's margin is
+// [SECTION] The anchors in use: the current one, older ones still relied on, expiry
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "swarm/physics/flow.h"
+#include "swarm/physics/system.h"
+#include "engine/timing_wheel.h"
+
+namespace swarm::fast {
+
+// [SECTION] Shared motion
+
+/// What every particle's lab position adds to its own free oscillation y_i about the origin:
+/// r_i = y_i + o with o = R_cm - Y. R_cm moves uniformly; Y = sum m_i y_i / M = c aY + s bY,
+/// c and s the flow over the time since the current epoch began.
+struct SharedMotion {
+  Vec3 R_cm = Vec3::Zero(), V_cm = Vec3::Zero();  ///< at the current time
+  Vec3 aY = Vec3::Zero(), bY = Vec3::Zero();
+
+  /// o at dt_ahead after the current time, f being the flow at that time.
+  Vec3 offset_at(const Flow& f, double dt_ahead) const {
+    return R_cm + V_cm * dt_ahead - (f.c * aY + f.s * bY);
+  }
+  /// o' at the current time, f being the flow then.
+  Vec3 offset_velocity_at(const Flow& f) const { return V_cm - (f.dc() * aY + f.c * bY); }
+};
+
+// [SECTION] Anchors
+
+/// A choice of coordinates y_i - (c p + s q) for the particles' wall windows. Schedules made
+/// in it assume that the anchor's offset, o + c p + s q, stays within its margin at every
+/// step end, so that a particle can reach the wall only where |y_i - (c p + s q)| >= R -
+/// margin. An anchor takes p, q from Y when it starts, so that its offset then moves only
+/// with the CM and the later kicks; re-bases carry p, q over into the new epoch.
+struct Anchor {
+  std::uint8_t id = 0;                   ///< ids are 8 bits and wrap
+  StepIndex start = 0;                   ///< the step in which it became current
+  double margin = 0;                     ///< length
+  double threshold = 0, threshold2 = 0;  ///< T = R - margin and T^2: the windows' radius
+  double renew_level = 0;  ///< while current: start a new anchor when the offset passes this
+  Vec3 p = Vec3::Zero(), q = Vec3::Zero();
+
+  /// The anchor's offset o + c p + s q at dt_ahead after the current time (f: the flow then).
+  Vec3 offset(const SharedMotion& motion, const Flow& f, double dt_ahead) const {
+    return motion.offset_at(f, dt_ahead) + f.c * p + f.s * q;
+  }
+};
+
+// [SECTION] Margins
+
+/// How many particles' largest |y| (J > 0) falls short of the reach R - |R_cm| by between
+/// b and b + 1 bins of 0.5 R / kBins: how many a margin of a given width lets near the wall.
+struct GapHistogram {
+  static constexpr int kBins = 128;
+  std::array<std::size_t, kBins> counts{};
+
+  /// The bin of a particle whose largest |y|^2 is max_y2; bins_per_length = kBins / (0.5 R).
+  static std::size_t bin_of(double max_y2, double reach, double bins_per_length) {
+    // (reach^2 - max |y|^2) / (2 reach) is at most the gap, which errs on the safe side.
+    const double gap = (reach * reach - max_y2) / (2 * reach);
+    return std::size_t(std::clamp(gap * bins_per_length, 0.0, kBins - 1.0));
+  }
+};
+
+/// What a new anchor's margin depends on.
+struct MarginInputs {
+  double R = 1;         ///< the wall's radius
+  double k = 0;         ///< J M
+  double omega = 0;     ///< sqrt|k|
+  double cm_speed = 0;  ///< |V_cm|
+  std::size_t particles = 0;
+  const GapHistogram* gaps = nullptr;  ///< J > 0: from the last epoch's start
+};
+
+/// An anchor whose offset is `base` from the centre now. Its margin covers that, the drift of
+/// the CM over a few time units, and, when few particles can come near the wall (the
+/// attractive expansion's later stages), as much more as leaves at most N / 100 of them
+/// within reach: a wide margin then costs little and lets the anchor live long.
+Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in);
+
+// [SECTION] The anchors in use
+
+/// The current anchor, the older ones that particles still rely on, and which anchor each
+/// particle's window was made in. A particle keeps its window, and the anchor it relies on,
+/// until its next hit or until that anchor expires. Counts are kept per lane, so that the
+/// two lanes of the engine can move their particles to the current anchor at the same time.
+class Anchors {
+ public:
+  /// Beyond this many old anchors, the oldest is expired.
+  static constexpr std::size_t kMaxOld = 64;
+
+  explicit Anchors(std::size_t particles) : anchor_of_(particles, 0) {}
+
+  const Anchor& current() const { return current_; }
+  std::vector<Anchor>& old() { return old_; }
+  /// The id the next anchor gets.
+  std::uint8_t next_id() { return next_id_++; }
+  /// Keeps the current anchor as an old one, for the particles that rely on it.
+  void retire_current() { old_.push_back(current_); }
+  /// Makes `next` current (without keeping the previous one: retire_current() does).
+  void make_current(const Anchor& next) { current_ = next; }
+
+  bool relies_on_current(std::uint32_t i) const { return anchor_of_[i] == current_.id; }
+  std::uint8_t anchor_of(std::size_t i) const { return anchor_of_[i]; }
+  /// Particle i (of lane `lane`) relies on the current anchor from now on.
+  void move_to_current(std::uint32_t i, int lane) {
+    auto& relying = relying_[std::size_t(lane)].count;
+    --relying[anchor_of_[i]];
+    ++relying[current_.id];
+    anchor_of_[i] = current_.id;
+  }
+  /// Every particle relies on the current anchor, and no old one is kept.
+  /// lane_sizes: how many particles each lane has.
+  void move_all_to_current(const std::array<std::size_t, 2>& lane_sizes);
+
+  /// Drops the old anchors no particle relies on any more, and expires those whose offset
+  /// leaves their margin at dt after the current time (f1: the flow then), and the oldest
+  /// beyond kMaxOld: expire(id) must reschedule the particles relying on anchor id.
+  template <class Expire>
+  void drop_expired(const SharedMotion& motion, const Flow& f1, double dt, Expire expire) {
+    for (std::size_t j = 0; j < old_.size();) {
+      const Anchor& a = old_[j];
+      std::int64_t relying = 0;
+      for (const Relying& lane : relying_) relying += lane.count[a.id];
+      const bool too_many = j == 0 && old_.size() > kMaxOld;
+      if (relying == 0 || too_many ||
+          a.offset(motion, f1, dt).squaredNorm() > a.margin * a.margin) {
+        if (relying > 0) expire(a.id);
+        old_.erase(old_.begin() + long(j));
+      } else {
+        ++j;
+      }
+    }
+  }
+
+ private:
+  // One cache line apart: each lane's thread writes its own counts.
+  struct alignas(64) Relying {
+    std::array<std::int32_t, 256> count{};
+  };
+
+  Anchor current_;
+  std::vector<Anchor> old_;
+  std::uint8_t next_id_ = 0;
+  std::vector<std::uint8_t> anchor_of_;  // scanned on expiry
+  std::array<Relying, 2> relying_;       // per lane: how many particles rely on each anchor
+};
+
+}  // namespace swarm::fast

@@ -1,0 +1,91 @@
+#pragma once
+// Closed-form wall windows of a free oscillator, used by the fast engine's scheduler.
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "swarm/physics/flow.h"
+#include "swarm/physics/system.h"
+
+namespace swarm::fast {
+
+/// The times at which a free oscillator h(tau) = c(tau) a + s(tau) b (Flow::over(k, tau))
+/// is at least sqrt(T2) from the origin, in two numbers, widened to cover their own rounding.
+/// tau counts from the start of the oscillator's epoch, which began at time t0; the numbers
+/// are given in time counted from 0, so that they stay valid when the engine starts a new
+/// epoch for the same motion. phase_origin is t0 in the numbers' units: 2 sqrt|k| t0 when
+/// J != 0, t0 when J = 0.
+/// J > 0: |h|^2 = P + A cos(2 omega tau - phi), so the window is |2 omega tau - phi| <= alpha
+///        modulo 2 pi (first = phi, second = alpha; alpha < 0: never, alpha >= pi: always).
+/// J < 0: E (|h|^2 - T2) is a quadratic in E = exp(2 Omega tau) with positive leading
+///        coefficient: the window is E <= E- or E >= E+, i.e. 2 Omega tau <= first = log E-
+///        or >= second = log E+.
+/// J = 0: |h|^2 - T2 is a quadratic in tau: the window is tau <= first or tau >= second.
+struct Window {
+  double first = 0, second = 0;
+};
+
+/// The oscillator's k = J M and 1 / sqrt|k| (0 when k = 0).
+struct Spring {
+  double k = 0, inv_omega = 0;
+};
+
+/// For J > 0, with B = b / omega and theta = omega tau:
+/// |h|^2 = P + Q cos(2 theta) + S sin(2 theta) = P + A cos(2 theta - phi), so |h| swings
+/// between sqrt(P - A) and sqrt(P + A).
+struct Swing {
+  double P, Q, S, A;
+};
+
+inline Swing swing_of(const Vec3& a, const Vec3& b, double inv_omega) {
+  const Vec3 B = b * inv_omega;
+  const double aa = a.squaredNorm(), BB = B.squaredNorm();
+  const double Q = 0.5 * (aa - BB), S = a.dot(B);
+  return {0.5 * (aa + BB), Q, S, std::sqrt(Q * Q + S * S)};
+}
+
+Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
+                 double phase_origin);
+
+/// The window of a motion that is at least sqrt(T2) from the origin at all times (T2 <= 0).
+Window always_window(double k);
+
+/// The time from which a schedule looks for the window: the end of a step, counted from 0.
+/// The windows' phase is phase_per_time * time: 2 sqrt|k| t when J != 0, t itself when J = 0.
+struct Clock {
+  double k = 0, phase_per_time = 1;
+  double steps_per_phase = 0;  ///< 1 / (phase_per_time dt)
+  double time = 0;
+};
+
+/// Where the window lies, in steps after the clock's step: it begins `begin` steps after it
+/// (0: it already has; +infinity: never) and ends `end` steps after it (+infinity: it lasts).
+/// Not rounded: the caller rounds begin down and end up, with a safety margin.
+struct Span {
+  double begin = 0, end = 0;
+};
+
+inline Span span_of(const Window& w, const Clock& clock) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  constexpr double kTwoPi = 2 * M_PI;
+  if (clock.k > 0) {
+    const double phi = w.first, alpha = w.second;
+    if (alpha < 0) return {kInf, kInf};
+    if (alpha >= M_PI) return {0, kInf};
+    const double x = clock.phase_per_time * clock.time - phi;
+    // x minus the nearest multiple of 2 pi, in [-pi, pi] (|x| stays far below 2^53).
+    const double turns = x * (1 / kTwoPi);
+    const double psi = x - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
+    if (std::abs(psi) <= alpha) return {0, (alpha - psi) * clock.steps_per_phase};
+    const double ahead = psi > alpha ? kTwoPi - alpha - psi : -alpha - psi;
+    return {ahead * clock.steps_per_phase, (ahead + 2 * alpha) * clock.steps_per_phase};
+  }
+  // J <= 0: the window is x <= first or x >= second.
+  const double x = clock.phase_per_time * clock.time;
+  if (x <= w.first) return {0, (w.first - x) * clock.steps_per_phase};
+  if (x >= w.second) return {0, kInf};
+  return {(w.second - x) * clock.steps_per_phase, kInf};  // +infinity when second is
+}
+
+}  // namespace swarm::fast

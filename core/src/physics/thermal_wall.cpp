@@ -1,0 +1,56 @@
+#include "swarm/physics/thermal_wall.h"
+
+#include <cmath>
+
+#include "math/portable_math.h"
+
+namespace swarm {
+namespace {
+
+/// SplitMix64's finaliser: a bijection of 64 bits whose outputs pass BigCrush as a counter
+/// generator.
+std::uint64_t mix(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+/// (0, 1]: the top 53 bits, plus one, over 2^53; never 0, so its log is finite.
+double unit_interval(std::uint64_t bits) { return double((bits >> 11) + 1) * 0x1.0p-53; }
+
+}  // namespace
+
+void thermal_uniforms(const ThermalDraw& key, double u[3]) {
+  const std::uint64_t base = mix(mix(key.step + 0x9e3779b97f4a7c15ULL) ^ key.particle);
+  for (int i = 0; i < 3; ++i) u[i] = unit_interval(mix(base + std::uint64_t(i + 1) * 0x9e3779b97f4a7c15ULL));
+}
+
+void reemit_from_thermal_wall(Particle& p, double Tw, const ThermalDraw& key, WallTally& tally) {
+  const Vec3 n = p.r.normalized();
+  const double v_r = p.v.dot(n);
+  const double kinetic_before = 0.5 * p.m * p.v.squaredNorm();
+
+  double u[3];
+  thermal_uniforms(key, u);
+  const double sigma = std::sqrt(Tw / p.m);
+  // Rayleigh by inversion; the tangential pair by Box-Muller.
+  const double v_n = sigma * std::sqrt(-2 * portable::log(u[0]));
+  const double g = sigma * std::sqrt(-2 * portable::log(u[1]));
+  double s = 0, c = 0;
+  portable::sincos(2 * M_PI * u[2], &s, &c);
+  // Two unit tangents: n x a with a the axis least aligned with n, then n x t1.
+  const Vec3 a = std::abs(n.x()) < 0.5 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 t1 = n.cross(a).normalized();
+  const Vec3 t2 = n.cross(t1);
+  const Vec3 v_out = -v_n * n + g * c * t1 + g * s * t2;
+
+  const Vec3 dv = v_out - p.v;
+  p.v = v_out;
+  tally.hits += 1;
+  tally.radial_impulse += p.m * (std::abs(v_r) + v_n);
+  tally.hit_kinetic_energy += kinetic_before;
+  tally.wall_momentum -= p.m * dv;
+  tally.books.wall_heat += 0.5 * p.m * v_out.squaredNorm() - kinetic_before;
+}
+
+}  // namespace swarm

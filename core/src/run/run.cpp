@@ -1,0 +1,203 @@
+#include "swarm/run/run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "run/advance_to_end.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/physics/gravity.h"
+
+namespace swarm {
+
+double relative_energy_change(double E0, double E_end, double energy_scale) {
+  const double scale = E0 != 0 ? std::abs(E0) : energy_scale;
+  return scale > 0 ? (E_end - E0) / scale : 0.0;
+}
+
+double relative_energy_change(const Sample& start, double E) {
+  return relative_energy_change(start.E, E, start.KE + std::abs(start.PE));
+}
+
+std::vector<WallInterval> wall_intervals(const std::vector<Sample>& samples) {
+  std::vector<WallInterval> out;
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    const Sample& s = samples[i];
+    out.push_back({s.t, s.t - samples[i - 1].t, {s.P, s.T, s.hits}});
+  }
+  return out;
+}
+
+Run::Run(System initial, const RunPlan& plan)
+    : Run(make_engine(std::move(initial), plan.engine), plan) {}
+
+Run::Run(std::unique_ptr<Engine> engine, const RunPlan& plan)
+    : engine_(std::move(engine)), plan_(plan) {
+  const EnergyParts energy = energy_now();
+  E0_ = energy.kinetic + energy.potential;
+  energy_scale_ = energy.kinetic + std::abs(energy.potential);
+  samples_.push_back(sample_now());
+  if (plan_.expansion)
+    protocol_steps_ = plan_.expansion->stages * steps_per_stage(*plan_.expansion, plan_.dt);
+  else
+    open_stage_by_hand();
+}
+
+EnergyParts Run::energy_now() {
+  const System& s = engine_->system();
+  EnergyParts e = energy_parts(s);
+  const Vec3& g = plan_.engine.forces.gravity;
+  if (g != Vec3::Zero()) e.potential += gravity_potential_energy(s, g);
+  return e;
+}
+
+Run::Run(const Run& other)
+    : engine_(other.engine_->clone()),
+      plan_(other.plan_),
+      steps_done_(other.steps_done_),
+      wall_hits_(other.wall_hits_),
+      floor_hits_(other.floor_hits_),
+      books_(other.books_),
+      E0_(other.E0_),
+      energy_scale_(other.energy_scale_),
+      sample_meter_(other.sample_meter_),
+      stage_meter_(other.stage_meter_),
+      samples_(other.samples_),
+      stages_(other.stages_),
+      failure_(other.failure_),
+      protocol_steps_(other.protocol_steps_),
+      hand_stage_start_(other.hand_stage_start_),
+      hand_tallies_(other.hand_tallies_) {}
+
+void Run::open_stage_by_hand() {
+  if (!plan_.stages_by_hand || !engine_->container_radius()) return;
+  hand_stage_start_ = steps_done_;
+  hand_tallies_.clear();
+}
+
+void Run::expand_now(double factor) {
+  const std::optional<double> R = engine_->container_radius();
+  if (!R) return;
+  if (stage_by_hand_open() && steps_done_ > hand_stage_start_) {
+    // The protocol's window: the steps of the stage from index lround(f * length) on.
+    const double f = plan_.expansion ? plan_.expansion->thermalize_fraction
+                                     : ExpansionProtocol{}.thermalize_fraction;
+    const long length = steps_done_ - hand_stage_start_;
+    const WallReading w = hand_tallies_.reading(std::lround(f * double(length)), plan_.dt, *R);
+    stages_.push_back(
+        {*R, sphere_volume(*R), w.P, w.T, total_energy(engine_->system()), w.hits, true});
+  }
+  engine_->set_container_radius(*R * factor);
+  if (stage_by_hand_open()) open_stage_by_hand();
+}
+
+void Run::extend(long steps) { plan_.steps += std::max(0L, steps); }
+
+Sample Run::sample_now() {
+  const System& s = engine_->system();
+  Sample out;
+  out.t = s.t;
+  const WallReading w = sample_meter_.reading();
+  out.P = w.P;
+  out.T = w.T;
+  out.hits = w.hits;
+  const EnergyParts energy = energy_now();
+  out.KE = energy.kinetic;
+  out.PE = energy.potential;
+  out.E = out.KE + out.PE;
+  out.R = engine_->container_radius().value_or(0.0);
+  out.books = books_;
+  const Vec3 cm = cm_position(s);
+  out.cm_height = cm.z();
+  out.size = rms_distance_from_cm(s);
+  sample_meter_.reset();
+  return out;
+}
+
+void Run::step_once() {
+  const double R = engine_->container_radius().value_or(0.0);
+  const WallTally tally = engine_->step(plan_.dt);
+  ++steps_done_;
+  wall_hits_ += tally.hits;
+  floor_hits_ += tally.floor_hits;
+  books_.add(tally.books);
+  sample_meter_.add(tally, plan_.dt, R);
+
+  if (stage_by_hand_open()) hand_tallies_.push(tally);
+  if (plan_.expansion && steps_done_ <= protocol_steps_) {
+    const ExpansionProtocol& e = *plan_.expansion;
+    const long per_stage = steps_per_stage(e, plan_.dt);
+    const long in_stage = (steps_done_ - 1) % per_stage;  // index of the step just taken
+    if (in_stage >= std::lround(e.thermalize_fraction * double(per_stage)))
+      stage_meter_.add(tally, plan_.dt, R);
+    if (in_stage == per_stage - 1) {
+      const WallReading w = stage_meter_.reading();
+      const EnergyParts energy = energy_now();
+      stages_.push_back({R, sphere_volume(R), w.P, w.T, energy.kinetic + energy.potential, w.hits});
+      stage_meter_.reset();
+      if (long(stages_.size()) < e.stages) engine_->set_container_radius(R * e.factor);
+    }
+    if (steps_done_ == protocol_steps_) open_stage_by_hand();
+  }
+  if (steps_done_ % plan_.sample_every == 0 || steps_done_ == plan_.steps) {
+    samples_.push_back(sample_now());
+    check_finite(samples_.back());
+  }
+}
+
+void Run::check_finite(const Sample& s) {
+  const std::pair<const char*, double> quantities[] = {
+      {"t", s.t}, {"P", s.P}, {"T", s.T}, {"KE", s.KE}, {"PE", s.PE}, {"E", s.E}, {"R", s.R}};
+  for (const auto& [name, value] : quantities)
+    if (!std::isfinite(value)) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "step %ld (t = %.6g): %s is not finite (%g)", steps_done_, s.t,
+                    name, value);
+      failure_ = buf;
+      return;
+    }
+}
+
+long Run::advance(long n) {
+  long taken = 0;
+  while (taken < n && !finished()) {
+    step_once();
+    ++taken;
+  }
+  return taken;
+}
+
+void Run::finish(const std::function<void(double)>& progress) {
+  advance_to_end([this](long n) { advance(n); }, [this] { return finished(); },
+                 [this] { return double(steps_done_) / double(plan_.steps); }, progress);
+}
+
+StageFits Run::fits() const {
+  std::vector<double> V, P, T;
+  for (const Stage& s : stages_) {
+    V.push_back(s.V);
+    P.push_back(s.P);
+    T.push_back(s.T);
+  }
+  return {fit_power_law(V, P), fit_power_law(V, T), fit_power_law(T, P)};
+}
+
+RunSummary Run::summary() {
+  const EnergyParts energy = energy_now();
+  const System& s = engine_->system();
+  RunSummary out;
+  out.M = total_mass(s);
+  out.omega = std::sqrt(std::abs(s.J) * out.M);
+  out.E0 = E0_;
+  out.E_end = energy.kinetic + energy.potential;
+  out.energy_drift = relative_energy_change(E0_, out.E_end, energy_scale_);
+  out.wall_hits = wall_hits_;
+  out.steps = steps_done_;
+  out.t_end = s.t;
+  out.books = books_;
+  out.floor_hits = floor_hits_;
+  return out;
+}
+
+}  // namespace swarm

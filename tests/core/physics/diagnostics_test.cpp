@@ -1,0 +1,42 @@
+#include "swarm/physics/diagnostics.h"
+
+#include <doctest/doctest.h>
+
+#include "swarm/methods/integrators.h"
+#include "test_systems.h"
+
+using namespace swarm;
+using doctest::Approx;
+
+TEST_CASE("two bodies by hand: KE, PE = J m1 m2 d^2 / 2, momentum, angular momentum") {
+  System s;
+  s.J = 2.0;
+  s.particles = {{1.0, {0, 0, 0}, {1, 0, 0}}, {3.0, {2, 0, 0}, {0, 1, 0}}};
+  CHECK(kinetic_energy(s) == Approx(0.5 * 1 + 0.5 * 3));
+  CHECK(potential_energy_pairwise(s) == Approx(0.5 * 2.0 * 1 * 3 * 4));
+  CHECK(potential_energy_cm(s) == Approx(12.0));
+  CHECK(total_energy(s) == Approx(14.0));
+  CHECK((total_momentum(s) - Vec3(1, 3, 0)).norm() < 1e-15);
+  // CM at x = 1.5 moving at (0.25, 0.75); relative: (-1.5,0,0)x(0.75,-0.75,0) and
+  // (0.5,0,0)x(-0.25,0.25,0).
+  const Vec3 L = angular_momentum_cm(s);
+  CHECK(L.z() == Approx(1.0 * 1.5 * 0.75 + 3.0 * 0.5 * 0.25));
+}
+
+TEST_CASE("pairwise (eq. 8) and CM (eq. 13) potential energies agree for any J") {
+  for (double J : {1.3, -0.7, 0.0}) {
+    const System s = testing::random_swarm(300, J, 11, 2.0);
+    CHECK(potential_energy_cm(s) ==
+          Approx(potential_energy_pairwise(s)).epsilon(1e-12).scale(1e-300));
+  }
+}
+
+TEST_CASE("the pairwise integrators conserve momentum exactly (Newton's third law)") {
+  System s = testing::random_swarm(40, 1.0, 5);
+  const Vec3 P0 = total_momentum(s);
+  for (Method m : {Method::euler, Method::euler_cromer, Method::verlet, Method::rk4}) {
+    System n = s;
+    for (int i = 0; i < 50; ++i) step(m, n, 1e-2);
+    CHECK((total_momentum(n) - P0).norm() < 1e-11);
+  }
+}
