@@ -43,4 +43,10 @@ struct Figure {
   double width = 760;  ///< pixels; the height follows from the panels
 };
 
+/// A figure and the file stem it is saved under.
+struct NamedFigure {
+  std::string name;  ///< file stem, e.g. "loglog-P-V"
+  Figure figure;
+};
+
 }  // namespace swarmlab::report

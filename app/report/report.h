@@ -13,11 +13,6 @@
 
 namespace swarmlab::report {
 
-struct NamedFigure {
-  std::string name;  ///< file stem, e.g. "loglog-P-V"
-  Figure figure;
-};
-
 /// The most points a drawn series keeps (plotting/decimate.h), so that SVG files stay small.
 inline constexpr std::size_t kMaxPointsPerSeries = 2000;
 

@@ -4,7 +4,8 @@
 
 #include <optional>
 
-#include "report.h"
+#include "figure.h"
+#include "run_record.h"
 
 namespace swarmlab::report {
 
