@@ -16,8 +16,8 @@
 #include "swarm/engine/fast_engine.h"
 #include "swarm/methods/integrators.h"
 #include "swarm/preset/preset.h"
-#include "swarm/run/run.h"
 #include "swarm/preset/strict_json.h"
+#include "swarm/run/run.h"
 
 namespace {
 

@@ -12,11 +12,11 @@
 #include <utility>
 #include <vector>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/physics/system.h"
 #include "swarm/preset/initial_conditions.h"
 #include "swarm/preset/preset.h"
-#include "swarm/physics/system.h"
 
 namespace swarm::testing {
 

@@ -12,9 +12,9 @@
 #include "files/preset_file.h"
 #include "scenarios/process_memory.h"
 #include "scenarios/workloads.h"
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
 #include "swarm/engine/fast_engine.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/run/run.h"
 #include "swarm/run/side_by_side.h"
 

@@ -10,12 +10,12 @@
 #include <filesystem>
 
 #include "files/atomic_file.h"
-#include "screenshot.h"
-#include "ui/main_loop.h"
-#include "ui/lessons/lesson_scene.h"
 #include "lessons/lesson_file.h"
-#include "ui/platform/preset_store.h"
+#include "screenshot.h"
 #include "ui/classroom/presentation.h"
+#include "ui/lessons/lesson_scene.h"
+#include "ui/main_loop.h"
+#include "ui/platform/preset_store.h"
 
 namespace swarmlab {
 namespace {

@@ -6,9 +6,9 @@
 #include <variant>
 
 #include "plotting/decimate.h"
-#include "walls_figures.h"
-#include "swarm/physics/analytic.h"
 #include "swarm/measure/fit.h"
+#include "swarm/physics/analytic.h"
+#include "walls_figures.h"
 
 namespace swarmlab::report {
 namespace {

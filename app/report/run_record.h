@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "swarm/measure/speed_distribution.h"
 #include "swarm/preset/preset.h"
 #include "swarm/run/side_by_side.h"
-#include "swarm/measure/speed_distribution.h"
 
 namespace swarmlab::report {
 

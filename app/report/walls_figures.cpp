@@ -4,9 +4,9 @@
 #include <cstdio>
 
 #include "pv_loop.h"
-#include "swarm/run/run.h"
 #include "swarm/measure/thermometry.h"
 #include "swarm/physics/wall.h"
+#include "swarm/run/run.h"
 
 namespace swarmlab::report {
 

@@ -1,4 +1,5 @@
 #include "ui/app.h"
+
 #include "ui/platform/save_dialog.h"
 #include "ui/time/time_controls.h"
 
@@ -10,14 +11,14 @@
 #include <limits>
 #include <utility>
 
+#include "swarm/physics/system.h"
+#include "ui/classroom/presentation.h"
+#include "ui/input/shortcuts.h"
 #include "ui/lessons/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/plot_export.h"
-#include "ui/classroom/presentation.h"
-#include "ui/view/scene_overlay.h"
-#include "ui/input/shortcuts.h"
 #include "ui/time/timeline_strip.h"
-#include "swarm/physics/system.h"
+#include "ui/view/scene_overlay.h"
 
 namespace swarmlab {
 namespace {

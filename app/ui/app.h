@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "ui/app_state.h"
+#include "ui/input/touch_gestures.h"
 #include "ui/platform/save_dialog.h"
 #include "ui/view/particle_renderer.h"
-#include "ui/input/touch_gestures.h"
 
 namespace swarmlab {
 

@@ -10,15 +10,15 @@
 #include <vector>
 
 #include "access/theme_palette.h"
+#include "ui/classroom/screen_layout.h"
+#include "ui/lessons/lesson_session.h"
+#include "ui/platform/preset_store.h"
+#include "ui/platform/save_request.h"
+#include "ui/time/instruments.h"
+#include "ui/time/live_run.h"
+#include "ui/time/time_travel.h"
 #include "ui/view/camera.h"
 #include "ui/view/colour_map.h"
-#include "ui/time/instruments.h"
-#include "ui/lessons/lesson_session.h"
-#include "ui/time/live_run.h"
-#include "ui/platform/preset_store.h"
-#include "ui/classroom/screen_layout.h"
-#include "ui/time/time_travel.h"
-#include "ui/platform/save_request.h"
 
 namespace swarmlab {
 

@@ -1,4 +1,5 @@
 #include "ui/input/shortcuts.h"
+
 #include "ui/time/time_controls.h"
 
 #include <SDL.h>

@@ -3,6 +3,7 @@
 // [SECTION] the welcome window and the Lessons menu
 
 #include "ui/lessons/lesson_panel.h"
+
 #include "ui/lessons/lesson_scene.h"
 
 #include <imgui.h>

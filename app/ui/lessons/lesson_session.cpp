@@ -9,9 +9,9 @@
 
 #include "files/atomic_file.h"
 #include "lessons/lesson_file.h"
+#include "swarm/measure/thermometry.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
-#include "swarm/measure/thermometry.h"
 
 namespace swarmlab {
 namespace {

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ui/panels/panels.h"
 #include "swarm/physics/wall.h"
+#include "ui/panels/panels.h"
 
 namespace swarmlab {
 namespace {

@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "ui/panels/panels.h"
-#include "swarm/physics/regime.h"
 #include "swarm/measure/stopwatch.h"
+#include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
+#include "ui/panels/panels.h"
 
 namespace swarmlab {
 namespace {

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <string>
 
-#include "ui/panels/panels.h"
 #include "swarm/physics/particle_orbit.h"
 #include "swarm/physics/system.h"
+#include "ui/panels/panels.h"
 
 namespace swarmlab {
 namespace {

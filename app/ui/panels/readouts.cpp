@@ -8,10 +8,10 @@
 #include <optional>
 #include <string>
 
-#include "ui/panels/panels.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/wall.h"
+#include "ui/panels/panels.h"
 
 namespace swarmlab {
 namespace {

@@ -8,9 +8,9 @@
 #include <string>
 
 #include "labels/system_labels.h"
+#include "ui/classroom/theme_style.h"
 #include "ui/panels/panels.h"
 #include "ui/platform/save_dialog.h"
-#include "ui/classroom/theme_style.h"
 
 namespace swarmlab {
 

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "labels/system_labels.h"
+#include "swarm/physics/regime.h"
+#include "ui/classroom/presentation.h"
+#include "ui/classroom/theme_style.h"
 #include "ui/panels/panels.h"
 #include "ui/time/time_controls.h"
 #include "ui/time/timeline_strip.h"
-#include "ui/classroom/presentation.h"
-#include "ui/classroom/theme_style.h"
-#include "swarm/physics/regime.h"
 
 namespace swarmlab {
 namespace {

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "ui/panels/panels.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/panels/panels.h"
 
 namespace swarmlab {
 namespace {

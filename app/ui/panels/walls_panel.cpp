@@ -8,9 +8,9 @@
 #include <cmath>
 #include <string>
 
-#include "ui/panels/panels.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/wall_motion.h"
+#include "ui/panels/panels.h"
 
 namespace swarmlab {
 namespace {

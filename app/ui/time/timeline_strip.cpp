@@ -1,4 +1,5 @@
 #include "ui/time/timeline_strip.h"
+
 #include "ui/time/time_controls.h"
 
 #include <imgui.h>

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "ui/platform/gl_api.h"
 #include "ui/view/camera.h"
 #include "ui/view/colour_map.h"
-#include "ui/platform/gl_api.h"
 
 namespace swarmlab {
 

@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <optional>
 
+#include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/orbit_ahead.h"
 #include "swarm/physics/regime.h"
-#include "swarm/measure/speed_distribution.h"
 #include "ui/classroom/theme_style.h"
 
 namespace swarmlab {

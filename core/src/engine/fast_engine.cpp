@@ -24,10 +24,10 @@
 #include "engine/fast_engine_body.h"
 #include "engine/fast_engine_lookahead.h"
 #include "engine/fast_engine_window.h"
-#include "swarm/physics/flow.h"
-#include "swarm/physics/regime.h"
 #include "engine/timing_wheel.h"
 #include "engine/two_lane_worker.h"
+#include "swarm/physics/flow.h"
+#include "swarm/physics/regime.h"
 
 namespace swarm {
 namespace {

@@ -13,9 +13,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/timing_wheel.h"
 #include "swarm/physics/flow.h"
 #include "swarm/physics/system.h"
-#include "engine/timing_wheel.h"
 
 namespace swarm::fast {
 

@@ -8,10 +8,10 @@
 #include <limits>
 
 #include "engine/fast_engine_window.h"
+#include "engine/timing_wheel.h"
 #include "swarm/physics/flow.h"
 #include "swarm/physics/system.h"
 #include "swarm/physics/wall.h"
-#include "engine/timing_wheel.h"
 
 namespace swarm::fast {
 

@@ -7,8 +7,8 @@
 #include <cstddef>
 
 #include "engine/fast_engine_anchor.h"
-#include "swarm/physics/flow.h"
 #include "engine/timing_wheel.h"
+#include "swarm/physics/flow.h"
 
 namespace swarm::fast {
 

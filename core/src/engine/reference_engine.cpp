@@ -2,9 +2,9 @@
 #include <stdexcept>
 
 #include "swarm/engine/engine.h"
+#include "swarm/methods/integrators.h"
 #include "swarm/physics/flow.h"
 #include "swarm/physics/hard_spheres.h"
-#include "swarm/methods/integrators.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/thermal_wall.h"
 

@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "math/portable_math.h"
+#include "swarm/methods/integrators.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/flow.h"
 #include "swarm/physics/gravity.h"
-#include "swarm/methods/integrators.h"
 
 namespace swarm {
 namespace {

@@ -1,5 +1,5 @@
-#include "swarm/physics/flow.h"
 #include "swarm/methods/integrators.h"
+#include "swarm/physics/flow.h"
 #include "swarm/physics/regime.h"
 
 namespace swarm {

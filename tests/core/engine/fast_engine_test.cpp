@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "swarm/physics/analytic.h"
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
 #include "swarm/methods/integrators.h"
+#include "swarm/physics/analytic.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/preset/preset.h"
 #include "test_systems.h"
 

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
 #include "swarm/methods/integrators.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/run/side_by_side.h"
 #include "test_systems.h"
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "swarm/physics/analytic.h"
 #include "swarm/methods/integrators.h"
+#include "swarm/physics/analytic.h"
 #include "test_systems.h"
 
 using namespace swarm;

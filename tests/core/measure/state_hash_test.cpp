@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <string>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
 #include "swarm/engine/fast_engine.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/preset/initial_conditions.h"
 
 using namespace swarm;

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/methods/integrators.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
 #include "swarm/run/side_by_side.h"
 #include "test_systems.h"

@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "swarm/engine/engine.h"
+#include "swarm/engine/fast_engine.h"
+#include "swarm/methods/external_forces.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/drag.h"
-#include "swarm/engine/engine.h"
-#include "swarm/methods/external_forces.h"
-#include "swarm/engine/fast_engine.h"
 #include "test_systems.h"
 
 using namespace swarm;

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/physics/floor.h"
 #include "swarm/physics/gravity.h"
 #include "test_systems.h"

@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "swarm/physics/analytic.h"
 #include "swarm/engine/engine.h"
 #include "swarm/engine/fast_engine.h"
+#include "swarm/physics/analytic.h"
 #include "swarm/physics/gravity.h"
 #include "test_systems.h"
 

@@ -8,12 +8,12 @@
 #include <cmath>
 
 #include "math/portable_math.h"
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
-#include "swarm/physics/hard_spheres.h"
-#include "swarm/preset/initial_conditions.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/measure/state_hash.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/physics/hard_spheres.h"
+#include "swarm/preset/initial_conditions.h"
 
 using namespace swarm;
 

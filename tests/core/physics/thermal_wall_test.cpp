@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
-#include "swarm/preset/initial_conditions.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/measure/state_hash.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/physics/thermal_wall.h"
+#include "swarm/preset/initial_conditions.h"
 
 using namespace swarm;
 

@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
-#include "swarm/preset/initial_conditions.h"
 #include "swarm/measure/speed_distribution.h"
+#include "swarm/physics/diagnostics.h"
 #include "swarm/physics/wall_motion.h"
+#include "swarm/preset/initial_conditions.h"
 
 using namespace swarm;
 

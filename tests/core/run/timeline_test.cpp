@@ -6,9 +6,9 @@
 #include <map>
 #include <sstream>
 
+#include "swarm/measure/state_hash.h"
 #include "swarm/physics/analytic.h"
 #include "swarm/preset/preset.h"
-#include "swarm/measure/state_hash.h"
 #include "test_systems.h"
 
 using namespace swarm;

@@ -5,10 +5,10 @@
 #include <memory>
 #include <optional>
 
-#include "swarm/physics/collision_mode.h"
 #include "swarm/methods/external_forces.h"
-#include "swarm/physics/floor.h"
 #include "swarm/methods/method.h"
+#include "swarm/physics/collision_mode.h"
+#include "swarm/physics/floor.h"
 #include "swarm/physics/system.h"
 #include "swarm/physics/wall.h"
 #include "swarm/physics/wall_motion.h"

@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "swarm/physics/drag.h"
 #include "swarm/methods/method.h"
+#include "swarm/physics/drag.h"
 #include "swarm/physics/system.h"
 
 namespace swarm {

@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "swarm/physics/diagnostics.h"
 #include "swarm/engine/engine.h"
 #include "swarm/measure/fit.h"
-#include "swarm/run/run_plan.h"
 #include "swarm/measure/thermometry.h"
 #include "swarm/measure/wall_tally_log.h"
+#include "swarm/physics/diagnostics.h"
+#include "swarm/run/run_plan.h"
 
 namespace swarm {
 
