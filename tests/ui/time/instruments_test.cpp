@@ -1,0 +1,89 @@
+#include "ui/time/instruments.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "swarm/preset/preset.h"
+
+namespace swarmlab {
+namespace {
+
+swarm::Preset shipped(const std::string& name) {
+  std::ifstream in(std::string(SWARM_PRESET_DIR) + "/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  swarm::PresetParse parsed = swarm::parse_preset(text.str());
+  REQUIRE_MESSAGE(parsed.preset, parsed.error);
+  return *parsed.preset;
+}
+
+}  // namespace
+
+TEST_CASE("instruments: the selected particle's meter times its returns at 2 pi / sqrt(J M)") {
+  // Two unit masses 1 apart on a circle, J = 1: M = 2, omega = sqrt(2).
+  LiveRun run(shipped("two-body-circular.json"));
+  Instruments in;
+  const double period = 2 * M_PI / std::sqrt(1.0 * 2.0);
+  in.update(run, 0, 0, false);
+  REQUIRE(in.track);
+  // x about the centre of mass at the start: particle 0 sits at -0.5, the CM at 0.
+  CHECK(in.track->x_start == doctest::Approx(-0.5).epsilon(1e-15));
+  while (run.time() < 1.8 * period) {
+    run.advance(1);
+    in.update(run, 0, 0, false);
+  }
+  REQUIRE(in.track->meter.period());
+  CHECK(*in.track->meter.period() == doctest::Approx(period).epsilon(1e-6));
+  // One record a frame, each x(t) = -0.5 cos(omega t) on the circle.
+  REQUIRE(in.track->t.size() == in.track->x.size());
+  const double t = in.track->t.back();
+  CHECK(in.track->x.back() == doctest::Approx(-0.5 * std::cos(std::sqrt(2.0) * t)).epsilon(1e-9));
+  // The stopwatch reads the simulated clock.
+  in.stopwatch.start(run.time());
+  run.advance(25);
+  in.update(run, 0, 0, false);
+  CHECK(in.stopwatch.elapsed() == doctest::Approx(25 * run.preset().dt).epsilon(1e-12));
+}
+
+TEST_CASE("instruments: a new selection or no selection starts the timing afresh") {
+  LiveRun run(shipped("two-body-circular.json"));
+  Instruments in;
+  in.update(run, 0, 0, false);
+  run.advance(10);
+  in.update(run, 0, 0, false);
+  REQUIRE(in.track->t.size() == 2);
+  in.update(run, 1, 0, false);
+  REQUIRE(in.track);
+  CHECK(in.track->particle == 1);
+  CHECK(in.track->t.size() == 1);
+  CHECK(in.track->x_start == doctest::Approx(0.5 * std::cos(std::sqrt(2.0) * run.time())));
+  in.update(run, std::nullopt, 0, false);
+  CHECK_FALSE(in.track);
+  in.update(run, 7, 0, false);  // no such particle
+  CHECK_FALSE(in.track);
+}
+
+TEST_CASE("instruments: P and T at the wall only in a container, over the averaging window") {
+  LiveRun run(shipped("fig4-equilibration.json"));
+  Instruments in;
+  run.advance(2000);
+  in.update(run, std::nullopt, 0, false);
+  CHECK(in.wall.intervals == 0);
+  const double window = 0.5 * run.time();
+  in.update(run, std::nullopt, window, true);
+  CHECK(in.wall.intervals > 0);
+  // The instruments only feed the core's estimate: the same numbers as asking it directly.
+  const swarm::WallEstimate direct =
+      swarm::wall_estimate(swarm::wall_intervals(run.primary().samples()), window);
+  CHECK(in.wall.mean.hits == direct.mean.hits);
+  CHECK(in.wall.mean.P == direct.mean.P);
+  CHECK(in.wall.mean.T == direct.mean.T);
+  CHECK(in.wall.window == direct.window);
+  CHECK(direct.mean.hits > 0);
+}
+
+}  // namespace swarmlab
