@@ -1,7 +1,7 @@
 // `swarmlab bench headline|fireball|scale`: runs one of the paper's workloads alone and
 // prints its wall time and figures (bench/RESULTS.md collects the numbers).
 
-#include "cli_bench.h"
+#include "cli/cli_bench.h"
 
 #include <CLI/CLI.hpp>
 #include <chrono>

@@ -1,6 +1,6 @@
 #include <cstdio>
 
-#include "cli.h"
+#include "cli/cli.h"
 #include "report/plot_files.h"
 #include "report/report.h"
 

@@ -3,14 +3,14 @@
 #include <new>
 #include <stdexcept>
 
-#include "cli.h"
+#include "cli/cli.h"
+#include "cli/progress_bar.h"
+#include "cli/result_json.h"
 #include "files/atomic_file.h"
 #include "files/preset_file.h"
-#include "progress_bar.h"
 #include "report/plot_files.h"
 #include "report/report.h"
 #include "report/run_csv.h"
-#include "result_json.h"
 #include "swarm/preset/printable_text.h"
 #include "swarm/preset/resource_budget.h"
 #include "swarm/run/side_by_side.h"

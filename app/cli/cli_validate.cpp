@@ -1,6 +1,6 @@
 #include <cstdio>
 
-#include "cli.h"
+#include "cli/cli.h"
 #include "lessons/lesson_file.h"
 
 namespace swarmlab {

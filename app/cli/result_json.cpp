@@ -1,4 +1,4 @@
-#include "result_json.h"
+#include "cli/result_json.h"
 
 #include <nlohmann/json.hpp>
 

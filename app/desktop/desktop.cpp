@@ -1,7 +1,7 @@
 // The desktop entry point: a window, the shipped presets from disk, and the frame loop; with
 // --frames a fixed number of frames, a timing summary and optionally a screenshot.
 
-#include "desktop.h"
+#include "desktop/desktop.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,9 +9,9 @@
 #include <ctime>
 #include <filesystem>
 
+#include "desktop/screenshot.h"
 #include "files/atomic_file.h"
 #include "lessons/lesson_file.h"
-#include "screenshot.h"
 #include "ui/classroom/presentation.h"
 #include "ui/lessons/lesson_scene.h"
 #include "ui/main_loop.h"

@@ -1,4 +1,4 @@
-#include "screenshot.h"
+#include "desktop/screenshot.h"
 
 #include <stb_image_write.h>
 

@@ -1,4 +1,4 @@
-#include "atomic_file.h"
+#include "files/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -12,7 +12,7 @@
 #include <cstring>
 #include <random>
 
-#include "temp_file_registry.h"
+#include "files/temp_file_registry.h"
 
 namespace swarmlab {
 namespace {

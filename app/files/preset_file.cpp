@@ -1,4 +1,4 @@
-#include "preset_file.h"
+#include "files/preset_file.h"
 
 #include <fstream>
 #include <sstream>

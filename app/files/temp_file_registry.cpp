@@ -1,4 +1,4 @@
-#include "temp_file_registry.h"
+#include "files/temp_file_registry.h"
 
 #include <signal.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "system_labels.h"
+#include "labels/system_labels.h"
 
 #include <cstdio>
 

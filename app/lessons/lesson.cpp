@@ -1,4 +1,4 @@
-#include "lesson.h"
+#include "lessons/lesson.h"
 
 #include <cmath>
 #include <cstdio>

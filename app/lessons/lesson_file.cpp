@@ -1,4 +1,4 @@
-#include "lesson_file.h"
+#include "lessons/lesson_file.h"
 
 #include <algorithm>
 #include <filesystem>

@@ -1,4 +1,4 @@
-#include "figure_csv.h"
+#include "report/figure_csv.h"
 
 #include <sstream>
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "figure.h"
+#include "report/figure.h"
 
 namespace swarmlab::report {
 

@@ -1,4 +1,4 @@
-#include "plot_files.h"
+#include "report/plot_files.h"
 
 #include <unistd.h>
 
@@ -10,8 +10,8 @@
 extern char** environ;
 #endif
 
-#include "figure_csv.h"
-#include "svg_plot.h"
+#include "report/figure_csv.h"
+#include "report/svg_plot.h"
 
 namespace swarmlab::report {
 namespace {

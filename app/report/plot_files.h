@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "files/atomic_file.h"
-#include "report.h"
+#include "report/report.h"
 
 namespace swarmlab::report {
 

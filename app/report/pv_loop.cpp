@@ -1,4 +1,4 @@
-#include "pv_loop.h"
+#include "report/pv_loop.h"
 
 #include "swarm/measure/thermometry.h"
 #include "swarm/physics/wall.h"

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "report/report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <variant>
 
 #include "plotting/decimate.h"
+#include "report/walls_figures.h"
 #include "swarm/measure/fit.h"
 #include "swarm/physics/analytic.h"
-#include "walls_figures.h"
 
 namespace swarmlab::report {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "figure.h"
-#include "run_record.h"
+#include "report/figure.h"
+#include "report/run_record.h"
 
 namespace swarmlab::report {
 

@@ -1,4 +1,4 @@
-#include "run_csv.h"
+#include "report/run_csv.h"
 
 #include <sstream>
 

@@ -1,9 +1,9 @@
-#include "walls_figures.h"
+#include "report/walls_figures.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "pv_loop.h"
+#include "report/pv_loop.h"
 #include "swarm/measure/thermometry.h"
 #include "swarm/physics/wall.h"
 #include "swarm/run/run.h"

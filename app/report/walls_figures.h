@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "figure.h"
-#include "run_record.h"
+#include "report/figure.h"
+#include "report/run_record.h"
 
 namespace swarmlab::report {
 
