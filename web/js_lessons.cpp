@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "ui/lessons/lesson_scene.h"
+#include "ui/lesson_player/lesson_scene.h"
 #include "web_app.h"
 
 namespace {

@@ -13,7 +13,7 @@
 #include "files/atomic_file.h"
 #include "lessons/lesson_file.h"
 #include "ui/classroom/presentation.h"
-#include "ui/lessons/lesson_scene.h"
+#include "ui/lesson_player/lesson_scene.h"
 #include "ui/main_loop.h"
 #include "ui/platform/preset_store.h"
 

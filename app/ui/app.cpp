@@ -14,7 +14,7 @@
 #include "swarm/physics/system.h"
 #include "ui/classroom/presentation.h"
 #include "ui/input/shortcuts.h"
-#include "ui/lessons/lesson_panel.h"
+#include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/plot_export.h"
 #include "ui/time/timeline_strip.h"

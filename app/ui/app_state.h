@@ -11,7 +11,7 @@
 
 #include "access/theme_palette.h"
 #include "ui/classroom/screen_layout.h"
-#include "ui/lessons/lesson_session.h"
+#include "ui/lesson_player/lesson_session.h"
 #include "ui/platform/preset_store.h"
 #include "ui/platform/save_request.h"
 #include "ui/time/instruments.h"
@@ -153,7 +153,7 @@ struct AppState {
   Layout layout;
   Presentation presentation;
   FrameStats stats;
-  /// Stopwatch, period meter, P and T (update_instruments feeds them every frame).
+  /// Stopwatch, period meter, P and T (Instruments::update feeds them every frame).
   Instruments instruments;
   /// The shipped lessons, the open one and the student's progress (lesson_session.h).
   LessonSession lessons;

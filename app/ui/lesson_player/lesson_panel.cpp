@@ -2,9 +2,9 @@
 // [SECTION] the lesson panel: step text, task, feedback, back and next
 // [SECTION] the welcome window and the Lessons menu
 
-#include "ui/lessons/lesson_panel.h"
+#include "ui/lesson_player/lesson_panel.h"
 
-#include "ui/lessons/lesson_scene.h"
+#include "ui/lesson_player/lesson_scene.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>

@@ -1,4 +1,4 @@
-#include "ui/lessons/lesson_scene.h"
+#include "ui/lesson_player/lesson_scene.h"
 
 namespace swarmlab {
 namespace {
