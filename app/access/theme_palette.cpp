@@ -75,7 +75,8 @@ Palette dark_palette() {
   p.potential = rgb(120, 200, 255);
   p.total_energy = rgb(240, 240, 240);
   p.fit = rgb(255, 255, 255, 200);
-  p.energy_drift = rgb(230, 120, 255);
+  p.pressure_against_temperature = rgb(230, 120, 255);
+  p.energy_books_sum = rgb(230, 120, 255);
   p.particle_track = rgb(120, 230, 140);
   p.particle_start = rgb(255, 90, 90);
   p.starting_value = rgb(255, 255, 255, 110);
@@ -153,7 +154,8 @@ Palette light_palette() {
   p.potential = rgb(0, 110, 170);
   p.total_energy = rgb(25, 25, 30);
   p.fit = rgb(0, 0, 0, 200);
-  p.energy_drift = rgb(140, 40, 180);
+  p.pressure_against_temperature = rgb(140, 40, 180);
+  p.energy_books_sum = rgb(140, 40, 180);
   p.particle_track = rgb(20, 120, 50);
   p.particle_start = rgb(190, 30, 30);
   p.starting_value = rgb(0, 0, 0, 120);

@@ -32,7 +32,11 @@ struct Palette {
   // Plots.
   Colour plot_background, plot_grid, plot_axis, plot_text, plot_dim_text, crosshair;
   Colour pressure, pressure_each_sample, temperature, temperature_each_sample;
-  Colour kinetic, potential, total_energy, fit, energy_drift;
+  Colour kinetic, potential, total_energy, fit;
+  // The expansion's P-T plot (its P-V and T-V plots take pressure and temperature); the
+  // Projects tab's energy-books sum (work + heat - drag loss), drawn wide under E - E0. The same
+  // colour today, named twice so that either can change alone.
+  Colour pressure_against_temperature, energy_books_sum;
   // The selected particle's x(t) plot: its curve, its start and its starting value; the
   // residuals of a power-law fit.
   Colour particle_track, particle_start, starting_value, residual;

@@ -18,17 +18,37 @@ double nice_step(double raw) {
   return (f < 1.5 ? 1 : f < 3 ? 2 : f < 7 ? 5 : 10) * magnitude;
 }
 
-/// Multiples of a nice step near (hi - lo) / target inside [lo, hi], for finite lo <= hi.
-std::vector<double> linear_ticks(double lo, double hi, int target) {
-  if (!(hi > lo)) return {lo};
-  if (!std::isfinite(hi - lo)) return {};
-  const double step = nice_step((hi - lo) / target);
-  // Past 2^50 steps from zero, doubles cannot count steps any more: show the two ends.
-  if (std::max(std::abs(lo), std::abs(hi)) / step > 1e15) return {lo, hi};
-  std::vector<double> ticks;
+/// Ticks on a linear scale: multiples of one step, which sets how many decimals they need.
+struct LinearTicks {
+  std::vector<double> values;
+  double step = 0;  ///< 0 for the lone tick of an empty range
+};
+
+/// Multiples of step inside [lo, hi]; with `positive`, only those above zero.
+std::vector<double> multiples_of(double step, double lo, double hi, bool positive) {
+  std::vector<double> values;
   for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + 1e-9 * step; k += 1)
-    ticks.push_back(k * step == 0 ? 0.0 : k * step);  // no "-0"
-  return ticks;
+    if (!positive || k > 0) values.push_back(k * step == 0 ? 0.0 : k * step);  // no "-0"
+  return values;
+}
+
+/// Multiples of a nice step near (hi - lo) / target inside [lo, hi], for finite lo <= hi; with
+/// `positive` (a log axis reaching zero), only those above zero. At least two on a range with
+/// width (ticks_for says how).
+LinearTicks linear_ticks(double lo, double hi, int target, bool positive = false) {
+  if (!(hi > lo)) return positive && lo <= 0 ? LinearTicks{} : LinearTicks{{lo}, 0};
+  if (!std::isfinite(hi - lo) || (positive && hi <= 0)) return {};
+  const double first_step = nice_step((hi - lo) / target);
+  if (positive) lo = std::max(lo, 0.0);  // no need to count the steps below zero
+  for (double step = first_step;; step = nice_step(0.5 * step)) {  // 5 -> 2 -> 1 -> 0.5
+    // Past 2^50 steps from zero, doubles cannot count steps any more: show the two ends.
+    if (std::max(std::abs(lo), std::abs(hi)) / step > 1e15) return {{lo, hi}, hi - lo};
+    std::vector<double> values = multiples_of(step, lo, hi, positive);
+    if (values.size() < 2) continue;
+    // A step finer than the room asked for: only its outermost two, which fit the room.
+    if (step != first_step) values = {values.front(), values.back()};
+    return {std::move(values), step};
+  }
 }
 
 /// The most ticks the linear rule gives for a target, and so the most any axis should get.
@@ -54,9 +74,9 @@ std::string printed(const char* format, double v) {
 /// Decimals enough to tell ticks `step` apart.
 int decimals_for(double step) { return std::max(0, int(std::ceil(-std::log10(step) - 1e-9))); }
 
-AxisTicks linear_labels(std::vector<double> values) {
+AxisTicks linear_labels(LinearTicks ticks) {
   AxisTicks t;
-  t.values = std::move(values);
+  t.values = std::move(ticks.values);
   // A lone tick (an empty range) has no step to round to: all its digits that matter.
   if (t.values.size() < 2) {
     for (double v : t.values) t.labels.push_back(printed("%g", v));
@@ -64,7 +84,7 @@ AxisTicks linear_labels(std::vector<double> values) {
   }
   double largest = 0;
   for (double v : t.values) largest = std::max(largest, std::abs(v));
-  const double step = t.values[1] - t.values[0];
+  const double step = ticks.step;
   // Very large or very small numbers: a common power of ten goes to the axis label.
   const int exponent = largest > 0 ? int(std::floor(std::log10(largest))) : 0;
   const double scale = (exponent >= 5 || exponent <= -4) ? std::pow(10.0, exponent) : 1.0;
@@ -82,26 +102,16 @@ std::string log_label(double v) {
   return std::abs(mantissa - 1) < 1e-9 ? power : printed("%g", mantissa) + "×" + power;
 }
 
-/// Ticks at or below zero cannot sit on a log axis.
-AxisTicks positive_only(AxisTicks t) {
-  for (std::size_t i = t.values.size(); i-- > 0;)
-    if (t.values[i] <= 0) {
-      t.values.erase(t.values.begin() + long(i));
-      t.labels.erase(t.labels.begin() + long(i));
-    }
-  return t;
-}
-
 /// A log axis over less than a decade: round linear values read better than a few digits of
 /// one decade. The linear rule gives at least 0.6 target ticks, so if fewer than four come,
 /// twice and then four times as many are asked for, until the target is at least seven.
 AxisTicks less_than_a_decade(double lo, double hi, int target) {
-  std::vector<double> values;
+  LinearTicks ticks;
   for (int wanted = target;; wanted *= 2) {
-    values = linear_ticks(lo, hi, wanted);
-    if (values.size() >= kFewestLogTicks || wanted >= 7) break;
+    ticks = linear_ticks(lo, hi, wanted);
+    if (ticks.values.size() >= kFewestLogTicks || wanted >= 7) break;
   }
-  return linear_labels(values);
+  return linear_labels(std::move(ticks));
 }
 
 }  // namespace
@@ -113,20 +123,44 @@ std::string superscript(int n) {
   return out;
 }
 
-AxisRange padded_range(double lo, double hi, bool log, bool include_zero) {
-  if (log) {
-    double a = std::log10(lo), b = std::log10(hi);
-    if (b - a < 1e-12) a -= 0.1, b += 0.1;
-    const double pad = 0.04 * (b - a);
-    return {std::pow(10.0, a - pad), std::pow(10.0, b + pad)};
+AxisRange axis_range(double lo, double hi, const RangeOptions& options) {
+  const bool log = options.log;
+  if (!(lo <= hi)) lo = log ? 1 : 0, hi = log ? 10 : 1;
+  if (options.min) lo = *options.min;
+  if (options.max) hi = *options.max;
+  // A fixed end beyond all the data: the free end joins it.
+  if (lo > hi) {
+    if (options.min)
+      hi = lo;
+    else
+      lo = hi;
   }
-  if (include_zero) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
-  if (hi - lo <= 1e-300 + 1e-12 * std::abs(hi)) {
-    const double half = lo != 0 ? 0.1 * std::abs(lo) : 1.0;
-    lo -= half, hi += half;
+  if (options.include_zero && !log) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
+  // Ends that take no margin: the caller's, and a zero that the data start from.
+  const bool low_fixed =
+      options.min || (options.include_zero && options.zero_on_frame && !log && lo == 0);
+  const bool high_fixed = options.max.has_value();
+
+  double a = log ? std::log10(lo) : lo, b = log ? std::log10(hi) : hi;
+  // One value to twelve digits, measured against the values themselves (as a difference of
+  // logarithms already is).
+  const double tolerance = log ? 1e-12 : 1e-300 + 1e-12 * std::max(std::abs(a), std::abs(b));
+  const bool one_value = b - a <= tolerance;
+  if (one_value) {
+    const double half = log ? 0.5 * options.one_value_decades : a != 0 ? 0.1 * std::abs(a) : 1.0;
+    if (low_fixed || (options.one_value == OneValue::at_start && !log))
+      b = a + 2 * half;
+    else if (high_fixed)
+      a = b - 2 * half;
+    else
+      a -= half, b += half;
   }
-  const double pad = 0.04 * (hi - lo);
-  return {lo - pad, hi + pad};
+  if (!one_value || options.margin_around_one_value) {
+    const double pad = options.margin * (b - a);
+    if (!low_fixed) a -= pad;
+    if (!high_fixed) b += pad;
+  }
+  return log ? AxisRange{std::pow(10.0, a), std::pow(10.0, b)} : AxisRange{a, b};
 }
 
 AxisTicks ticks_for(const AxisRange& range, bool log, int target) {
@@ -134,7 +168,8 @@ AxisTicks ticks_for(const AxisRange& range, bool log, int target) {
   const double lo = std::min(range.lo, range.hi), hi = std::max(range.lo, range.hi);
   target = std::max(target, 1);
   if (!log) return linear_labels(linear_ticks(lo, hi, target));
-  if (lo <= 0) return positive_only(linear_labels(linear_ticks(lo, hi, target)));
+  // Ticks at or below zero cannot sit on a log axis.
+  if (lo <= 0) return linear_labels(linear_ticks(lo, hi, target, true));
   if (hi < 10 * lo) return less_than_a_decade(lo, hi, target);
 
   // Decades if there are enough of them, else 1-2-5, else every digit (a decade holds nine):

@@ -74,9 +74,11 @@ Extent extent_of(const Panel& p, std::vector<double> Series::*coordinate) {
   return e;
 }
 
-plotting::AxisRange range_of(Extent e, const Axis& axis) {
-  if (e.empty()) e = axis.log ? Extent{1, 10} : Extent{0, 1};
-  return plotting::padded_range(e.lo, e.hi, axis.log, axis.include_zero);
+plotting::AxisRange range_of(const Extent& e, const Axis& axis) {
+  plotting::RangeOptions options;
+  options.log = axis.log;
+  options.include_zero = axis.include_zero;
+  return plotting::axis_range(e.lo, e.hi, options);
 }
 
 /// Maps data to pixels inside one panel's plot area.

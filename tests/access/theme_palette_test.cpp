@@ -105,14 +105,20 @@ void check_theme(Theme theme) {
   // background.
   check_all(name, {{"plot text", p.plot_text}, {"tick labels", p.plot_dim_text}},
             {{"plot", p.plot_background}}, kText);
-  const std::vector<Named> series = {
-      {"pressure", p.pressure},         {"pressure, each sample", p.pressure_each_sample},
-      {"temperature", p.temperature},   {"temperature, each sample", p.temperature_each_sample},
-      {"kinetic energy", p.kinetic},    {"potential energy", p.potential},
-      {"total energy", p.total_energy}, {"power-law fit", p.fit},
-      {"energy drift", p.energy_drift}, {"x(t)", p.particle_track},
-      {"x(t) start", p.particle_start}, {"starting value", p.starting_value},
-      {"residuals", p.residual}};
+  const std::vector<Named> series = {{"pressure", p.pressure},
+                                     {"pressure, each sample", p.pressure_each_sample},
+                                     {"temperature", p.temperature},
+                                     {"temperature, each sample", p.temperature_each_sample},
+                                     {"kinetic energy", p.kinetic},
+                                     {"potential energy", p.potential},
+                                     {"total energy", p.total_energy},
+                                     {"power-law fit", p.fit},
+                                     {"P against T", p.pressure_against_temperature},
+                                     {"energy books' sum", p.energy_books_sum},
+                                     {"x(t)", p.particle_track},
+                                     {"x(t) start", p.particle_start},
+                                     {"starting value", p.starting_value},
+                                     {"residuals", p.residual}};
   check_all(name, series, {{"plot", p.plot_background}}, kGraphics);
   check_all(name, {{"axis", p.plot_axis}, {"cross-hair", p.crosshair}},
             {{"plot", p.plot_background}}, kGraphics);

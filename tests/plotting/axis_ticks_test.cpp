@@ -62,6 +62,21 @@ std::vector<AxisRange> log_ranges() {
   return out;
 }
 
+/// The 1-2-5 step whose multiples the ticks are: the spacing of three or more, or for two (the
+/// outermost of a finer step's ticks) the coarsest 1-2-5 step, at most four to the spacing,
+/// that both are multiples of; 0 if there is none.
+double grid_step(const std::vector<double>& values, double tolerance) {
+  const double spacing = (values.back() - values.front()) / double(values.size() - 1);
+  for (int k = 1; k <= (values.size() == 2 ? 4 : 1); ++k) {
+    const double step = nearest_one_two_five(spacing / k);
+    if (!is_one_two_five(spacing / k, tolerance)) continue;
+    bool multiples = true;
+    for (double v : values) multiples = multiples && is_whole(v / step, tolerance);
+    if (multiples) return step;
+  }
+  return 0;
+}
+
 /// Labels are the values, up to a common power of ten that the suffix names.
 void check_labels_match(const AxisTicks& t) {
   REQUIRE(t.labels.size() == t.values.size());
@@ -87,28 +102,28 @@ void check_labels_match(const AxisTicks& t) {
 }  // namespace
 
 TEST_CASE("linear ticks are multiples of one 1-2-5 step that cover the range") {
-  for (int target : {2, 4, 6, 11}) {
+  for (int target : {1, 2, 3, 4, 6, 11}) {
     for (const AxisRange& r : linear_ranges()) {
       CAPTURE(target);
       CAPTURE(r.lo);
       CAPTURE(r.hi);
       const AxisTicks t = ticks_for(r, false, target);
-      REQUIRE(t.values.size() >= 1);
       // About target ticks: at least 0.6 target (a step of 5 where 3 was asked), at most
-      // 1.5 target + 1 (a step of 1 where 1.5 was asked).
+      // 1.5 target + 1 (a step of 1 where 1.5 was asked); and never one alone.
+      REQUIRE(t.values.size() >= 2);
       CHECK(t.values.size() >= std::size_t(0.6 * target));
       CHECK(t.values.size() <= std::size_t(1.5 * target) + 1);
-      if (t.values.size() < 2) continue;
-      const double step = (t.values.back() - t.values.front()) / double(t.values.size() - 1);
-      const double tolerance = rounding_in_steps(r, step);
-      CHECK(is_one_two_five(step, tolerance));
+      const double spacing = (t.values.back() - t.values.front()) / double(t.values.size() - 1);
+      const double tolerance = rounding_in_steps(r, spacing);
       // Multiples of the exact step: a step measured between ticks far from zero is blurred.
-      const double exact = nearest_one_two_five(step);
+      const double step = grid_step(t.values, tolerance);
+      REQUIRE(step > 0);
+      // Where the room's step gives two or more, the ticks are its every multiple.
+      if (target >= 4) CHECK(std::abs(spacing - step) < tolerance * step);
       for (std::size_t i = 0; i < t.values.size(); ++i) {
-        CHECK(is_whole(t.values[i] / exact, tolerance));
         CHECK(t.values[i] >= r.lo - tolerance * step);
         CHECK(t.values[i] <= r.hi + tolerance * step);
-        if (i > 0) CHECK(std::abs(t.values[i] - t.values[i - 1] - step) < tolerance * step);
+        if (i > 0) CHECK(std::abs(t.values[i] - t.values[i - 1] - spacing) < tolerance * step);
       }
       // Covered: no gap of a whole step between an end of the range and the nearest tick.
       CHECK(t.values.front() - r.lo < step * (1 + tolerance));
@@ -118,11 +133,51 @@ TEST_CASE("linear ticks are multiples of one 1-2-5 step that cover the range") {
   }
 }
 
+TEST_CASE("a lone tick never hides an axis's scale: two round labelled ticks on any width") {
+  // Room for two labels (a short residual plot) and a step of 5 that leaves only 0 inside:
+  // the step of 2 would give five labels, so its outermost two are kept.
+  const AxisTicks around_zero = ticks_for({-4.95, 4.95}, false, 2);
+  CHECK(around_zero.values == std::vector<double>{-4, 4});
+  CHECK(around_zero.labels == std::vector<std::string>{"-4", "4"});
+  // A step of 10 leaves 10 alone; the step of 5 gives 5 and 10.
+  CHECK(ticks_for({0.5, 14.5}, false, 2).labels == std::vector<std::string>{"5", "10"});
+  // The finer step (0.5, after 2 and 1 left only 0) sets the decimals, not the distance of 1
+  // between the two, which would print them "-0" and "0".
+  CHECK(ticks_for({-0.9, 0.9}, false, 1).labels == std::vector<std::string>{"-0.5", "0.5"});
+  // A log axis reaching below zero keeps two of its positive ticks.
+  CHECK(ticks_for({-5, 3}, true, 2).labels == std::vector<std::string>{"1", "3"});
+  // Tiny values keep their power of ten in the suffix.
+  const AxisTicks tiny = ticks_for({-4.95e-9, 4.95e-9}, false, 2);
+  CHECK(tiny.labels == std::vector<std::string>{"-4", "4"});
+  CHECK(tiny.scale_suffix == "×10⁻⁹");
+  // Log axes: at least four wherever they lie, however little room (tested above for
+  // targets 2 to 11), so none within one decade stands alone either.
+  for (int target : {1, 2, 3})
+    for (const AxisRange& r : log_ranges()) {
+      CAPTURE(target);
+      CAPTURE(r.lo);
+      CAPTURE(r.hi);
+      CHECK(ticks_for(r, true, target).values.size() >= 4);
+    }
+  // Log ranges that reach zero or below: two positive ticks wherever the range goes above 0.
+  for (int target : {1, 2, 6})
+    for (double lo : {-1e6, -5.0, -0.3, 0.0})
+      for (double hi : {1e-7, 0.4, 3.0, 17.0, 2e5}) {
+        CAPTURE(target);
+        CAPTURE(lo);
+        CAPTURE(hi);
+        const AxisTicks t = ticks_for({lo, hi}, true, target);
+        CHECK(t.values.size() >= 2);
+        for (double v : t.values) CHECK(v > 0);
+        check_labels_match(t);
+      }
+}
+
 TEST_CASE("the report's figures get four to ten ticks on every linear axis they pad") {
   for (double lo : {-3.0, 0.0, 0.2, 17.0, 1e-13, 6.02e23})
     for (double hi : {0.5, 1.0, 2.9, 40.0, 1e5, 7e23}) {
       if (hi <= lo) continue;
-      const AxisTicks t = ticks_for(padded_range(lo, hi, false, false), false);
+      const AxisTicks t = ticks_for(axis_range(lo, hi), false);
       CAPTURE(lo);
       CAPTURE(hi);
       CHECK(t.values.size() >= 3);
@@ -252,24 +307,113 @@ TEST_CASE("degenerate ranges give a sane answer at once") {
   CHECK(std::chrono::steady_clock::now() - started < std::chrono::seconds(1));
 }
 
-TEST_CASE("padded ranges hold the data with a margin and are never empty") {
+TEST_CASE("axis ranges hold the data with a margin and are never empty") {
   for (bool include_zero : {false, true})
     for (double lo : {-4.0, 0.0, 1e-9, 3.0})
       for (double width : {0.0, 1e-20, 0.5, 1e6}) {
         const double hi = lo + width;
-        const AxisRange r = padded_range(lo, hi, false, include_zero);
+        RangeOptions options;
+        options.include_zero = include_zero;
+        const AxisRange r = axis_range(lo, hi, options);
         CHECK(r.lo < lo);
         CHECK(r.hi > hi);
         if (include_zero) CHECK(r.lo < 0);
         if (include_zero) CHECK(r.hi > 0);
       }
+  RangeOptions log;
+  log.log = true;
   for (double lo : {1e-12, 0.5, 7.0, 1e40})
     for (double factor : {1.0, 1.0 + 1e-14, 2.0, 1e6}) {
-      const AxisRange r = padded_range(lo, lo * factor, true, false);
+      const AxisRange r = axis_range(lo, lo * factor, log);
       CHECK(r.lo < lo);
       CHECK(r.hi > lo * factor);
       CHECK(r.lo > 0);
       // The margin on a log axis is a factor, the same at both ends.
       CHECK(lo / r.lo == doctest::Approx(r.hi / (lo * factor)).epsilon(1e-9));
     }
+}
+
+namespace {
+
+/// The range, against one worked out by hand.
+void check_range(const AxisRange& r, double lo, double hi) {
+  CHECK(r.lo == doctest::Approx(lo).epsilon(1e-12));
+  CHECK(r.hi == doctest::Approx(hi).epsilon(1e-12));
+}
+
+}  // namespace
+
+TEST_CASE("axis_range as the figures use it: 4 % margins, one value opened by a tenth") {
+  check_range(axis_range(0, 10), -0.4, 10.4);
+  RangeOptions zero;
+  zero.include_zero = true;
+  check_range(axis_range(2, 10, zero), -0.4, 10.4);  // 0 with a margin under it
+  check_range(axis_range(-10, -2, zero), -10.4, 0.4);
+  // One value: 5 opened to 4.5..5.5, then 4 % of that each side; at zero, to -1..1.
+  check_range(axis_range(5, 5), 4.46, 5.54);
+  check_range(axis_range(-5, -5), -5.54, -4.46);
+  check_range(axis_range(0, 0), -1.08, 1.08);
+  // One value to twelve digits: a spread of 1e-15 about 1 is not data, about 1e-15 it is.
+  check_range(axis_range(1, 1 + 1e-15), 0.892, 1.108);
+  check_range(axis_range(1e-15, 2e-15), 0.96e-15, 2.04e-15);
+  // No data: 0 to 1, or 1 to 10 on a log axis, so that the axes can still be drawn.
+  const double inf = std::numeric_limits<double>::infinity();
+  check_range(axis_range(inf, -inf), -0.04, 1.04);
+  RangeOptions log;
+  log.log = true;
+  check_range(axis_range(inf, -inf, log), std::pow(10.0, -0.04), std::pow(10.0, 1.04));
+  // Log axes: the margin and the opening in decades. 1 to 100 is two decades, 0.08 each side.
+  check_range(axis_range(1, 100, log), std::pow(10.0, -0.08), std::pow(10.0, 2.08));
+  check_range(axis_range(10, 10, log), std::pow(10.0, 0.892), std::pow(10.0, 1.108));
+  // include_zero means nothing on a log axis.
+  log.include_zero = true;
+  check_range(axis_range(1, 100, log), std::pow(10.0, -0.08), std::pow(10.0, 2.08));
+}
+
+TEST_CASE("axis_range as the app's plots use it: zero, fixed ends and one value on the frame") {
+  // The options of ui/plots/plot_widget.cpp.
+  auto live = [](OneValue one_value, bool from_zero = false, bool log = false) {
+    RangeOptions o;
+    o.log = log;
+    o.include_zero = from_zero;
+    o.zero_on_frame = true;
+    o.one_value = one_value;
+    o.margin = 0.05;
+    o.one_value_decades = 1;
+    o.margin_around_one_value = false;
+    return o;
+  };
+  // A time axis with one sample: at the left edge, a fifth of its value (2 at zero) ahead.
+  check_range(axis_range(0, 0, live(OneValue::at_start)), 0, 2);
+  check_range(axis_range(3, 3, live(OneValue::at_start)), 3, 3.6);
+  check_range(axis_range(0, 10, live(OneValue::at_start)), -0.5, 10.5);
+  // A value axis with one value: centred, a fifth of it wide, no margin beyond that.
+  check_range(axis_range(4, 4, live(OneValue::centred)), 3.6, 4.4);
+  // From zero: data never below 0 start at 0 on the frame, with the margin above only...
+  check_range(axis_range(2, 10, live(OneValue::centred, true)), 0, 10.5);
+  // ...and all at zero (no pressure yet) opens upward, not to -1..1.
+  check_range(axis_range(0, 0, live(OneValue::centred, true)), 0, 2);
+  // Data below zero keep their margin; the 0 they reach up to gets one too.
+  check_range(axis_range(-10, -2, live(OneValue::centred, true)), -10.5, 0.5);
+  // A pinned minimum (the scroll window's start) takes no margin; the free end does.
+  RangeOptions window = live(OneValue::at_start);
+  window.min = 10;
+  check_range(axis_range(8, 20, window), 10, 20.5);
+  // Both ends pinned (a histogram's bins): exactly those.
+  RangeOptions bins = live(OneValue::centred, true);
+  bins.min = 0;
+  bins.max = 4;
+  check_range(axis_range(0.3, 3.1, bins), 0, 4);
+  // A minimum beyond all the data: the other end joins it, and a fifth is opened above.
+  window.min = 30;
+  check_range(axis_range(8, 20, window), 30, 36);
+  // A pinned maximum with one value: opened downward, the maximum kept.
+  RangeOptions top = live(OneValue::centred);
+  top.max = 5;
+  check_range(axis_range(5, 5, top), 4, 5);
+  // Log axes: a decade around one value (a first stage), 5 % of the decades as margin.
+  check_range(axis_range(100, 100, live(OneValue::centred, false, true)), std::pow(10.0, 1.5),
+              std::pow(10.0, 2.5));
+  check_range(axis_range(1, 1000, live(OneValue::at_start, false, true)), std::pow(10.0, -0.15),
+              std::pow(10.0, 3.15));
 }

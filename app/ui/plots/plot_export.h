@@ -1,31 +1,11 @@
 #pragma once
-// A plot's context menu (right click): save it as SVG (drawn by the report's svg_plot from the
-// plot's own data), as PNG (the pixels on screen), or its numbers as CSV (the report's
-// panel,series,x,y). The plot widget knows no AppState, so the request waits here until the
-// app takes it and opens the save dialog.
+// A plot's export carried out for the app: the request its menu left (plot_export_menu.h) goes
+// to the save dialog, and a PNG is read from the screen once a frame is drawn without the menu.
+// The one part of the plots that needs the AppState, above it.
 
-#include <imgui.h>
-
-#include <optional>
 #include <string>
 
-#include "ui/plots/plot_widget.h"
-#include "report/figure.h"
-
 namespace swarmlab {
-
-struct PlotExport {
-  enum class Kind { svg, png, csv } kind = Kind::svg;
-  std::string title;    ///< the plot's title, for the file name
-  std::string content;  ///< SVG or CSV text; empty for PNG, read from the screen
-  ImVec2 min, max;      ///< the plot's rectangle on screen (logical pixels), for PNG
-};
-
-/// The report figure of a plot: one panel, its series and fit lines, its axes.
-report::Figure figure_of(const PlotSpec& spec);
-
-/// The menu of the plot drawn over [min, max]; open: it was right-clicked this frame.
-void plot_export_menu(const PlotSpec& spec, ImVec2 min, ImVec2 max, bool open);
 
 struct AppState;
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "ui/plots/plot_export.h"
 #include "plotting/axis_ticks.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/plots/plot_export_menu.h"
 
 namespace swarmlab {
 namespace {
@@ -27,6 +27,10 @@ struct Scale {
   plotting::AxisRange range() const {
     return log ? plotting::AxisRange{std::pow(10.0, lo), std::pow(10.0, hi)}
                : plotting::AxisRange{lo, hi};
+  }
+  void set(const plotting::AxisRange& r) {
+    lo = transform(r.lo);
+    hi = transform(r.hi);
   }
 };
 
@@ -52,41 +56,23 @@ void data_range(const PlotSpec& spec, bool x_axis, const Scale& x_scale, double&
   }
 }
 
-/// How an axis whose data sit at one value (the first sample, a constant) is opened up.
-enum class OneValue {
-  centred,   ///< a value axis: the point in the middle
-  at_start,  ///< a linear x axis: the first sample at the left, room for the run to come
-};
-
-void set_range(Scale& s, double lo, double hi, const PlotAxis& axis, bool from_zero,
-               OneValue one_value) {
-  if (axis.min) lo = *axis.min;
-  if (axis.max) hi = *axis.max;
-  if (!(lo <= hi)) lo = hi = s.log ? 1.0 : 0.0;
-  if (from_zero && !s.log) lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
-  double a = s.transform(lo), b = s.transform(hi);
-  // One value, to the data's own precision: a spread of 1e-15 about 1e-15 (the exact method's
-  // energy error) is data to show, a spread of 1e-15 about 1 is not.
-  const double scale = std::max(std::abs(a), std::abs(b));
-  if (b - a <= 1e-12 * scale) {
-    // A fifth of the value wide, or 2 wide at zero (a first sample at t = 0, no pressure yet):
-    // never a range so narrow that its ticks read "x 10^-9".
-    const double width = s.log ? 1.0 : scale > 0 ? 0.2 * scale : 2.0;
-    const bool pinned_low = axis.min || (from_zero && lo == 0);
-    if (pinned_low || (one_value == OneValue::at_start && !s.log)) {
-      b = a + width;
-    } else {
-      const double mid = 0.5 * (a + b);
-      a = mid - 0.5 * width;
-      b = mid + 0.5 * width;
-    }
-  } else if (!axis.min || !axis.max) {
-    const double pad = 0.05 * (b - a);  // keep the curve off the frame
-    if (!axis.min && !(from_zero && lo == 0)) a -= pad;
-    if (!axis.max) b += pad;
-  }
-  s.lo = a;
-  s.hi = b;
+/// The figures' range rule (plotting::axis_range) as a live plot wants it: 0 and a lone value
+/// on the frame, since its pressures count up from nothing and its time axis starts at the
+/// first sample; a wider margin, and a decade around a lone value on a log axis, so that a
+/// first stage still gets ticks.
+plotting::RangeOptions range_options(const PlotAxis& axis, bool from_zero,
+                                     plotting::OneValue one_value) {
+  plotting::RangeOptions options;
+  options.log = axis.log;
+  options.include_zero = from_zero;
+  options.zero_on_frame = true;
+  options.min = axis.min;
+  options.max = axis.max;
+  options.one_value = one_value;
+  options.margin = 0.05;
+  options.one_value_decades = 1;
+  options.margin_around_one_value = false;
+  return options;
 }
 
 }  // namespace
@@ -130,9 +116,9 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   // (with room for a scale like "x 10^-14") do not fit side by side.
   const float title_width = ImGui::CalcTextSize(spec.title.c_str()).x;
   const std::string y_label_base = spec.y.label + (spec.y.log ? "  [log]" : "");
-  const bool y_label_below = title_width + 1.5f * font + ImGui::CalcTextSize(y_label_base.c_str()).x +
-                                 5.0f * font >
-                             width - 0.5f * font;
+  const bool y_label_below =
+      title_width + 1.5f * font + ImGui::CalcTextSize(y_label_base.c_str()).x + 5.0f * font >
+      width - 0.5f * font;
   const float legend_top = origin.y + (y_label_below ? 2.5f : 1.3f) * font;
   const float left = origin.x + 4.2f * font, right = origin.x + width - 0.6f * font;
   const float top = legend_top + 1.2f * font * float(legend_rows) + 0.4f * font;
@@ -145,9 +131,10 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   double lo, hi;
   data_range(spec, true, xs, lo, hi);
   const bool has_data = std::isfinite(lo);
-  set_range(xs, lo, hi, spec.x, false, OneValue::at_start);
+  xs.set(plotting::axis_range(lo, hi, range_options(spec.x, false, plotting::OneValue::at_start)));
   data_range(spec, false, xs, lo, hi);
-  set_range(ys, lo, hi, spec.y, spec.y_from_zero, OneValue::centred);
+  ys.set(plotting::axis_range(
+      lo, hi, range_options(spec.y, spec.y_from_zero, plotting::OneValue::centred)));
 
   // Grid, ticks and their labels: the figures' tick rule, with as many ticks as the labels
   // leave room for.
@@ -277,8 +264,8 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       const float mid = y + 0.5f * font;
       if (e.dashed)
         for (int k = 0; k < 3; ++k)
-          draw->AddLine(ImVec2(x + k * 0.45f * font, mid), ImVec2(x + 0.25f * font + k * 0.45f * font, mid),
-                        e.colour, 2.0f);
+          draw->AddLine(ImVec2(x + k * 0.45f * font, mid),
+                        ImVec2(x + 0.25f * font + k * 0.45f * font, mid), e.colour, 2.0f);
       else
         draw->AddLine(ImVec2(x, mid), ImVec2(x + 1.2f * font, mid), e.colour, 3.0f);
       draw->AddText(ImVec2(x + 1.6f * font, y), kText, e.label.c_str());
@@ -316,8 +303,8 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       // since a faint line colour (the raw samples) is too pale for text.
       const ImVec2 at = ImGui::GetCursorScreenPos();
       ImGui::GetWindowDrawList()->AddLine(ImVec2(at.x, at.y + 0.5f * font),
-                                          ImVec2(at.x + 1.2f * font, at.y + 0.5f * font),
-                                          s.colour, 3.0f);
+                                          ImVec2(at.x + 1.2f * font, at.y + 0.5f * font), s.colour,
+                                          3.0f);
       ImGui::Dummy(ImVec2(1.5f * font, font));
       ImGui::SameLine();
       ImGui::Text("%s: %.5g at %.5g", s.label.c_str(), (*s.y)[best_i], (*s.x)[best_i]);

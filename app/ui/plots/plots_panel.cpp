@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ui/plots/fit_quality.h"
-#include "ui/panels/panels.h"
-#include "ui/plots/plot_widget.h"
 #include "swarm/physics/regime.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/panels/panels.h"
+#include "ui/plots/fit_quality.h"
+#include "ui/plots/plot_widget.h"
 
 namespace swarmlab {
 namespace {
@@ -197,7 +197,7 @@ void draw_expansion_tab(AppState& state, float plot_height) {
   plot("tv", "T against V", "V (length\u00b3)", V, "T (energy)", T, fits.T_V, "T \u221d V",
        colours().temperature.packed());
   plot("pt", "P against T", "T (energy)", T, "P (force/area)", P, fits.P_T, "P \u221d T",
-       colours().energy_drift.packed());
+       colours().pressure_against_temperature.packed());
 }
 
 void draw_compare_tab(AppState& state, float plot_height) {

@@ -9,11 +9,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "report/pv_loop.h"
+#include "ui/classroom/theme_style.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/plot_widget.h"
 #include "ui/plots/project_plots.h"
-#include "report/pv_loop.h"
-#include "ui/classroom/theme_style.h"
 
 namespace swarmlab {
 namespace {
@@ -77,9 +77,9 @@ void draw_projects_tab(AppState& state, float plot_height) {
     m.x = time;
     m.y = {"length", false, std::nullopt, std::nullopt};
     m.y_from_zero = true;
-    m.series = {{"CM height z", &s.t, &s.cm_height, line(c.pressure), false, 2.0f},
-                {"size: rms distance from the CM", &s.t, &s.size, line(c.temperature), false,
-                 2.0f}};
+    m.series = {
+        {"CM height z", &s.t, &s.cm_height, line(c.pressure), false, 2.0f},
+        {"size: rms distance from the CM", &s.t, &s.size, line(c.temperature), false, 2.0f}};
     draw_plot("project_motion", m, plot_height);
   }
   if (plots.books) {
@@ -90,11 +90,12 @@ void draw_projects_tab(AppState& state, float plot_height) {
     b.x = time;
     b.y = {"energy", false, std::nullopt, std::nullopt};
     b.y_from_zero = true;
-    b.series = {{"sum: work + heat - drag loss", &s.t, &s.net, line(c.energy_drift), false, 6.0f},
-                {"E - E\u2080", &s.t, &s.energy_change, line(c.total_energy), false, 2.0f},
-                {"work by the walls", &s.t, &s.wall_work, line(c.pressure), false, 1.5f},
-                {"heat from the wall", &s.t, &s.wall_heat, line(c.temperature), false, 1.5f},
-                {"drag loss", &s.t, &s.drag_loss, line(c.kinetic), false, 1.5f}};
+    b.series = {
+        {"sum: work + heat - drag loss", &s.t, &s.net, line(c.energy_books_sum), false, 6.0f},
+        {"E - E\u2080", &s.t, &s.energy_change, line(c.total_energy), false, 2.0f},
+        {"work by the walls", &s.t, &s.wall_work, line(c.pressure), false, 1.5f},
+        {"heat from the wall", &s.t, &s.wall_heat, line(c.temperature), false, 1.5f},
+        {"drag loss", &s.t, &s.drag_loss, line(c.kinetic), false, 1.5f}};
     draw_plot("project_books", b, plot_height);
   }
   if (plots.pv_loop) {
@@ -105,11 +106,10 @@ void draw_projects_tab(AppState& state, float plot_height) {
     p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
     p.y_from_zero = true;
     p.empty_message = "waiting for the wall to move";
-    p.series = {{"wall moving in (P: running mean)", &l.V_in, &l.P_in, line(c.pressure), false,
-                 2.0f}};
+    p.series = {
+        {"wall moving in (P: running mean)", &l.V_in, &l.P_in, line(c.pressure), false, 2.0f}};
     if (!l.V_out.empty())
-      p.series.push_back(
-          {"wall moving out", &l.V_out, &l.P_out, line(c.temperature), false, 2.0f});
+      p.series.push_back({"wall moving out", &l.V_out, &l.P_out, line(c.temperature), false, 2.0f});
     draw_plot("project_pv", p, plot_height);
   }
   if (plots.speeds) {

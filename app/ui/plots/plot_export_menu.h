@@ -1,0 +1,33 @@
+#pragma once
+// A plot's context menu (right click): save it as SVG (drawn by the report's svg_plot from the
+// plot's own data), as PNG (the pixels on screen), or its numbers as CSV (the report's
+// panel,series,x,y). The menu knows no AppState: the request waits here until the app takes it
+// (plot_export.h) and opens the save dialog.
+
+#include <imgui.h>
+
+#include <optional>
+#include <string>
+
+#include "report/figure.h"
+#include "ui/plots/plot_spec.h"
+
+namespace swarmlab {
+
+struct PlotExport {
+  enum class Kind { svg, png, csv } kind = Kind::svg;
+  std::string title;    ///< the plot's title, for the file name
+  std::string content;  ///< SVG or CSV text; empty for PNG, read from the screen
+  ImVec2 min, max;      ///< the plot's rectangle on screen (logical pixels), for PNG
+};
+
+/// The report figure of a plot: one panel, its series and fit lines, its axes.
+report::Figure figure_of(const PlotSpec& spec);
+
+/// The menu of the plot drawn over [min, max]; open: it was right-clicked this frame.
+void plot_export_menu(const PlotSpec& spec, ImVec2 min, ImVec2 max, bool open);
+
+/// The export asked for in the menu since the last call, if any; it is no longer waiting.
+std::optional<PlotExport> take_plot_export();
+
+}  // namespace swarmlab
