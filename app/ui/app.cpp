@@ -1,8 +1,5 @@
 #include "ui/app.h"
 
-#include "ui/platform/save_dialog.h"
-#include "ui/time/time_controls.h"
-
 #include <imgui.h>
 
 #include <algorithm>
@@ -16,7 +13,10 @@
 #include "ui/input/shortcuts.h"
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
+#include "ui/panels/windows.h"
+#include "ui/platform/save_dialog.h"
 #include "ui/plots/plot_export.h"
+#include "ui/time/time_controls.h"
 #include "ui/time/timeline_strip.h"
 #include "ui/view/scene_overlay.h"
 
@@ -142,59 +142,6 @@ void App::advance_simulation(double seconds) {
   }
 }
 
-namespace {
-
-/// The controls, section by section (the wide layout's left panel, the drawer's first tab).
-void draw_controls(AppState& s) {
-  auto section = [&](const char* title, bool open_first, void (*body)(AppState&)) {
-    ImGui::SetNextItemOpen(open_first, ImGuiCond_Once);
-    if (ImGui::CollapsingHeader(title)) {
-      ImGui::PushID(title);
-      body(s);
-      ImGui::PopID();
-      ImGui::Spacing();
-    }
-  };
-  section("Scenario", true, draw_scenario_panel);
-  section("System", true, draw_system_panel);
-  section("Container", bool(s.preset.container_radius), draw_container_panel);
-  section("Gravity, floor, drag", s.preset.gravity || s.preset.floor || s.preset.drag,
-          draw_forces_panel);
-  section("Walls and spheres",
-          !s.preset.wall_moves.empty() || s.preset.wall_temperature || s.preset.sphere_radius,
-          draw_walls_panel);
-  section("Simulation", true, draw_simulation_panel);
-  section("View", false, draw_view_panel);
-}
-
-/// Places the next window on r, and records it for swarmlab.state() once drawn.
-void place(const ScreenRect& r) {
-  ImGui::SetNextWindowPos(ImVec2(r.x, r.y));
-  ImGui::SetNextWindowSize(ImVec2(r.width, r.height));
-}
-
-void record_panel(AppState& s, const char* name) {
-  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  s.layout.panels.push_back({name, {pos.x, pos.y, size.x, size.y}, ImGui::GetScrollY()});
-}
-
-/// A finger dragging on the current window scrolls it (ImGui's own mouse-wheel routing was
-/// seen to drop a scroll after a pinch, so the window under the finger is scrolled here).
-void touch_scroll(const TouchFrame& t) {
-  if (!t.pointer || t.scroll_y == 0) return;
-  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  if (t.x < pos.x || t.y < pos.y || t.x >= pos.x + size.x || t.y >= pos.y + size.y) return;
-  ImGui::SetScrollY(std::clamp(ImGui::GetScrollY() + t.scroll_y, 0.0f, ImGui::GetScrollMaxY()));
-}
-
-/// The height the current window's content took, padding included.
-float content_height() {
-  return ImGui::GetCursorPosY() - ImGui::GetStyle().ItemSpacing.y +
-         ImGui::GetStyle().WindowPadding.y;
-}
-
-}  // namespace
-
 void App::layout_windows() {
   AppState& s = state_;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
@@ -203,52 +150,7 @@ void App::layout_windows() {
   s.layout.panels.clear();
   set_text_field_state(&s);
 
-  if (ImGui::BeginMainMenuBar()) {
-    if (ImGui::BeginMenu("Scenario")) {
-      for (const ShippedPreset& p : s.shipped)
-        if (ImGui::MenuItem(p.preset.name.empty() ? p.id.c_str() : p.preset.name.c_str(), nullptr,
-                            s.shipped_id == p.id)) {
-          s.open(p.preset, "my-" + p.id);
-          s.shipped_id = p.id;
-        }
-      ImGui::Separator();
-      if (ImGui::MenuItem("Save preset...")) request_save_preset(s);
-      if (ImGui::MenuItem("Export samples as CSV...")) request_samples_csv(s);
-      if (ImGui::MenuItem("Export stages as CSV...", nullptr, false,
-                          !s.run->primary().stages().empty()))
-        request_stages_csv(s);
-      ImGui::Separator();
-      if (ImGui::MenuItem("Quit")) request_quit(s);
-      ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("View")) {
-      ImGui::MenuItem("Controls", "1", &s.layout.controls);
-      ImGui::MenuItem("Plots", "2", &s.layout.plots);
-      if (ImGui::MenuItem("Larger UI", "Ctrl +")) s.layout.step_ui_scale(+1);
-      if (ImGui::MenuItem("Smaller UI", "Ctrl -")) s.layout.step_ui_scale(-1);
-      // The layout follows the window unless the user picks one.
-      if (ImGui::BeginMenu("Layout")) {
-        const char* labels[] = {"Automatic (from the window size)", "Wide: side panels",
-                                "Compact: view first, panels in a drawer"};
-        for (LayoutMode m : {LayoutMode::automatic, LayoutMode::wide, LayoutMode::compact})
-          if (ImGui::MenuItem(labels[int(m)], nullptr, s.layout.mode == m)) s.layout.mode = m;
-        ImGui::EndMenu();
-      }
-      draw_presentation_menu_items(s);
-      ImGui::EndMenu();
-    }
-    draw_lessons_menu(s);
-    if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
-    const std::string title = "Swarm Lab  \u2014  " + s.preset.name;
-    const float w = ImGui::CalcTextSize(title.c_str()).x;
-    // On a narrow screen the title would run into the menus: the page says what runs.
-    if (ImGui::GetCursorPosX() + font + w < viewport->Size.x) {
-      ImGui::SameLine(std::max(ImGui::GetCursorPosX() + font, 0.5f * (viewport->Size.x - w)));
-      ImGui::TextDisabled("%s", title.c_str());
-    }
-    top += ImGui::GetWindowSize().y;
-    ImGui::EndMainMenuBar();
-  }
+  top += draw_menu_bar(s);
 
   ScreenLayoutInput in;
   in.width = viewport->Size.x, in.height = viewport->Size.y;
@@ -275,86 +177,8 @@ void App::layout_windows() {
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.45f * font));
     ImGui::PushStyleVar(ImGuiStyleVar_ScrollbarSize, 1.1f * font);
   }
-  const ImGuiWindowFlags panel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
-  if (l.controls.shown()) {
-    place(l.controls);
-    if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
-      touch_scroll(touch_frame_);
-      if (s.lessons.open_lesson() &&
-          ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen))
-        draw_lesson(s, std::min(16 * font, 0.45f * l.controls.height));
-      draw_controls(s);
-    }
-    record_panel(s, "Controls");
-    ImGui::End();
-  }
-  if (l.plots.shown()) {
-    place(l.plots);
-    if (ImGui::Begin("Plots", &s.layout.plots, panel)) {
-      touch_scroll(touch_frame_);
-      draw_instruments(s);
-      draw_plots_panel(s);
-    }
-    record_panel(s, "Plots");
-    ImGui::End();
-  }
-  if (l.drawer.shown()) {
-    // Compact: one drawer beside or under the view, its parts as tabs, each scrolling alone.
-    place(l.drawer);
-    if (ImGui::Begin("##drawer", nullptr, panel | ImGuiWindowFlags_NoTitleBar)) {
-      if (ImGui::BeginTabBar("drawer", ImGuiTabBarFlags_FittingPolicyScroll)) {
-        auto tab = [&](const char* name, bool shown, void (*body)(AppState&)) {
-          if (!shown || !ImGui::BeginTabItem(name)) return;
-          if (ImGui::BeginChild(name)) {
-            touch_scroll(touch_frame_);
-            body(s);
-          }
-          record_panel(s, name);
-          ImGui::EndChild();
-          ImGui::EndTabItem();
-        };
-        // A lesson that opens or moves to another step brings its tab to the front.
-        const std::pair<const Lesson*, std::size_t> step{s.lessons.open_lesson(), s.lessons.step()};
-        const ImGuiTabItemFlags lesson_flags =
-            step.first && step != lesson_tab_step_ ? ImGuiTabItemFlags_SetSelected : 0;
-        lesson_tab_step_ = step;
-        if (step.first && ImGui::BeginTabItem("Lesson", nullptr, lesson_flags)) {
-          if (ImGui::BeginChild("Lesson")) {
-            touch_scroll(touch_frame_);
-            draw_lesson(s, std::max(8 * font, ImGui::GetContentRegionAvail().y -
-                                                  3 * ImGui::GetFrameHeightWithSpacing()));
-          }
-          record_panel(s, "Lesson");
-          ImGui::EndChild();
-          ImGui::EndTabItem();
-        }
-        tab("Controls", s.layout.controls, draw_controls);
-        tab("Plots", s.layout.plots, draw_plots_panel);
-        tab("Read-outs", true, draw_readouts);
-        tab("Instruments", true, draw_instruments);
-        ImGui::EndTabBar();
-      }
-    }
-    ImGui::End();
-  }
-
-  // Around the 3D view, never over it: the transport bar above, the read-outs below.
-  const ImGuiWindowFlags strip = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                 ImGuiWindowFlags_NoSavedSettings |
-                                 ImGuiWindowFlags_NoFocusOnAppearing;
-  place(l.transport);
-  if (ImGui::Begin("##transport", nullptr, strip)) draw_transport_bar(s);
-  s.layout.transport_height = content_height();
-  record_panel(s, "Transport");
-  ImGui::End();
-  if (l.readouts.shown()) {
-    place(l.readouts);
-    if (ImGui::Begin("##readouts", nullptr, strip)) draw_readouts(s);
-    s.layout.readouts_height = content_height();
-    record_panel(s, "Read-outs");
-    ImGui::End();
-  }
+  draw_panel_windows(s, l, touch_frame_, &lesson_tab_step_);
+  draw_view_strips(s, l);
   if (roomy) ImGui::PopStyleVar(3);
   set_text_field_state(nullptr);
   s.layout.typed_text.reset();  // typed for a field that has closed since

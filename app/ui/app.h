@@ -10,6 +10,7 @@
 
 #include "ui/app_state.h"
 #include "ui/input/touch_gestures.h"
+#include "ui/panels/windows.h"
 #include "ui/platform/save_dialog.h"
 #include "ui/view/particle_renderer.h"
 
@@ -53,7 +54,7 @@ class App {
   TouchGestures touch_;
   TouchFrame touch_frame_;
   /// The lesson step the drawer last showed: a new one brings the Lesson tab to the front.
-  std::pair<const Lesson*, std::size_t> lesson_tab_step_{nullptr, 0};
+  LessonTabStep lesson_tab_step_{nullptr, 0};
   float framed_aspect_ = 1;  ///< the view's width / height when the camera distance was set
   bool dragging_ = false;
   float drag_distance_ = 0;

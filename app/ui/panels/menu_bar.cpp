@@ -1,0 +1,68 @@
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+#include "ui/classroom/presentation.h"
+#include "ui/lesson_player/lesson_panel.h"
+#include "ui/panels/windows.h"
+#include "ui/platform/save_dialog.h"
+
+namespace swarmlab {
+
+float draw_menu_bar(AppState& state) {
+  AppState& s = state;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float font = ImGui::GetFontSize();
+  float height = 0;
+  if (ImGui::BeginMainMenuBar()) {
+    if (ImGui::BeginMenu("Scenario")) {
+      for (const ShippedPreset& p : s.shipped)
+        if (ImGui::MenuItem(p.preset.name.empty() ? p.id.c_str() : p.preset.name.c_str(), nullptr,
+                            s.shipped_id == p.id)) {
+          s.open(p.preset, "my-" + p.id);
+          s.shipped_id = p.id;
+        }
+      ImGui::Separator();
+      if (ImGui::MenuItem("Save preset...")) request_save_preset(s);
+      if (ImGui::MenuItem("Export samples as CSV...")) request_samples_csv(s);
+      if (ImGui::MenuItem("Export stages as CSV...", nullptr, false,
+                          !s.run->primary().stages().empty()))
+        request_stages_csv(s);
+      ImGui::Separator();
+      if (ImGui::MenuItem("Quit")) request_quit(s);
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+      ImGui::MenuItem("Controls", "1", &s.layout.controls);
+      ImGui::MenuItem("Plots", "2", &s.layout.plots);
+      if (ImGui::MenuItem("Larger UI", "Ctrl +")) s.layout.step_ui_scale(+1);
+      if (ImGui::MenuItem("Smaller UI", "Ctrl -")) s.layout.step_ui_scale(-1);
+      // The layout follows the window unless the user picks one.
+      if (ImGui::BeginMenu("Layout")) {
+        const char* labels[] = {"Automatic (from the window size)", "Wide: side panels",
+                                "Compact: view first, panels in a drawer"};
+        for (LayoutMode m : {LayoutMode::automatic, LayoutMode::wide, LayoutMode::compact})
+          if (ImGui::MenuItem(labels[int(m)], nullptr, s.layout.mode == m)) s.layout.mode = m;
+        ImGui::EndMenu();
+      }
+      draw_presentation_menu_items(s);
+      ImGui::EndMenu();
+    }
+    draw_lessons_menu(s);
+    if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
+    const std::string title = "Swarm Lab  \u2014  " + s.preset.name;
+    const float w = ImGui::CalcTextSize(title.c_str()).x;
+    // On a narrow screen the title would run into the menus: the page says what runs.
+    if (ImGui::GetCursorPosX() + font + w < viewport->Size.x) {
+      ImGui::SameLine(std::max(ImGui::GetCursorPosX() + font, 0.5f * (viewport->Size.x - w)));
+      ImGui::TextDisabled("%s", title.c_str());
+    }
+    height = ImGui::GetWindowSize().y;
+    ImGui::EndMainMenuBar();
+  }
+
+  return height;
+}
+
+}  // namespace swarmlab

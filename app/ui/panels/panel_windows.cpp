@@ -1,0 +1,118 @@
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "ui/lesson_player/lesson_panel.h"
+#include "ui/panels/panels.h"
+#include "ui/panels/window_placement.h"
+#include "ui/panels/windows.h"
+
+namespace swarmlab {
+namespace {
+
+/// The controls, section by section (the wide layout's left panel, the drawer's first tab).
+void draw_controls(AppState& s) {
+  auto section = [&](const char* title, bool open_first, void (*body)(AppState&)) {
+    ImGui::SetNextItemOpen(open_first, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader(title)) {
+      ImGui::PushID(title);
+      body(s);
+      ImGui::PopID();
+      ImGui::Spacing();
+    }
+  };
+  section("Scenario", true, draw_scenario_panel);
+  section("System", true, draw_system_panel);
+  section("Container", bool(s.preset.container_radius), draw_container_panel);
+  section("Gravity, floor, drag", s.preset.gravity || s.preset.floor || s.preset.drag,
+          draw_forces_panel);
+  section("Walls and spheres",
+          !s.preset.wall_moves.empty() || s.preset.wall_temperature || s.preset.sphere_radius,
+          draw_walls_panel);
+  section("Simulation", true, draw_simulation_panel);
+  section("View", false, draw_view_panel);
+}
+
+/// A finger dragging on the current window scrolls it (ImGui's own mouse-wheel routing was
+/// seen to drop a scroll after a pinch, so the window under the finger is scrolled here).
+void touch_scroll(const TouchFrame& t) {
+  if (!t.pointer || t.scroll_y == 0) return;
+  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  if (t.x < pos.x || t.y < pos.y || t.x >= pos.x + size.x || t.y >= pos.y + size.y) return;
+  ImGui::SetScrollY(std::clamp(ImGui::GetScrollY() + t.scroll_y, 0.0f, ImGui::GetScrollMaxY()));
+}
+
+}  // namespace
+
+void draw_panel_windows(AppState& state, const ScreenLayout& layout, const TouchFrame& touch,
+                        LessonTabStep* lesson_tab_step) {
+  AppState& s = state;
+  const ScreenLayout& l = layout;
+  const float font = ImGui::GetFontSize();
+  const ImGuiWindowFlags panel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+  if (l.controls.shown()) {
+    place(l.controls);
+    if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
+      touch_scroll(touch);
+      if (s.lessons.open_lesson() &&
+          ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen))
+        draw_lesson(s, std::min(16 * font, 0.45f * l.controls.height));
+      draw_controls(s);
+    }
+    record_panel(s, "Controls");
+    ImGui::End();
+  }
+  if (l.plots.shown()) {
+    place(l.plots);
+    if (ImGui::Begin("Plots", &s.layout.plots, panel)) {
+      touch_scroll(touch);
+      draw_instruments(s);
+      draw_plots_panel(s);
+    }
+    record_panel(s, "Plots");
+    ImGui::End();
+  }
+  if (l.drawer.shown()) {
+    // Compact: one drawer beside or under the view, its parts as tabs, each scrolling alone.
+    place(l.drawer);
+    if (ImGui::Begin("##drawer", nullptr, panel | ImGuiWindowFlags_NoTitleBar)) {
+      if (ImGui::BeginTabBar("drawer", ImGuiTabBarFlags_FittingPolicyScroll)) {
+        auto tab = [&](const char* name, bool shown, void (*body)(AppState&)) {
+          if (!shown || !ImGui::BeginTabItem(name)) return;
+          if (ImGui::BeginChild(name)) {
+            touch_scroll(touch);
+            body(s);
+          }
+          record_panel(s, name);
+          ImGui::EndChild();
+          ImGui::EndTabItem();
+        };
+        // A lesson that opens or moves to another step brings its tab to the front.
+        const std::pair<const Lesson*, std::size_t> step{s.lessons.open_lesson(), s.lessons.step()};
+        const ImGuiTabItemFlags lesson_flags =
+            step.first && step != *lesson_tab_step ? ImGuiTabItemFlags_SetSelected : 0;
+        *lesson_tab_step = step;
+        if (step.first && ImGui::BeginTabItem("Lesson", nullptr, lesson_flags)) {
+          if (ImGui::BeginChild("Lesson")) {
+            touch_scroll(touch);
+            draw_lesson(s, std::max(8 * font, ImGui::GetContentRegionAvail().y -
+                                                  3 * ImGui::GetFrameHeightWithSpacing()));
+          }
+          record_panel(s, "Lesson");
+          ImGui::EndChild();
+          ImGui::EndTabItem();
+        }
+        tab("Controls", s.layout.controls, draw_controls);
+        tab("Plots", s.layout.plots, draw_plots_panel);
+        tab("Read-outs", true, draw_readouts);
+        tab("Instruments", true, draw_instruments);
+        ImGui::EndTabBar();
+      }
+    }
+    ImGui::End();
+  }
+
+}
+
+}  // namespace swarmlab
