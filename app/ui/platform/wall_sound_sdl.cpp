@@ -1,5 +1,4 @@
 // The desktop's wall clicks: SDL audio, mono float samples queued a frame at a time.
-#ifndef __EMSCRIPTEN__
 
 #include <SDL.h>
 
@@ -67,5 +66,3 @@ bool WallSound::play(int clicks, double seconds) {
 }
 
 }  // namespace swarmlab
-
-#endif

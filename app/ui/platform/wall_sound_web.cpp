@@ -1,7 +1,6 @@
 // The browser's wall clicks: Web Audio. The AudioContext is made when sound is turned on, which
 // follows a key press or a click; should the page have had no gesture yet (sound turned on by
 // swarmlab.set() from a script), it starts suspended and resumes at the next one.
-#ifdef __EMSCRIPTEN__
 
 #include <emscripten.h>
 
@@ -81,5 +80,3 @@ bool WallSound::play(int clicks, double seconds) {
 }
 
 }  // namespace swarmlab
-
-#endif
