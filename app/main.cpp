@@ -5,6 +5,7 @@
 
 #include "cli/cli.h"
 #include "cli/cli_bench.h"
+#include "ui/plots/plot_tab.h"
 #ifdef SWARMLAB_HAS_DESKTOP
 #include "desktop/desktop.h"
 #endif
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
   app.add_option("--plot-tab", plot_tab,
                  "Open plot tab N (numbered from 1, left to right: 1 Wall P, T; 2 Energy; "
                  "3 Expansion; 4 Compare; 5 Particle; 6 Projects)")
-      ->check(CLI::Range(1, 6));
+      ->check(CLI::Range(1, swarmlab::kPlotTabCount));
   bool presentation = false;
   app.add_flag("--presentation", presentation,
                "Start in presentation mode: light theme, large text, the view and one plot");

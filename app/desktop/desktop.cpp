@@ -100,9 +100,9 @@ int run_desktop(const DesktopOptions& options) {
       close_window(f.window);
       return 1;
     }
-    f.app->state().plots.tab = 4;
+    f.app->state().plots.tab = PlotTab::particle;
   }
-  if (options.plot_tab > 0) f.app->state().plots.tab = options.plot_tab - 1;
+  if (options.plot_tab > 0) f.app->state().plots.tab = plot_tab_numbered(options.plot_tab);
   if (options.presentation) set_presentation(f.app->state(), true);
   if (options.sound) f.app->state().presentation.sound = true;
 

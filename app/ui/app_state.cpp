@@ -52,7 +52,10 @@ void AppState::open(const swarm::Preset& p, std::string from) {
 
   view.follow_cm = !p.container_radius;
   view.springs = particle_count(p) <= 6 ? SpringOverlay::pairs : SpringOverlay::off;
-  plots.tab = !p.compare.empty() ? 3 : p.expansion ? 2 : p.container_radius ? 0 : 1;
+  plots.tab = !p.compare.empty()    ? PlotTab::compare
+              : p.expansion         ? PlotTab::expansion
+              : p.container_radius  ? PlotTab::wall
+                                    : PlotTab::energy;
   plots.average_window = 20.0 * double(run->primary().plan().sample_every) * p.dt;
   plots.scroll_window = 0;
   reframe = true;

@@ -14,6 +14,7 @@
 #include "ui/lesson_player/lesson_session.h"
 #include "ui/platform/preset_store.h"
 #include "ui/platform/save_request.h"
+#include "ui/plots/plot_tab.h"
 #include "ui/time/instruments.h"
 #include "ui/time/live_run.h"
 #include "ui/time/time_travel.h"
@@ -42,8 +43,8 @@ struct PlotOptions {
   double average_window = 0;  ///< running average of P and T over this time; 0: none
   double scroll_window = 0;   ///< show the last stretch of this length; 0: the whole run
   bool log_log = true;        ///< P-V, T-V, P-T on log-log axes
-  int tab = -1;               ///< tab to select on the next frame, -1: leave as is
-  int shown_tab = -1;         ///< the tab open in the last frame
+  std::optional<PlotTab> tab;        ///< tab to select on the next frame; none: leave as is
+  std::optional<PlotTab> shown_tab;  ///< the tab open in the last frame
   unsigned tab_window = 0;    ///< an ImGui id of the window that drew the tabs last frame
 };
 

@@ -3,14 +3,14 @@
 namespace swarmlab {
 namespace {
 
-std::size_t plot_tab(LessonPlot plot) {
+PlotTab plot_tab(LessonPlot plot) {
   switch (plot) {
-    case LessonPlot::wall: return 0;
-    case LessonPlot::energy: return 1;
-    case LessonPlot::expansion: return 2;
-    case LessonPlot::compare: return 3;
+    case LessonPlot::wall: return PlotTab::wall;
+    case LessonPlot::energy: return PlotTab::energy;
+    case LessonPlot::expansion: return PlotTab::expansion;
+    case LessonPlot::compare: return PlotTab::compare;
   }
-  return 0;
+  return PlotTab::wall;
 }
 
 SpringOverlay overlay_of(LessonOverlay overlay) {
@@ -31,7 +31,7 @@ void show_lesson_scene(AppState& app, const LessonScene& scene) {
   }
   if (!scene.step) return;
   const LessonStep& s = *scene.step;
-  if (s.plot) app.plots.tab = int(plot_tab(*s.plot));
+  if (s.plot) app.plots.tab = plot_tab(*s.plot);
   if (s.select && *s.select < app.run->system().particles.size()) {
     app.selected = *s.select;
     app.update_followed();

@@ -4,8 +4,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include "swarm/physics/regime.h"
 #include "ui/classroom/theme_style.h"
@@ -243,55 +245,58 @@ void draw_compare_tab(AppState& state, float plot_height) {
   draw_plot("position_error", p, plot_height);
 }
 
+/// A plot tab: its label, the rows of options above its plots, how many plots share its height
+/// and what draws them. One row per PlotTab, in its order.
+struct PlotTabDescriptor {
+  PlotTab tab;
+  const char* label;
+  float option_rows;  ///< in frame heights
+  int (*plot_count)(const AppState& state);
+  void (*draw)(AppState& state, float plot_height);
+};
+
+int two(const AppState&) { return 2; }
+int three(const AppState&) { return 3; }
+int one(const AppState&) { return 1; }
+int projects(const AppState& state) { return std::max(1, project_plot_count(state.preset)); }
+
+// Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
+constexpr PlotTabDescriptor kPlotTabs[] = {
+    {PlotTab::wall, "Wall P, T", 2.6f, two, draw_wall_tab},
+    {PlotTab::energy, "Energy", 1.0f, two, draw_energy_tab},
+    {PlotTab::expansion, "Expansion", 1.4f, three, draw_expansion_tab},
+    {PlotTab::compare, "Compare", 0.0f, two, draw_compare_tab},
+    {PlotTab::particle, "Particle", 3.0f, one, draw_particle_tab},
+    {PlotTab::projects, "Projects", 0.0f, projects, draw_projects_tab},
+};
+static_assert(std::size(kPlotTabs) == kPlotTabCount, "one descriptor per plot tab");
+
 }  // namespace
 
 void draw_plots_panel(AppState& state) {
-  // The indices are fixed: --select, --plot-tab and the lessons open tabs by number.
-  const char* tabs[] = {"Wall P, T", "Energy", "Expansion", "Compare", "Particle", "Projects"};
-  // Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
   // Another window draws the tabs after a change of layout or presentation mode: its new tab
   // bar opens on the tab that was open, not on the first.
   const unsigned window = ImGui::GetID("##plot-tabs");  // differs with the window drawing it
-  if (window != state.plots.tab_window && state.plots.tab < 0)
+  if (window != state.plots.tab_window && !state.plots.tab)
     state.plots.tab = state.plots.shown_tab;
   state.plots.tab_window = window;
   if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
-  for (int i = 0; i < 6; ++i) {
-    const ImGuiTabItemFlags flags = state.plots.tab == i ? ImGuiTabItemFlags_SetSelected : 0;
-    if (!ImGui::BeginTabItem(tabs[i], nullptr, flags)) continue;
-    state.plots.shown_tab = i;
-    const float options = i == 0 ? 2.6f : i == 2 ? 1.4f : i == 1 ? 1.0f : i == 4 ? 3.0f : 0.0f;
+  for (std::size_t i = 0; i < std::size(kPlotTabs); ++i) {
+    const PlotTabDescriptor& d = kPlotTabs[i];
+    // Draw order is the enum's, so that --plot-tab's numbers are the tabs' places on screen.
+    assert(d.tab == PlotTab(i));
+    const ImGuiTabItemFlags flags = state.plots.tab == d.tab ? ImGuiTabItemFlags_SetSelected : 0;
+    if (!ImGui::BeginTabItem(d.label, nullptr, flags)) continue;
+    state.plots.shown_tab = d.tab;
     const float available =
-        ImGui::GetContentRegionAvail().y - options * ImGui::GetFrameHeightWithSpacing();
-    const int plots = i == 2   ? 3
-                      : i == 4 ? 1
-                      : i == 5 ? std::max(1, project_plot_count(state.preset))
-                               : 2;
-    const float height = std::max(8 * ImGui::GetFontSize(),
-                                  available / float(plots) - ImGui::GetStyle().ItemSpacing.y);
-    switch (i) {
-      case 0:
-        draw_wall_tab(state, height);
-        break;
-      case 1:
-        draw_energy_tab(state, height);
-        break;
-      case 2:
-        draw_expansion_tab(state, height);
-        break;
-      case 3:
-        draw_compare_tab(state, height);
-        break;
-      case 4:
-        draw_particle_tab(state, height);
-        break;
-      case 5:
-        draw_projects_tab(state, height);
-        break;
-    }
+        ImGui::GetContentRegionAvail().y - d.option_rows * ImGui::GetFrameHeightWithSpacing();
+    const float height =
+        std::max(8 * ImGui::GetFontSize(),
+                 available / float(d.plot_count(state)) - ImGui::GetStyle().ItemSpacing.y);
+    d.draw(state, height);
     ImGui::EndTabItem();
   }
-  state.plots.tab = -1;
+  state.plots.tab.reset();
   ImGui::EndTabBar();
 }
 
