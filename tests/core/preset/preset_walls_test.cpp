@@ -1,4 +1,4 @@
-// The preset keys of the Appendix B walls and contacts (core/src/preset/preset.cpp): read, written
+// The preset keys of the Appendix B walls and contacts (core/src/preset/): read, written
 // back, turned into the engine's configuration, and refused with one message when senseless.
 
 #include <doctest/doctest.h>

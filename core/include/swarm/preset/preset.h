@@ -1,6 +1,7 @@
 #pragma once
 /// The shared preset format (JSON, version 1): one file runs the same in the CLI, the desktop
 /// app and the browser. The README's "Preset reference" documents every key.
+// Implemented in core/src/preset/preset_{read,rules,write,derived}.cpp, one idea each.
 
 #include <optional>
 #include <string>
@@ -35,7 +36,8 @@ struct Preset {
   std::optional<Drag> drag;     ///< "drag": {"gamma": g} or {"b": b, "particles": [i, ...]}
 
   // Appendix B walls and contacts: "container": {"moves": [...]} or {"wall_temperature": Tw},
-  // and "hard_spheres": {"radius": a} (swarm/physics/wall_motion.h, thermal_wall.h, hard_spheres.h).
+  // and "hard_spheres": {"radius": a} (swarm/physics/wall_motion.h, thermal_wall.h,
+  // hard_spheres.h).
   std::vector<WallMove> wall_moves;
   std::optional<double> wall_temperature;
   std::optional<double> sphere_radius;

@@ -1,115 +1,43 @@
-#include "swarm/preset/preset.h"
+// Reading a preset: the text checked before it is parsed, then every key from JSON into a
+// Preset, each refused with one message naming the field.
+//
+// Index
+// [SECTION] Particles: a list or a generator
+// [SECTION] Appendix B: gravity, a floor and drag
+// [SECTION] Appendix B: walls and contacts
+// [SECTION] The top level: every key of a preset
+// [SECTION] The text before it is parsed, and parse_preset
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
+#include "preset/preset_fields.h"
 #include "preset/preset_numbers.h"
+#include "swarm/preset/preset.h"
 #include "swarm/preset/printable_text.h"
-#include "swarm/physics/regime.h"
 #include "swarm/preset/resource_budget.h"
 #include "swarm/preset/strict_json.h"
 
 namespace swarm {
 namespace {
 
-using json = nlohmann::json;
+using preset_detail::fail;
+using preset_detail::Fields;
+using preset_detail::format;
+using preset_detail::Invalid;
+using preset_detail::json;
+using preset_detail::require;
 
 constexpr long kMaxParticles = 10'000'000;
-constexpr long kMaxPairwiseParticles = 20'000;
 constexpr double kMaxSteps = 1e9;
-/// nlohmann's tree of a preset takes up to about this many bytes per byte of its text (a list
-/// of particles: 8-byte numbers in 16-byte values, vectors and maps around them).
-constexpr double kParseBytesPerTextByte = 10;
 
-struct Invalid {
-  std::string message;
-};
-
-[[noreturn]] void fail(const std::string& field, const std::string& rule) {
-  throw Invalid{field + ": " + rule};
-}
-
-std::string format(double x) {
-  std::ostringstream os;
-  os << x;
-  return os.str();
-}
-
-std::string join(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
-}
-
-/// Reads one JSON object and refuses keys it does not know.
-class Fields {
- public:
-  Fields(const json& j, std::string path, std::initializer_list<const char*> allowed)
-      : j_(j), path_(std::move(path)) {
-    if (!j.is_object()) fail(path_.empty() ? "preset" : path_, "must be a JSON object");
-    for (const auto& [key, value] : j.items()) {
-      bool known = false;
-      std::string list;
-      for (const char* a : allowed) {
-        known = known || key == a;
-        list += (list.empty() ? "" : ", ") + std::string(a);
-      }
-      if (!known) fail(join(path_, printable(key)), "unknown key (allowed here: " + list + ")");
-    }
-  }
-
-  bool has(const char* key) const { return j_.contains(key) && !j_.at(key).is_null(); }
-  const json& at(const char* key) const { return j_.at(key); }
-  std::string path(const char* key) const { return join(path_, key); }
-
-  double number(const char* key) const {
-    if (!has(key)) fail(path(key), "missing (a number is required)");
-    return number_value(at(key), path(key));
-  }
-  double number(const char* key, double fallback) const {
-    return has(key) ? number_value(at(key), path(key)) : fallback;
-  }
-  std::int64_t integer(const char* key, std::int64_t lo, std::int64_t hi) const {
-    if (!has(key)) fail(path(key), "missing (an integer is required)");
-    const json& v = at(key);
-    if (!v.is_number_integer())
-      fail(path(key), v.is_number() ? "must be a whole number" : "must be an integer");
-    const long long x = v.is_number_unsigned() ? (long long)std::min<unsigned long long>(
-                                                     v.get<unsigned long long>(), 1ull << 62)
-                                               : v.get<long long>();
-    if (x < lo || x > hi)
-      fail(path(key), "must be between " + std::to_string(lo) + " and " + std::to_string(hi));
-    return std::int64_t(x);
-  }
-  std::string text(const char* key, const std::string& fallback) const {
-    if (!has(key)) return fallback;
-    if (!at(key).is_string()) fail(path(key), "must be a string");
-    return at(key).get<std::string>();
-  }
-  bool flag(const char* key, bool fallback) const {
-    if (!has(key)) return fallback;
-    if (!at(key).is_boolean()) fail(path(key), "must be true or false");
-    return at(key).get<bool>();
-  }
-
-  static double number_value(const json& v, const std::string& path) {
-    if (!v.is_number()) fail(path, "must be a number");
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) fail(path, "must be a finite number");
-    return x;
-  }
-
- private:
-  const json& j_;
-  std::string path_;
-};
-
-void require(bool ok, const std::string& field, const std::string& rule) {
-  if (!ok) fail(field, rule);
-}
+// [SECTION] Particles: a list or a generator -----------------------------------------------
 
 Vec3 vector3(const json& v, const std::string& path) {
   if (!v.is_array() || v.size() != 3) fail(path, "must be an array of 3 numbers [x, y, z]");
@@ -176,7 +104,8 @@ SwarmSpec swarm_spec(const json& j) {
   return s;
 }
 
-// Gravity, a floor and drag (Appendix B).
+// [SECTION] Appendix B: gravity, a floor and drag ------------------------------------------
+
 void parse_forces(const Fields& f, Preset& p) {
   if (f.has("gravity")) {
     p.gravity = vector3(f.at("gravity"), "gravity");
@@ -229,7 +158,8 @@ void parse_forces(const Fields& f, Preset& p) {
                                           list[i].get<unsigned long long>(), 1ull << 62)
                                     : list[i].get<long long>();
         require(index >= 0, path, "must be >= 0");
-        require(seen.insert(index).second, path, "lists particle " + std::to_string(index) + " twice");
+        require(seen.insert(index).second, path,
+                "lists particle " + std::to_string(index) + " twice");
         drag.particles.push_back(std::size_t(index));
       }
       const auto analytic_needs = [](Method m) { return m == Method::analytic; };
@@ -246,7 +176,7 @@ void parse_forces(const Fields& f, Preset& p) {
   }
 }
 
-// [Appendix B walls and contacts] ---------------------------------------------------------
+// [SECTION] Appendix B: walls and contacts -------------------------------------------------
 
 constexpr std::size_t kMaxWallMoves = 1000;
 /// Wall radii, speeds and temperatures stay far inside a double's range (the energies a
@@ -282,55 +212,13 @@ void parse_wall_model(const Fields& c, Preset& p) {
   }
 }
 
-/// The rules that tie the Appendix B keys to the rest of the preset.
-void check_walls_and_contacts(const Preset& p, long count) {
-  const bool appendix_b = !p.wall_moves.empty() || p.wall_temperature || p.sphere_radius;
-  if (p.collisions == CollisionMode::exact)
-    require(!appendix_b, "collisions",
-            "\"exact\" solves contact times with a fixed elastic wall only: moving and hot "
-            "walls and hard spheres use \"paper\"");
-  if (!p.wall_moves.empty())
-    require(!p.expansion, "expansion",
-            "the wall already moves (container.moves): give moves or an expansion, not both");
-  if (!p.sphere_radius) return;
-  // The floor's contact test is made for a point: a sphere would sink by its radius into it.
-  require(!p.floor, "floor",
-          "hard spheres on a floor are not modelled yet (the floor would meet each sphere's "
-          "centre, not its surface): give floor or hard_spheres, not both");
-  const double a = *p.sphere_radius;
-  if (!p.container_radius) return;
-  double smallest = *p.container_radius;
-  for (std::size_t i = 0; i < p.wall_moves.size(); ++i) {
-    require(p.wall_moves[i].to > 2 * a, "container.moves[" + std::to_string(i) + "].to",
-            "must be > 2 * hard_spheres.radius (a sphere must fit inside)");
-    smallest = std::min(smallest, p.wall_moves[i].to);
-  }
-  require(*p.container_radius > 2 * a, "hard_spheres.radius",
-          "must be < container.radius / 2 (a sphere must fit inside)");
-  const double reach = *p.container_radius - a;  // the centres' room
-  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
-    for (std::size_t i = 0; i < list->size(); ++i)
-      require((*list)[i].r.norm() <= reach, "particles[" + std::to_string(i) + "].r",
-              "a sphere's centre must start within container.radius - hard_spheres.radius = " +
-                  format(reach));
-  } else {
-    require(std::get<SwarmSpec>(p.particles).position_radius <= reach,
-            "particles.position_radius",
-            "must be <= container.radius - hard_spheres.radius = " + format(reach) +
-                " (the spheres must start inside)");
-  }
-  // Random starts overlap; beyond about half of the volume the centres can hardly move.
-  const double fraction = double(count) * std::pow(a / (smallest - a), 3);
-  require(fraction <= 0.5, "hard_spheres.radius",
-          "the spheres would fill " + format(fraction) +
-              " of the volume their centres can reach (at most 0.5)");
-}
+// [SECTION] The top level: every key of a preset -------------------------------------------
 
 Preset parse(const json& j) {
   const Fields f(j, "",
                  {"version", "name", "description", "J", "particles", "container", "method",
-                  "collisions", "dt", "duration", "expansion", "sample_every", "compare",
-                  "gravity", "floor", "drag", "hard_spheres"});
+                  "collisions", "dt", "duration", "expansion", "sample_every", "compare", "gravity",
+                  "floor", "drag", "hard_spheres"});
   if (f.has("version"))
     require(f.at("version") == kPresetVersion, "version",
             "must be " + std::to_string(kPresetVersion) + " (the only preset version so far)");
@@ -426,129 +314,11 @@ Preset parse(const json& j) {
   return p;
 }
 
-/// Gravity, floor and drag against the particles: everyone starts on or above the floor, and
-/// drag.particles name particles that exist.
-void check_forces_consistency(const Preset& p, long count) {
-  if (p.floor) {
-    if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
-      for (std::size_t i = 0; i < list->size(); ++i)
-        require((*list)[i].r.z() >= p.floor->z, "particles[" + std::to_string(i) + "].r",
-                "starts below the floor (z = " + format((*list)[i].r.z()) +
-                    " < floor.z = " + format(p.floor->z) + ")");
-    } else {
-      const auto& s = std::get<SwarmSpec>(p.particles);
-      require(p.floor->z <= -s.position_radius, "floor.z",
-              "must be <= -particles.position_radius (the swarm is generated in a ball about "
-              "the origin and must start above the floor)");
-    }
-  }
-  if (p.drag)
-    for (std::size_t i = 0; i < p.drag->particles.size(); ++i)
-      require(long(p.drag->particles[i]) < count,
-              "drag.particles[" + std::to_string(i) + "]",
-              "particle " + std::to_string(p.drag->particles[i]) + " does not exist (there are " +
-                  std::to_string(count) + ", numbered from 0)");
-}
+// [SECTION] The text before it is parsed, and parse_preset ---------------------------------
 
-/// Rules that look at the particles and the rest of the preset together.
-void check_consistency(const Preset& p) {
-  long count = 0;
-  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
-    count = long(list->size());
-    if (p.container_radius) {
-      for (std::size_t i = 0; i < list->size(); ++i) {
-        const double r = (*list)[i].r.norm();
-        require(r <= *p.container_radius, "particles[" + std::to_string(i) + "].r",
-                "starts outside the container (|r| = " + format(r) +
-                    " > container.radius = " + format(*p.container_radius) + ")");
-      }
-    }
-  } else {
-    const auto& s = std::get<SwarmSpec>(p.particles);
-    count = s.count;
-    if (p.container_radius)
-      require(s.position_radius <= *p.container_radius, "particles.position_radius",
-              "must be <= container.radius (particles must start inside the container)");
-  }
-  check_forces_consistency(p, count);
-  check_walls_and_contacts(p, count);
-  for (Method m : p.compare)
-    require(!is_pairwise(m) || count <= kMaxPairwiseParticles, "compare",
-            "\"" + std::string(name_of(m)) + "\" sums over every pair: use at most " +
-                std::to_string(kMaxPairwiseParticles) + " particles");
-  if (is_pairwise(p.method))
-    require(count <= kMaxPairwiseParticles, "method",
-            "\"" + std::string(name_of(p.method)) + "\" sums over every pair: use at most " +
-                std::to_string(kMaxPairwiseParticles) + " particles (got " + std::to_string(count) +
-                ")");
-}
-
-json to_json(const Preset& p) {
-  json j;
-  j["version"] = kPresetVersion;
-  if (!p.name.empty()) j["name"] = p.name;
-  if (!p.description.empty()) j["description"] = p.description;
-  j["J"] = p.J;
-  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
-    json arr = json::array();
-    for (const auto& q : *list)
-      arr.push_back(
-          {{"m", q.m}, {"r", {q.r.x(), q.r.y(), q.r.z()}}, {"v", {q.v.x(), q.v.y(), q.v.z()}}});
-    j["particles"] = arr;
-  } else {
-    const auto& s = std::get<SwarmSpec>(p.particles);
-    json g;
-    g["count"] = s.count;
-    if (s.mass_min == s.mass_max)
-      g["mass"] = s.mass_min;
-    else
-      g["mass"] = {{"min", s.mass_min}, {"max", s.mass_max}};
-    g["position_radius"] = s.position_radius;
-    if (s.velocities == SwarmSpec::Velocities::ball)
-      g["velocity"] = {{"speed", s.speed}};
-    else
-      g["velocity"] = {{"temperature", s.temperature}};
-    g["cm_at_rest"] = s.cm_at_rest;
-    g["seed"] = s.seed;
-    j["particles"] = g;
-  }
-  j["container"] = p.container_radius ? json{{"radius", *p.container_radius}} : json(nullptr);
-  if (p.container_radius && !p.wall_moves.empty()) {
-    json moves = json::array();
-    for (const WallMove& m : p.wall_moves) moves.push_back({{"to", m.to}, {"speed", m.speed}});
-    j["container"]["moves"] = moves;
-  }
-  if (p.container_radius && p.wall_temperature)
-    j["container"]["wall_temperature"] = *p.wall_temperature;
-  if (p.sphere_radius) j["hard_spheres"] = {{"radius", *p.sphere_radius}};
-  j["method"] = std::string(name_of(p.method));
-  j["collisions"] = std::string(name_of(p.collisions));
-  j["dt"] = p.dt;
-  if (p.expansion) {
-    j["expansion"] = {{"factor", p.expansion->factor},
-                      {"stages", p.expansion->stages},
-                      {"tau", p.expansion->tau},
-                      {"thermalize", p.expansion->thermalize_fraction}};
-  } else {
-    j["duration"] = p.duration;
-  }
-  if (p.sample_every) j["sample_every"] = *p.sample_every;
-  if (!p.compare.empty()) {
-    json list = json::array();
-    for (Method m : p.compare) list.push_back(std::string(name_of(m)));
-    j["compare"] = list;
-  }
-  if (p.gravity) j["gravity"] = {p.gravity->x(), p.gravity->y(), p.gravity->z()};
-  if (p.floor) j["floor"] = {{"z", p.floor->z}, {"restitution", p.floor->restitution}};
-  if (p.drag) {
-    if (p.drag->mass_proportional())
-      j["drag"] = {{"gamma", p.drag->gamma}};
-    else
-      j["drag"] = {{"b", p.drag->b}, {"particles", p.drag->particles}};
-  }
-  return j;
-}
-
+/// nlohmann's tree of a preset takes up to about this many bytes per byte of its text (a list
+/// of particles: 8-byte numbers in 16-byte values, vectors and maps around them).
+constexpr double kParseBytesPerTextByte = 10;
 /// No preset field needs a longer string; nlohmann reads a 100 MB one in seconds, so such text
 /// is refused by a scan before it is parsed.
 constexpr std::size_t kMaxStringBytes = 65'536;
@@ -573,7 +343,6 @@ std::string overlong_string(std::string_view text) {
   }
   return {};
 }
-
 
 }  // namespace
 
@@ -611,7 +380,7 @@ PresetParse parse_preset(std::string_view json_text, const ResourceLimits& limit
   }
   try {
     Preset p = parse(j);
-    check_consistency(p);
+    preset_detail::check_consistency(p);
     if (std::string e = unrepresentable_numbers(p); !e.empty()) throw Invalid{std::move(e)};
     if (std::string e = resource_error(p, limits); !e.empty()) throw Invalid{std::move(e)};
     out.preset = std::move(p);
@@ -621,46 +390,6 @@ PresetParse parse_preset(std::string_view json_text, const ResourceLimits& limit
     out.error = printable(std::string("preset: ") + e.what(), 300);
   }
   return out;
-}
-
-std::string preset_error(const Preset& p, const ResourceLimits& limits) {
-  return parse_preset(preset_to_json(p), limits).error;
-}
-
-std::string preset_to_json(const Preset& p, int indent) { return to_json(p).dump(indent); }
-
-System initial_system(const Preset& p) {
-  System s;
-  if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles))
-    s.particles = *list;
-  else
-    s = generate_swarm(std::get<SwarmSpec>(p.particles));
-  s.J = p.J;
-  s.t = 0;
-  return s;
-}
-
-long step_count(const Preset& p) {
-  if (p.expansion) return p.expansion->stages * steps_per_stage(*p.expansion, p.dt);
-  return std::max(1L, std::lround(p.duration / p.dt));
-}
-
-RunPlan run_plan(const Preset& p) {
-  RunPlan plan;
-  plan.engine.method = p.method;
-  plan.engine.collisions = p.collisions;
-  plan.engine.container_radius = p.container_radius;
-  if (p.gravity) plan.engine.forces.gravity = *p.gravity;
-  plan.engine.forces.drag = p.drag;
-  plan.engine.floor = p.floor;
-  plan.engine.wall_moves = p.wall_moves;
-  plan.engine.wall_temperature = p.wall_temperature;
-  plan.engine.sphere_radius = p.sphere_radius;
-  plan.dt = p.dt;
-  plan.steps = step_count(p);
-  plan.sample_every = p.sample_every.value_or(std::max(1L, plan.steps / 2000));
-  plan.expansion = p.expansion;
-  return plan;
 }
 
 }  // namespace swarm
