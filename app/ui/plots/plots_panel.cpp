@@ -4,7 +4,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -269,7 +268,13 @@ constexpr PlotTabDescriptor kPlotTabs[] = {
     {PlotTab::particle, "Particle", 3.0f, one, draw_particle_tab},
     {PlotTab::projects, "Projects", 0.0f, projects, draw_projects_tab},
 };
-static_assert(std::size(kPlotTabs) == kPlotTabCount, "one descriptor per plot tab");
+// The rows follow the enum, so that --plot-tab's numbers are the tabs' places on screen.
+constexpr bool in_plot_tab_order() {
+  for (std::size_t i = 0; i < std::size(kPlotTabs); ++i)
+    if (kPlotTabs[i].tab != PlotTab(i)) return false;
+  return std::size(kPlotTabs) == kPlotTabCount;
+}
+static_assert(in_plot_tab_order(), "one descriptor per plot tab, in PlotTab's order");
 
 }  // namespace
 
@@ -281,10 +286,7 @@ void draw_plots_panel(AppState& state) {
     state.plots.tab = state.plots.shown_tab;
   state.plots.tab_window = window;
   if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
-  for (std::size_t i = 0; i < std::size(kPlotTabs); ++i) {
-    const PlotTabDescriptor& d = kPlotTabs[i];
-    // Draw order is the enum's, so that --plot-tab's numbers are the tabs' places on screen.
-    assert(d.tab == PlotTab(i));
+  for (const PlotTabDescriptor& d : kPlotTabs) {
     const ImGuiTabItemFlags flags = state.plots.tab == d.tab ? ImGuiTabItemFlags_SetSelected : 0;
     if (!ImGui::BeginTabItem(d.label, nullptr, flags)) continue;
     state.plots.shown_tab = d.tab;
