@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 
+#include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/fonts.h"
 #include "ui/platform/gl_api.h"
 #include "ui/plots/plot_export.h"
@@ -94,10 +95,14 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   // would toggle Play twice; the UI's clock is capped so a press repeats only when held.
   ImGui::GetIO().DeltaTime = std::min(ImGui::GetIO().DeltaTime, kMaxUiFrameSeconds);
   apply_touch(*f.app);
+  ParallelDom& dom = parallel_dom();
+  dom.apply_requests();  // what the page's mirrored elements asked since the last frame
+  dom.begin_frame();
   ImGui::NewFrame();
   f.app->update(seconds);
   f.outputs.update(f.app->state(), f.window.window, seconds);
   ImGui::Render();
+  dom.end_frame();
 
   const ImGuiIO& io = ImGui::GetIO();
   glViewport(0, 0, int(io.DisplaySize.x * io.DisplayFramebufferScale.x),

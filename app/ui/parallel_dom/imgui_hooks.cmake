@@ -1,0 +1,71 @@
+# Dear ImGui 1.86's widgets, from Debian's sources, with the parallel DOM's value hook added
+# where the stock item hooks (IMGUI_ENABLE_TEST_ENGINE) say too little for a screen reader:
+# what a text or number field holds, a slider's value, whether a radio button or a list entry
+# is selected, a combo's choice; and item info for the three widgets that report none
+# (InvisibleButton, a window's close button, a combo). Later ImGui releases report most of
+# these themselves. Each insertion is checked: a different ImGui stops the configure.
+#   swarmlab_imgui_widgets_with_hooks(<imgui_dir> <out_var>): writes the patched copy into the
+#   build tree and sets out_var to its path.
+# Puts `replacement` where `anchor` stands in src (the caller's), which must hold it `expected` times.
+function(_swarmlab_hook_edit anchor replacement expected)
+  string(LENGTH "${src}" before)
+  string(REPLACE "${anchor}" "@" probe "${src}")
+  string(LENGTH "${probe}" after)
+  string(LENGTH "${anchor}" alen)
+  math(EXPR count "(${before} - ${after}) / (${alen} - 1)")
+  if(NOT count EQUAL expected)
+    message(FATAL_ERROR "imgui_hooks.cmake: expected ${expected} of this text in imgui_widgets.cpp, found ${count}:\n${anchor}")
+  endif()
+  string(REPLACE "${anchor}" "${replacement}" src "${src}")
+  set(src "${src}" PARENT_SCOPE)
+endfunction()
+
+function(swarmlab_imgui_widgets_with_hooks imgui_dir out_var)
+  file(READ "${imgui_dir}/imgui_widgets.cpp" src)
+  set(out "${CMAKE_CURRENT_BINARY_DIR}/generated/imgui_widgets_with_hooks.cpp")
+  set(hook "ParallelDomHook_ItemValue")
+  _swarmlab_hook_edit(
+    "#include \"imgui_internal.h\"\n"
+    "#include \"imgui_internal.h\"\nextern void ${hook}(ImGuiContext* ctx, ImGuiID id, int kind, const char* value);  // Swarm Lab: app/ui/parallel_dom\n"
+    1)
+  # RadioButton(label, bool active): 4 = radio, selected or not
+  _swarmlab_hook_edit(
+    "        RenderText(label_pos, label);\n\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n"
+    "        RenderText(label_pos, label);\n\n    if (g.TestEngineHookItems) ${hook}(&g, id, 4, active ? \"1\" : \"0\");\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n"
+    1)
+  # InvisibleButton: its str_id is its name
+  _swarmlab_hook_edit(
+    "    bool pressed = ButtonBehavior(bb, id, &hovered, &held, flags);\n\n    return pressed;\n"
+    "    bool pressed = ButtonBehavior(bb, id, &hovered, &held, flags);\n    if (GImGui->TestEngineHookItems) ImGuiTestEngineHook_ItemInfo(GImGui, id, str_id, GImGui->LastItemData.StatusFlags);\n\n    return pressed;\n"
+    1)
+  # A window's close button: named by the parallel DOM after its window
+  _swarmlab_hook_edit(
+    "    bool pressed = ButtonBehavior(bb_interact, id, &hovered, &held);\n"
+    "    bool pressed = ButtonBehavior(bb_interact, id, &hovered, &held);\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, \"#CLOSE\", g.LastItemData.StatusFlags);\n"
+    1)
+  # BeginCombo: 5 = combo, showing preview_value
+  _swarmlab_hook_edit(
+    "    if (!popup_open)\n        return false;\n\n    g.NextWindowData.Flags = backup_next_window_data_flags;\n"
+    "    if (g.TestEngineHookItems) ${hook}(&g, id, 5, preview_value ? preview_value : \"\");\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags | ImGuiItemStatusFlags_Openable | (popup_open ? ImGuiItemStatusFlags_Opened : 0));\n    if (!popup_open)\n        return false;\n\n    g.NextWindowData.Flags = backup_next_window_data_flags;\n"
+    1)
+  # InputTextEx: 1 = text, 2 = a number (decimal or scientific characters); never a password
+  _swarmlab_hook_edit(
+    "    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    if ((flags & ImGuiInputTextFlags_EnterReturnsTrue) != 0)\n"
+    "    if (g.TestEngineHookItems) ${hook}(&g, id, (flags & (ImGuiInputTextFlags_CharsDecimal | ImGuiInputTextFlags_CharsScientific)) ? 2 : 1, (flags & ImGuiInputTextFlags_Password) ? \"\" : buf);\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    if ((flags & ImGuiInputTextFlags_EnterReturnsTrue) != 0)\n"
+    1)
+  # DragScalar and SliderScalar: 3 = slider, showing value_buf
+  _swarmlab_hook_edit(
+    "    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    return value_changed;\n"
+    "    if (g.TestEngineHookItems) ${hook}(&g, id, 3, value_buf);\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    return value_changed;\n"
+    2)
+  # Selectable: 6 = a list entry, selected or not
+  _swarmlab_hook_edit(
+    "    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    return pressed; //-V1020\n"
+    "    if (g.TestEngineHookItems) ${hook}(&g, id, 6, selected ? \"1\" : \"0\");\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    return pressed; //-V1020\n"
+    1)
+
+  file(WRITE "${out}.tmp" "${src}")
+  file(COPY_FILE "${out}.tmp" "${out}" ONLY_IF_DIFFERENT)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${imgui_dir}/imgui_widgets.cpp")
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,102 @@
+// The parallel DOM's model: every item Dear ImGui drew in the last frame, in reading order,
+// with its role, name, state and rectangle (mirrored_item.h), and what the page asked of them
+// (activate, focus, type). Fed by ImGui's item hooks (imgui_item_hooks.cpp), read and asked
+// by the page (web/js_parallel_dom.cpp, web/parallel_dom.js). One mechanism for every item:
+// no panel registers its widgets; panels only add the text a screen reader should read
+// (mirror_text) and tooltips (item_tooltip.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "ui/parallel_dom/mirrored_item.h"
+
+struct ImGuiContext;
+
+namespace swarmlab {
+
+class ParallelDom {
+ public:
+  /// Whether ImGui calls the hooks (the ImGui the page builds; Debian's packaged libimgui
+  /// for the desktop has them compiled out, and the desktop needs no DOM).
+  static bool hooks_compiled();
+
+  // Around one frame (app/ui/main_loop.cpp): the requests are applied before NewFrame, the
+  // items collected while the frame is drawn and published after it.
+  void apply_requests();
+  void begin_frame();
+  void end_frame();
+
+  // ImGui's hooks, while an item is drawn (imgui_item_hooks.cpp).
+  void item_added(ImGuiContext& g, unsigned id, float x0, float y0, float x1, float y1);
+  void item_value(unsigned id, ValueKind kind, std::string_view value);
+  void item_info(ImGuiContext& g, unsigned id, std::string_view label, bool checkable, bool checked,
+                 bool openable, bool opened);
+  /// The tooltip of the item last drawn (its description, or its name when the label is an icon).
+  void item_tooltip(unsigned id, std::string_view tooltip);
+  /// Text a screen reader reads in place (a lesson's heading, its step, a question, feedback).
+  void text(ItemRole role, std::string_view text);
+
+  /// The last complete frame's items, in reading order.
+  const std::vector<MirroredItem>& items() const { return published_; }
+  /// The text field ImGui is editing (0 when none), and its text.
+  unsigned editing_id() const { return editing_id_; }
+  const std::string& editing_text() const { return editing_text_; }
+  /// The item ImGui's keyboard navigation is on (0 when none or hidden).
+  unsigned nav_id() const { return nav_id_; }
+
+  // What the page asks, applied before the next frame.
+  void request_activate(unsigned id);
+  void request_focus(unsigned id);
+  /// Types `text` into the field `id` (replacing what it holds) and commits it: with Enter
+  /// (as a person pressing Enter: a lesson's answer is checked) or by leaving the field.
+  void request_text(unsigned id, std::string text, bool enter);
+
+ private:
+  struct Known {  // what is kept of an item between frames (a scrolled-out item reports no label)
+    ItemFacts facts;
+    std::string label, value, tooltip;
+    bool disabled = false;
+    unsigned window = 0;
+    std::uint64_t seen_frame = 0;
+  };
+  struct Drawn {  // one item or text of the frame being drawn
+    unsigned id = 0;  // 0: text
+    ItemRole text_role = ItemRole::paragraph;
+    std::string text;
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // its rectangle
+    float cx0 = 0, cy0 = 0, cx1 = 0, cy1 = 0;  // its window's clip rectangle
+    unsigned window = 0, root = 0;
+    int sequence = 0;
+  };
+  struct Typing {
+    unsigned id = 0;
+    std::string text;
+    bool enter = false;
+    int phase = 0;  // 0 none, 1 activated, 2 typed, 3 Enter down
+    int waited = 0;
+  };
+
+  MirroredItem mirror(const Drawn& d) const;
+
+  std::uint64_t frame_ = 0;
+  int sequence_ = 0;
+  std::vector<Drawn> drawn_;
+  std::unordered_map<unsigned, Known> known_;
+  std::vector<MirroredItem> published_;
+  unsigned editing_id_ = 0, nav_id_ = 0;
+  std::string editing_text_;
+  unsigned activate_ = 0, focus_ = 0;
+  Typing typing_;
+};
+
+/// The one the hooks feed (ImGui's context is one per program too).
+ParallelDom& parallel_dom();
+
+/// Text a screen reader reads where it stands in the current window (see ParallelDom::text).
+void mirror_text(ItemRole role, std::string_view text);
+
+}  // namespace swarmlab

@@ -1,0 +1,218 @@
+// The parallel DOM (as PhET's sims have): every item the ImGui front end drew in the last
+// frame is mirrored by a real, visually hidden HTML element over the canvas where the item is
+// drawn, with its role, accessible name and state (web/js_parallel_dom.cpp). A screen reader
+// reads them, Tab and Shift+Tab walk them in reading order, and activating one (click, Enter,
+// Space) presses the item. A mirrored field is a real <input>: focused, it shows over the
+// field, the phone's keyboard opens for it (inputmode="decimal" for numbers), and what is
+// typed goes into the item on Enter or when it is left. Pointers still act on the canvas:
+// the elements take no pointer events. Linked with --post-js.
+(function () {
+  'use strict';
+  if (typeof document === 'undefined') return;
+
+  var root = null;            // <div id="parallel-dom">
+  var regions = new Map();    // window title -> <section>
+  var elements = new Map();   // key -> element
+  var lastText = '';
+  var editingShown = 0;       // the field being typed into on the canvas, shown as an <input>
+
+  function call(name, types, args) { Module.ccall(name, null, types, args); }
+  function activate(id) { call('swarmlab_dom_activate', ['number'], [id]); }
+  function focusItem(id) { call('swarmlab_dom_focus', ['number'], [id]); }
+  function type(id, text, enter) { call('swarmlab_dom_type', ['number', 'string', 'number'], [id, text, enter ? 1 : 0]); }
+
+  function makeRoot() {
+    root = document.createElement('div');
+    root.id = 'parallel-dom';
+    document.body.appendChild(root);
+    // Tab belongs to the page (it walks the mirrored items), not to the canvas's app.
+    document.addEventListener('keydown', function (e) { if (e.key === 'Tab') e.stopPropagation(); });
+  }
+
+  function regionFor(title) {
+    var section = regions.get(title);
+    if (!section) {
+      section = document.createElement('section');
+      section.className = 'pdom-region';
+      if (title) section.setAttribute('aria-label', title);
+      regions.set(title, section);
+      root.appendChild(section);
+    }
+    return section;
+  }
+
+  function isField(role) { return role === 'textbox' || role === 'slider'; }
+  // The element an item needs: an <input>, a heading, a paragraph or a <button>.
+  function kindOf(item) {
+    return isField(item.role) ? 'input' : item.role === 'heading' || item.role === 'paragraph' ? item.role : 'button';
+  }
+
+  function commit(el, enter) {
+    if (!el.swarmlabDirty) return;
+    el.swarmlabDirty = false;
+    type(el.swarmlabId, el.value, enter);
+  }
+
+  function make(item) {
+    var el;
+    if (isField(item.role)) {
+      el = document.createElement('input');
+      el.type = 'text';
+      el.autocomplete = 'off';
+      el.spellcheck = false;
+      if (item.role === 'slider') el.setAttribute('role', 'slider');
+      el.setAttribute('enterkeyhint', 'done');
+      el.addEventListener('input', function () { el.swarmlabDirty = true; });
+      el.addEventListener('keydown', function (e) {
+        e.stopPropagation(); // typed characters are not the app's shortcuts
+        if (e.key === 'Enter') { e.preventDefault(); el.swarmlabDirty = true; commit(el, true); }
+        if (e.key === 'Escape') { el.value = el.swarmlabValue || ''; el.swarmlabDirty = false; el.blur(); }
+      });
+      el.addEventListener('keypress', function (e) { e.stopPropagation(); });
+      el.addEventListener('keyup', function (e) { e.stopPropagation(); });
+      el.addEventListener('focus', function () {
+        el.classList.add('pdom-editing');
+        el.value = el.swarmlabValue || '';
+        el.swarmlabDirty = false;
+        el.select();
+        focusItem(el.swarmlabId);
+      });
+      el.addEventListener('blur', function () {
+        el.classList.remove('pdom-editing');
+        commit(el, false);
+        if (editingShown === el.swarmlabId) editingShown = 0;
+      });
+    } else if (item.role === 'heading' || item.role === 'paragraph') {
+      el = document.createElement(item.role === 'heading' ? 'h2' : 'p');
+    } else {
+      el = document.createElement('button');
+      el.type = 'button';
+      el.addEventListener('click', function () { activate(el.swarmlabId); });
+      el.addEventListener('focus', function () { focusItem(el.swarmlabId); });
+      // Enter (on its press) and Space (on its release) press the item, as they press a
+      // button; they are not the app's shortcuts (Space would also play or pause), so they
+      // stop here, and so do the arrows.
+      el.addEventListener('keydown', function (e) {
+        if (e.key === 'Enter') { e.preventDefault(); activate(el.swarmlabId); }
+        if (e.key === ' ') e.preventDefault();
+        if (e.key === 'Enter' || e.key === ' ' || e.key.indexOf('Arrow') === 0) e.stopPropagation();
+      });
+      el.addEventListener('keypress', function (e) {
+        if (e.key === 'Enter' || e.key === ' ') e.stopPropagation();
+      });
+      el.addEventListener('keyup', function (e) {
+        if (e.key === ' ') { e.preventDefault(); activate(el.swarmlabId); }
+        if (e.key === 'Enter' || e.key === ' ') e.stopPropagation();
+      });
+    }
+    el.className = 'pdom-item';
+    el.swarmlabKind = kindOf(item);
+    return el;
+  }
+
+  function setAttr(el, name, value) {
+    if (value === null || value === undefined || value === false) {
+      if (el.hasAttribute(name)) el.removeAttribute(name);
+    } else {
+      var text = value === true ? 'true' : String(value);
+      if (el.getAttribute(name) !== text) el.setAttribute(name, text);
+    }
+  }
+
+  function update(el, item) {
+    el.swarmlabId = item.id;
+    var text = item.role === 'heading' || item.role === 'paragraph';
+    if (text) {
+      if (el.textContent !== item.name) el.textContent = item.name;
+    } else if (isField(item.role)) {
+      setAttr(el, 'aria-label', item.name);
+      setAttr(el, 'inputmode', item.numeric ? 'decimal' : null);
+      el.swarmlabValue = item.value || '';
+      if (document.activeElement !== el && el.value !== el.swarmlabValue) el.value = el.swarmlabValue;
+      if (item.role === 'slider') setAttr(el, 'aria-valuetext', item.value || '');
+    } else {
+      if (el.textContent !== item.name) el.textContent = item.name;
+      setAttr(el, 'role', item.role === 'button' ? null : item.role);
+      var checkable = item.role === 'checkbox' || item.role === 'radio' || item.role === 'menuitemcheckbox';
+      setAttr(el, 'aria-checked', checkable ? (item.checked ? 'true' : 'false') : null);
+      setAttr(el, 'aria-selected', item.role === 'tab' || item.role === 'option' ? (item.checked ? 'true' : 'false') : null);
+      setAttr(el, 'aria-haspopup', item.popup ? (item.role === 'combobox' ? 'listbox' : 'menu') : null);
+      setAttr(el, 'aria-expanded', item.openable ? (item.expanded ? 'true' : 'false') : null);
+      setAttr(el, 'aria-valuetext', item.role === 'combobox' ? item.value || '' : null);
+    }
+    setAttr(el, 'aria-description', item.description || null);
+    setAttr(el, 'aria-disabled', item.disabled ? 'true' : null);
+    var s = el.style;
+    var left = item.x + 'px', top = item.y + 'px';
+    var width = Math.max(item.width, 1) + 'px', height = Math.max(item.height, 1) + 'px';
+    if (s.left !== left) s.left = left;
+    if (s.top !== top) s.top = top;
+    if (s.width !== width) s.width = width;
+    if (s.height !== height) s.height = height;
+  }
+
+  function keyOf(item, seen) {
+    if (item.id) return 'i' + item.id;
+    var key = 't' + item.region + '\u0001' + item.role + '\u0001' + item.name;
+    var n = (seen.get(key) || 0) + 1;
+    seen.set(key, n);
+    return key + '\u0001' + n;
+  }
+
+  // Once a frame: follow what the app drew.
+  function follow() {
+    if (!Module.swarmlabMainStarted) return;
+    var text = Module.ccall('swarmlab_dom_items', 'string', [], []);
+    if (text === lastText) return;
+    lastText = text;
+    var frame = JSON.parse(text);
+    if (!root) makeRoot();
+    var seenText = new Map(), alive = new Set(), previous = new Map(); // section -> last placed
+    frame.items.forEach(function (item) {
+      var key = keyOf(item, seenText);
+      var el = elements.get(key);
+      if (el && el.swarmlabKind !== kindOf(item)) { el.remove(); el = null; }  // its role changed
+      if (!el) { el = make(item); elements.set(key, el); }
+      alive.add(key);
+      update(el, item);
+      var section = regionFor(item.region);
+      var after = previous.get(section) || null;
+      var wanted = after ? after.nextSibling : section.firstChild;
+      // Moving the focused element would take its focus: the others move around it.
+      if (el !== wanted && el !== document.activeElement) section.insertBefore(el, wanted);
+      previous.set(section, el);
+    });
+    elements.forEach(function (el, key) {
+      if (alive.has(key)) return;
+      elements.delete(key);
+      if (el === document.activeElement) {
+        var next = el.nextElementSibling || el.previousElementSibling;
+        if (next) next.focus(); else document.getElementById('canvas').focus();
+      }
+      el.remove();
+    });
+    regions.forEach(function (section, title) {
+      if (!section.firstChild) { section.remove(); regions.delete(title); }
+    });
+    // The regions in reading order too (the one holding the focus stays; the others move).
+    var order = [];
+    frame.items.forEach(function (item) {
+      var section = regions.get(item.region);
+      if (section && order.indexOf(section) < 0) order.push(section);
+    });
+    var holder = document.activeElement && document.activeElement.closest && document.activeElement.closest('.pdom-region');
+    order.forEach(function (section, i) {
+      if (root.children[i] !== section && section !== holder) root.insertBefore(section, root.children[i] || null);
+    });
+    // A field tapped on the canvas: its <input> takes the focus, so the phone shows its keyboard.
+    if (frame.touch && frame.editing && editingShown !== frame.editing) {
+      var field = elements.get('i' + frame.editing);
+      if (field && field.tagName === 'INPUT' && document.activeElement !== field) {
+        editingShown = frame.editing;
+        field.swarmlabValue = frame.text;
+        field.focus();
+      }
+    }
+  }
+  Module.swarmlabEachFrame = (Module.swarmlabEachFrame || []).concat([follow]);
+})();
