@@ -7,7 +7,7 @@ namespace {
 
 std::string number(double v) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
+  std::snprintf(text, sizeof text, "%.4g", v);  // as the read-outs show it
   return text;
 }
 
@@ -43,10 +43,12 @@ std::string page_title(const Situation& s) {
 
 std::optional<std::string> Announcer::next(const Situation& now, double wall_seconds) {
   const bool event = !last_ || !same_events(now, *last_);
+  const bool lesson_said = !now.lesson.empty() && (!last_ || now.lesson != last_->lesson);
   const bool time_due = now.playing && wall_seconds - said_at_ >= kTimeInterval;
   last_ = now;
-  if (!event && !time_due) return std::nullopt;
+  if (!event && !lesson_said && !time_due) return std::nullopt;
   std::string text = describe(now);
+  if (lesson_said) text = event ? now.lesson + " " + text : now.lesson;
   if (text == said_) return std::nullopt;
   said_ = text;
   said_at_ = wall_seconds;

@@ -19,6 +19,9 @@ struct Situation {
   std::optional<double> P, T;           ///< wall pressure and temperature (only with a container)
   std::optional<std::size_t> selected;  ///< particle index from 0
   std::string error;                    ///< the last error shown, "" when none
+  /// What a lesson says now: the welcome, a step with its question, or the feedback on an
+  /// answer (app/ui/classroom/classroom_outputs.cpp); "" outside a lesson.
+  std::string lesson;
 };
 
 /// "Four masses (paper Fig. 1). Playing, t = 12.5. P = 0.0312, T = 1.05. Particle 3 selected."
@@ -28,8 +31,9 @@ std::string describe(const Situation& s);
 std::string page_title(const Situation& s);
 
 /// Decides when to speak: at once when the preset, playing or paused, the selection or the
-/// error changes; while playing, at most every kTimeInterval seconds of wall time for the time
-/// and P and T alone; never twice the same text.
+/// error changes; a lesson's new words (a step, feedback) at once, before the rest; while
+/// playing, at most every kTimeInterval seconds of wall time for the time and P and T alone;
+/// never twice the same text.
 class Announcer {
  public:
   static constexpr double kTimeInterval = 5;  ///< seconds of wall time

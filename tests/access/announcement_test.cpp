@@ -30,7 +30,7 @@ TEST_CASE("describe: the preset, playing or paused, the time, P and T, the selec
   CHECK(describe(s) == "Four masses (paper Fig. 1). Paused, t = 12.5. Particle 3 selected.");
   s.P = 0.03125;
   s.T = 1.05;
-  CHECK(contains(describe(s), "P = 0.0312, T = 1.05."));
+  CHECK(contains(describe(s), "P = 0.03125, T = 1.05."));  // four digits, as the read-outs
   s.finished = true;
   CHECK(contains(describe(s), "Finished, t = 12.5."));
   s.error = "dt: must be positive";
@@ -82,4 +82,22 @@ TEST_CASE("Announcer: while playing, the time is said again once per interval") 
     if (a.next(s, frame / 60.0)) ++said;
   }
   CHECK(said == int(20 / Announcer::kTimeInterval));
+}
+
+TEST_CASE("Announcer: a lesson's new words are said at once, before the rest") {
+  Announcer a;
+  Situation s = four_masses();
+  REQUIRE(a.next(s, 0.0));
+  s.lesson = "Lesson step 2 of 7. Press Play. Question: How long is one turn?";
+  const auto step = a.next(s, 0.1);
+  REQUIRE(step);
+  CHECK(*step == s.lesson);  // only the lesson changed: only it is said
+  CHECK_FALSE(a.next(s, 0.2));
+  s.lesson = "Right: the period is 2 pi / sqrt(J M).";
+  s.playing = false;  // a new step may change the scene too: said after the lesson's words
+  const auto feedback = a.next(s, 0.3);
+  REQUIRE(feedback);
+  CHECK(feedback->rfind(s.lesson + " Four masses (paper Fig. 1). Paused", 0) == 0);
+  s.lesson.clear();  // leaving a lesson says nothing by itself
+  CHECK_FALSE(a.next(s, 0.4));
 }

@@ -49,11 +49,12 @@ Situation situation_of(AppState& state) {
   s.playing = state.playing;
   s.finished = state.run->finished();
   s.t = state.run->time();
-  const auto& samples = state.run->primary().samples();
-  if (state.preset.container_radius && samples.size() > 1) {
-    // The core's P and T over the last sampling interval.
-    s.P = samples.back().P;
-    s.T = samples.back().T;
+  const swarm::WallEstimate& wall = state.instruments.wall;
+  if (state.preset.container_radius && wall.intervals > 0) {
+    // The read-outs' P and T (over the plots' averaging window), not the last sampling
+    // interval's, which at the end of a run may hold no wall hit at all.
+    s.P = wall.mean.P;
+    if (wall.mean.hits > 0) s.T = wall.mean.T;
   }
   s.selected = state.selected;
   if (state.status_is_error) s.error = state.status;
