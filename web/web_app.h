@@ -21,8 +21,6 @@ std::string open_preset_json(AppState& state, const std::string& json, const std
 
 /// The student's lesson progress in the page's localStorage (web_progress_store.cpp).
 std::unique_ptr<ProgressStore> make_web_progress_store();
-/// An automated browser that did not ask for the welcome (?welcome) is not shown it.
-bool web_welcome_unwanted();
 
 /// Starts a browser download of the running preset (the same JSON a desktop Save writes) and
 /// says so in the scenario panel. Returns the file name.

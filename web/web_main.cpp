@@ -38,7 +38,6 @@ int main() {
   // Lessons embedded at /lessons (assets/lessons); progress and the welcome in localStorage.
   frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
                                      swarmlab::shipped_preset_lookup("/presets"));
-  if (swarmlab::web_welcome_unwanted()) frontend.app->state().lessons.show_welcome = false;
   // A share link in the address replaces the default preset before the first frame.
   EM_ASM({
     if (Module.swarmlabStarted) Module.swarmlabStarted();

@@ -22,11 +22,6 @@ EM_JS(char*, progress_load, (), {
   stringToUTF8(text, pointer, size);
   return pointer;
 });
-// An automated browser (navigator.webdriver: a test, a screenshot job) gets the welcome only
-// when the address asks for it with ?welcome, so that scripted pages are not covered by it.
-EM_JS(int, welcome_unwanted, (), {
-  return (navigator.webdriver && location.search.indexOf("welcome") < 0) ? 1 : 0;
-});
 EM_JS(void, progress_save, (const char* text), {
   try { window.localStorage.setItem("swarmlab.progress", UTF8ToString(text)); } catch (e) {}
 });
@@ -44,8 +39,6 @@ class WebProgressStore final : public ProgressStore {
 };
 
 }  // namespace
-
-bool web_welcome_unwanted() { return welcome_unwanted() != 0; }
 
 std::unique_ptr<ProgressStore> make_web_progress_store() {
   return std::make_unique<WebProgressStore>();

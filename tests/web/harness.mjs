@@ -77,9 +77,19 @@ export function watch(page, label) {
   });
 }
 
-// Opens url in a new page and waits for `frames` frames (or the page's own error).
+// Opens url in a new page and waits for `frames` frames (or the page's own error). The app
+// treats a test like a person: a first visit shows the welcome. A page whose address does not
+// ask for a first visit (?welcome) starts as a returning student's, whose progress says the
+// welcome was seen (unless the browser already holds progress).
 export async function openApp(url, label, frames = 10) {
   const page = await context.newPage();
+  if (!/[?&]welcome/.test(url))
+    await page.addInitScript(() => {
+      try {
+        if (!localStorage.getItem('swarmlab.progress'))
+          localStorage.setItem('swarmlab.progress', JSON.stringify({ version: 1, welcomed: true }));
+      } catch { /* no storage: the welcome shows, as for a person */ }
+    });
   watch(page, label);
   await page.goto(url, { waitUntil: 'load' });
   let started = true;
