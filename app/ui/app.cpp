@@ -148,7 +148,6 @@ void App::layout_windows() {
   const float font = ImGui::GetFontSize();
   float top = viewport->Pos.y;
   s.layout.panels.clear();
-  set_text_field_state(&s);
 
   top += draw_menu_bar(s);
 
@@ -180,8 +179,6 @@ void App::layout_windows() {
   draw_panel_windows(s, l, touch_frame_, &lesson_tab_step_);
   draw_view_strips(s, l);
   if (roomy) ImGui::PopStyleVar(3);
-  set_text_field_state(nullptr);
-  s.layout.typed_text.reset();  // typed for a field that has closed since
   draw_help_window(s);
   draw_welcome_window(s);
 }

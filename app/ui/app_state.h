@@ -70,14 +70,6 @@ struct Layout {
     float scroll = 0;  ///< pixels scrolled down
   };
   std::vector<Panel> panels;  ///< every window drawn this frame, for swarmlab.state()
-  /// The number field being typed into this frame (input_double), for the browser's
-  /// on-screen keyboard: where it is and its text; typed_text is what came back from it.
-  struct TextField {
-    bool active = false;
-    ScreenRect rect;
-    std::string text;
-  } text_field;
-  std::optional<std::string> typed_text;
 
   /// One step larger (+1) or smaller (-1), within the limits (menu and Ctrl +/-).
   void step_ui_scale(int direction) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "ui/classroom/theme_style.h"
+#include "ui/parallel_dom/item_tooltip.h"
 
 namespace swarmlab {
 
@@ -55,8 +56,7 @@ void draw_sound_toggle(AppState& state) {
   Presentation& p = state.presentation;
   bool on = p.sound;
   if (ImGui::Checkbox("Sound", &on)) set_sound(state, on);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("M: a click at each wall hit, thinned to a rate you can hear");
+  item_tooltip("M: a click at each wall hit, thinned to a rate you can hear");
   if (!p.sound_status.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", p.sound_status.c_str());

@@ -43,10 +43,7 @@ void help_marker(const char* text);
 /// typed and dragged values are applied then, not at every keystroke.
 bool committed();
 /// A field for a double, any value typed; says whether an edit was committed (see committed).
-/// (touch_text_field.cpp) The field being typed into is reported to, and takes the typed text
-/// from, the AppState given to set_text_field_state (the browser's on-screen keyboard).
+/// (number_field.cpp)
 bool input_double(const char* label, double* value, const char* format = "%.6g");
-/// Set once per frame before the panels (null after them).
-void set_text_field_state(AppState* state);
 
 }  // namespace swarmlab

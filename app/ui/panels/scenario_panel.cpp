@@ -10,6 +10,8 @@
 #include "labels/system_labels.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/panels/panels.h"
+#include "ui/parallel_dom/item_tooltip.h"
+#include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/save_dialog.h"
 
 namespace swarmlab {
@@ -20,14 +22,14 @@ void show_refusal(AppState& state, Section section) {
   ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
   ImGui::PopStyleColor();
   if (ImGui::SmallButton("Undo the edit")) state.revert_draft();
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
+  item_tooltip(
         "Show the running values again. Until then the run goes on with the "
         "last valid preset.");
 }
 
 void help_marker(const char* text) {
   ImGui::SameLine();
+  mirror_text(ItemRole::paragraph, text);  // a screen reader reads the help where it stands
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();

@@ -12,6 +12,7 @@
 #include "ui/classroom/presentation.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/panels/panels.h"
+#include "ui/parallel_dom/item_tooltip.h"
 #include "ui/time/time_controls.h"
 #include "ui/time/timeline_strip.h"
 
@@ -54,7 +55,7 @@ void draw_simulation_panel(AppState& state) {
         d.method = m;
         changed = true;
       }
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(m).c_str());
+      item_tooltip("%s", describe(m).c_str());
     }
     ImGui::EndCombo();
   }
@@ -123,22 +124,20 @@ void draw_transport_bar(AppState& state) {
                                    : "\u25b6 Play###play",
                     ImVec2(6.5f * font, 0)))
     play_or_continue(state);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(at_end ? "Space: the run is over; continue it for another run length"
+  item_tooltip(at_end ? "Space: the run is over; continue it for another run length"
                              : "Space");
   same_line_if_fits(button_width("Step"));
   if (ImGui::Button("Step")) state.step_once = true, state.playing = false;
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("S: one step of dt");
+  item_tooltip("S: one step of dt");
   same_line_if_fits(button_width("Reset"));
   if (ImGui::Button("Reset")) state.restart();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("R: back to t = 0");
+  item_tooltip("R: back to t = 0");
   same_line_if_fits(9 * font);
   ImGui::SetNextItemWidth(9 * font);
   const double lo = 1e-3, hi = 1e4;
   ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, "speed %.3g /s",
                       ImGuiSliderFlags_Logarithmic);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
+  item_tooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
   same_line_if_fits(ImGui::GetFrameHeight() + button_width("Sound"));
   draw_sound_toggle(state);
 
@@ -146,21 +145,19 @@ void draw_transport_bar(AppState& state) {
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
   ImGui::TextUnformatted(labels::clock_text(state.preset, k, t).c_str());
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
+  item_tooltip(
         "Simulated time; for an isolated system also in periods of the common oscillation "
         "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "
         "wall changes the motion and neither applies.");
   if (state.run->finished()) {
     same_line_if_fits(ImGui::CalcTextSize("end of run").x);
     ImGui::TextColored(colour_vec4(current_palette().text_warning), "end of run");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Continue (Space) runs on for as long again.");
+    item_tooltip("Continue (Space) runs on for as long again.");
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
     ImGui::SameLine();
     ImGui::TextColored(colour_vec4(current_palette().text_warning), "(%.0f%% of the speed)",
                        100 * state.stats.speed_ratio);
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("The steps of this speed do not fit in a frame on this machine.");
+    item_tooltip("The steps of this speed do not fit in a frame on this machine.");
   }
 }
 

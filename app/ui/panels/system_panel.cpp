@@ -6,18 +6,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/panels/panels.h"
+#include "ui/parallel_dom/item_tooltip.h"
 
 namespace swarmlab {
 namespace {
 
 /// A vector's three components side by side, each typed like any other number (so a touch
 /// screen brings up its on-screen keyboard for them too).
-bool input_vec3(const char* id, swarm::Vec3& v) {
+bool input_vec3(const char* id, swarm::Vec3& v, const char* quantity, std::size_t particle) {
   ImGui::PushID(id);
   const float spacing = ImGui::GetStyle().ItemInnerSpacing.x;
   const float width = (ImGui::GetContentRegionAvail().x - 2 * spacing) / 3;
@@ -27,6 +29,7 @@ bool input_vec3(const char* id, swarm::Vec3& v) {
     ImGui::SetNextItemWidth(width);
     ImGui::PushID(k);
     changed |= input_double("##c", &v[k], "%.3g");
+    name_item(std::string(quantity) + " " + "xyz"[k] + " of particle " + std::to_string(particle));
     ImGui::PopID();
   }
   ImGui::PopID();
@@ -97,16 +100,17 @@ void draw_table(AppState& state, ParticleList& list) {
         ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().selected_row.packed());
       ImGui::TableNextColumn();
       if (ImGui::SmallButton("x")) remove = i;
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove particle %zu", i + 1);
+      item_tooltip("Remove particle %zu", i + 1);
       ImGui::SameLine();
       ImGui::Text("%zu", i + 1);
       ImGui::TableNextColumn();
       ImGui::SetNextItemWidth(-1);
       changed |= input_double("##m", &list[i].m, "%.4g");
+      name_item("m of particle " + std::to_string(i + 1));
       ImGui::TableNextColumn();
-      changed |= input_vec3("##r", list[i].r);
+      changed |= input_vec3("##r", list[i].r, "r", i + 1);
       ImGui::TableNextColumn();
-      changed |= input_vec3("##v", list[i].v);
+      changed |= input_vec3("##v", list[i].v, "v", i + 1);
       ImGui::PopID();
     }
     ImGui::EndTable();

@@ -87,6 +87,10 @@ void ParallelDom::item_tooltip(unsigned id, std::string_view tooltip) {
   if (id) known_[id].tooltip.assign(tooltip);
 }
 
+void ParallelDom::item_name(unsigned id, std::string_view name) {
+  if (id) known_[id].name.assign(name);
+}
+
 void ParallelDom::text(ItemRole role, std::string_view text) {
   const ImGuiContext* g = GImGui;
   if (!g || !g->CurrentWindow || text.empty()) return;
@@ -132,6 +136,9 @@ MirroredItem ParallelDom::mirror(const Drawn& d) const {
   m.disabled = k.disabled;
   if (f.is_close_button) {
     m.name = "Close " + m.region;
+  } else if (!k.name.empty()) {
+    m.name = k.name;
+    m.description = k.tooltip;
   } else {
     m.name = accessible_name(k.label, k.tooltip);
     if (m.name == accessible_name(k.label)) m.description = k.tooltip;  // else the tooltip is the name
@@ -183,7 +190,7 @@ void ParallelDom::end_frame() {
     if (d.id != 0) {
       const auto it = known_.find(d.id);
       if (it == known_.end() || (it->second.label.empty() && it->second.tooltip.empty() &&
-                                 !it->second.facts.is_close_button))
+                                 it->second.name.empty() && !it->second.facts.is_close_button))
         continue;  // an item with no name (a child window, a scrollbar): nothing to say
     }
     auto group = std::find_if(groups.begin(), groups.end(), [&](const Group& gr) { return gr.root == d.root; });

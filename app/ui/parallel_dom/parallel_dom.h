@@ -37,6 +37,8 @@ class ParallelDom {
                  bool openable, bool opened);
   /// The tooltip of the item last drawn (its description, or its name when the label is an icon).
   void item_tooltip(unsigned id, std::string_view tooltip);
+  /// The name of an item that shows no label (item_tooltip.h, name_item).
+  void item_name(unsigned id, std::string_view name);
   /// Text a screen reader reads in place (a lesson's heading, its step, a question, feedback).
   void text(ItemRole role, std::string_view text);
 
@@ -58,7 +60,7 @@ class ParallelDom {
  private:
   struct Known {  // what is kept of an item between frames (a scrolled-out item reports no label)
     ItemFacts facts;
-    std::string label, value, tooltip;
+    std::string label, value, tooltip, name;
     bool disabled = false;
     unsigned window = 0;
     std::uint64_t seen_frame = 0;
