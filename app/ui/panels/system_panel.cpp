@@ -10,6 +10,7 @@
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {
@@ -96,7 +97,7 @@ void draw_table(AppState& state, ParticleList& list) {
       if (state.selected == i)
         ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().selected_row.packed());
       ImGui::TableNextColumn();
-      if (ImGui::SmallButton("x")) remove = i;
+      if (ImGui::Button("x", ImVec2(target_width("x"), 0))) remove = i;
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Remove particle %zu", i + 1);
       ImGui::SameLine();
       ImGui::Text("%zu", i + 1);
