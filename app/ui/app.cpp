@@ -48,18 +48,15 @@ void record_floating_windows(AppState& s) {
   }
 }
 
-/// A finger dragging on a window that floats over the view (the welcome, the help) scrolls it;
-/// the panels scroll themselves (panel_windows.cpp).
+/// A finger dragging on a window that floats over the view (the welcome, the help, a menu)
+/// scrolls it; the panels scroll themselves (panel_windows.cpp). ImGui's hovered window is the
+/// frontmost under the finger (the main loop put the mouse there).
 void scroll_floating_window(const TouchFrame& t) {
   if (!t.pointer || t.scroll_y == 0) return;
-  const ImGuiContext& g = *ImGui::GetCurrentContext();
-  for (int i = g.Windows.Size - 1; i >= 0; --i) {
-    ImGuiWindow* w = g.Windows[i];
-    if (!w->Active || w->Hidden || !w->OuterRectClipped.Contains(ImVec2(t.x, t.y))) continue;
-    if (!(w->RootWindow->Flags & ImGuiWindowFlags_NoMove) && w->ScrollMax.y > 0)
-      ImGui::SetScrollY(w, std::clamp(w->Scroll.y + t.scroll_y, 0.0f, w->ScrollMax.y));
-    return;  // the frontmost window under the finger takes the scroll, or nothing does
-  }
+  ImGuiWindow* w = ImGui::GetCurrentContext()->HoveredWindow;
+  if (!w || ((w->RootWindow->Flags & ImGuiWindowFlags_NoMove) && !(w->Flags & ImGuiWindowFlags_Popup)))
+    return;
+  ImGui::SetScrollY(w, std::clamp(w->Scroll.y + t.scroll_y, 0.0f, w->ScrollMax.y));
 }
 
 constexpr const char* kFirstPreset = "fig1-four-masses.json";
