@@ -59,8 +59,9 @@ nlohmann::json app_state_json(swarmlab::App& app) {
     nlohmann::json window = rect_json(w.rect.x, w.rect.y, w.rect.width, w.rect.height);
     window["name"] = w.name;
     window["scroll"] = w.scroll;
-    window["close"] = w.close.shown() ? rect_json(w.close.x, w.close.y, w.close.width, w.close.height)
-                                      : nlohmann::json(nullptr);
+    window["close"] = w.close.shown()
+                          ? rect_json(w.close.x, w.close.y, w.close.width, w.close.height)
+                          : nlohmann::json(nullptr);
     j["windows"].push_back(window);
   }
   // Time (web/js_time.cpp): the furthest time computed, and a fast-forward under way.

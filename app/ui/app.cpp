@@ -54,7 +54,8 @@ void record_floating_windows(AppState& s) {
 void scroll_floating_window(const TouchFrame& t) {
   if (!t.pointer || t.scroll_y == 0) return;
   ImGuiWindow* w = ImGui::GetCurrentContext()->HoveredWindow;
-  if (!w || ((w->RootWindow->Flags & ImGuiWindowFlags_NoMove) && !(w->Flags & ImGuiWindowFlags_Popup)))
+  if (!w ||
+      ((w->RootWindow->Flags & ImGuiWindowFlags_NoMove) && !(w->Flags & ImGuiWindowFlags_Popup)))
     return;
   ImGui::SetScrollY(w, std::clamp(w->Scroll.y + t.scroll_y, 0.0f, w->ScrollMax.y));
 }

@@ -58,7 +58,7 @@ class App {
   LessonTabStep lesson_tab_step_{nullptr, 0};
   float framed_aspect_ = 1;  ///< the view's width / height when the camera distance was set
   bool dragging_ = false;
-  PointerPress press_;  ///< the left button's press on the view, while dragging_
+  PointerPress press_;    ///< the left button's press on the view, while dragging_
   bool panning_ = false;  ///< the right button went down on the view and is held
 };
 

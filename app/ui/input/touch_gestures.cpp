@@ -20,8 +20,12 @@ void TouchGestures::down(long id, float x, float y, TouchSurface surface, double
   if (count_ == 1) {
     start_x_ = x, start_y_ = y, start_ms_ = ms;
     switch (surface) {
-      case TouchSurface::view: mode_ = Mode::view_pending; break;
-      case TouchSurface::panel: mode_ = Mode::panel_pending; break;
+      case TouchSurface::view:
+        mode_ = Mode::view_pending;
+        break;
+      case TouchSurface::panel:
+        mode_ = Mode::panel_pending;
+        break;
       case TouchSurface::control:
         mode_ = Mode::press;
         mouse_.push_back({x, y, true});
@@ -89,8 +93,8 @@ void TouchGestures::up(long id, float x, float y, double /*ms*/) {
     pending_.tap = true, pending_.tap_x = x, pending_.tap_y = y;
   } else if (mode_ == Mode::panel_pending || mode_ == Mode::press) {
     // Held (or pressed) where the finger left, then released: a tap clicks, a drag ends there.
-    const bool held_there = !mouse_.empty() && mouse_.back().down && mouse_.back().x == x &&
-                            mouse_.back().y == y;
+    const bool held_there =
+        !mouse_.empty() && mouse_.back().down && mouse_.back().x == x && mouse_.back().y == y;
     if (!held_there) mouse_.push_back({x, y, true});
     mouse_.push_back({x, y, false});
   }

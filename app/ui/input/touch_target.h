@@ -16,8 +16,9 @@ inline constexpr float kTouchTargetPx = 44;
 
 /// The width of a button labelled `label` (text after "##" hidden), at least its height.
 inline float target_width(const char* label) {
-  return std::max(ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x,
-                  ImGui::GetFrameHeight());
+  return std::max(
+      ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x,
+      ImGui::GetFrameHeight());
 }
 
 /// Continues the row when an item `width` wide still fits beside the last one, else starts the

@@ -14,7 +14,8 @@ namespace {
 /// Records where the menu whose title began at x0 lies in the bar: up to the next title.
 void record_menu(AppState& s, const char* name, float x0) {
   const float x1 = ImGui::GetCursorScreenPos().x - ImGui::GetStyle().ItemSpacing.x;
-  s.layout.menus.push_back({name, {x0, ImGui::GetWindowPos().y, x1 - x0, ImGui::GetWindowSize().y}, 0});
+  s.layout.menus.push_back(
+      {name, {x0, ImGui::GetWindowPos().y, x1 - x0, ImGui::GetWindowSize().y}, 0});
 }
 
 }  // namespace

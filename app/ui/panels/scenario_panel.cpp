@@ -20,7 +20,8 @@ void show_refusal(AppState& state, Section section) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
   ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
   ImGui::PopStyleColor();
-  if (ImGui::Button("Undo the edit", ImVec2(target_width("Undo the edit"), 0))) state.revert_draft();
+  if (ImGui::Button("Undo the edit", ImVec2(target_width("Undo the edit"), 0)))
+    state.revert_draft();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "Show the running values again. Until then the run goes on with the "

@@ -1,7 +1,5 @@
 #include "ui/time/timeline_strip.h"
 
-#include "ui/time/time_controls.h"
-
 #include <imgui.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 
 #include "ui/classroom/theme_style.h"
 #include "ui/input/touch_target.h"
+#include "ui/time/time_controls.h"
 #include "ui/time/timeline_scale.h"
 
 namespace swarmlab {
@@ -55,8 +54,8 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
     ImGui::SetTooltip(
         "The present time and the furthest time computed. Drag on the bar to go back to any "
         "moment: the same state to the last bit, recomputed from snapshots.");
-  const float clock_width = std::max(ImGui::CalcTextSize("t = 00.000 / 00.000 reached").x,
-                                     ImGui::GetItemRectSize().x);
+  const float clock_width =
+      std::max(ImGui::CalcTextSize("t = 00.000 / 00.000 reached").x, ImGui::GetItemRectSize().x);
   ImGui::SameLine();
   ImGui::SetCursorScreenPos(ImVec2(clock_at.x + clock_width + ImGui::GetStyle().ItemSpacing.x,
                                    ImGui::GetCursorScreenPos().y));
@@ -120,18 +119,22 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
 void draw_time_buttons(AppState& state) {
   if (ImGui::Button("\u25c0|", ImVec2(target_width("\u25c0|"), 0))) step_back(state, false);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("B: one step back");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25c0\u25c0", ImVec2(target_width("\u25c0\u25c0"), 0))) step_back(state, true);
+  same_line_if_fits(target_width("\u25c0\u25c0"));
+  if (ImGui::Button("\u25c0\u25c0", ImVec2(target_width("\u25c0\u25c0"), 0)))
+    step_back(state, true);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Left: back by 1/100 of a period");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25b6\u25b6", ImVec2(target_width("\u25b6\u25b6"), 0))) step_forward_coarse(state);
+  same_line_if_fits(target_width("\u25b6\u25b6"));
+  if (ImGui::Button("\u25b6\u25b6", ImVec2(target_width("\u25b6\u25b6"), 0)))
+    step_forward_coarse(state);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Right: on by 1/100 of a period");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25b6| stage", ImVec2(target_width("\u25b6| stage"), 0))) fast_forward_to_stage_end(state);
+  same_line_if_fits(target_width("\u25b6| stage"));
+  if (ImGui::Button("\u25b6| stage", ImVec2(target_width("\u25b6| stage"), 0)))
+    fast_forward_to_stage_end(state);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("N: fast-forward to the end of this stage, as fast as the machine allows");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25b6| end", ImVec2(target_width("\u25b6| end"), 0))) fast_forward_to_run_end(state);
+  same_line_if_fits(target_width("\u25b6| end"));
+  if (ImGui::Button("\u25b6| end", ImVec2(target_width("\u25b6| end"), 0)))
+    fast_forward_to_run_end(state);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("End: fast-forward to the end of the run (Esc cancels)");
 }

@@ -95,7 +95,8 @@ TEST_CASE("touch_gestures: on a panel a drag scrolls without pressing, a tap cli
   CHECK_FALSE(g.active());
 }
 
-TEST_CASE("touch_gestures: a finger held still on a panel, then moved, presses (to drag a slider)") {
+TEST_CASE(
+    "touch_gestures: a finger held still on a panel, then moved, presses (to drag a slider)") {
   TouchGestures g;
   g.down(1, 100, 100, panel, 0);
   g.move(1, 102, 101, 200);  // a wobble inside the slop decides nothing

@@ -31,7 +31,7 @@ TEST_CASE("timeline_scale: a step drawn at x_of is found again under the pointer
 }
 
 TEST_CASE("timeline_scale: a drag scrubs within the time computed, a press goes anywhere") {
-  CHECK(TimelineScale::scrub_target(1500, true, 800) == 1500);   // computes up to there
-  CHECK(TimelineScale::scrub_target(1500, false, 800) == 800);   // a drag stops at the edge
-  CHECK(TimelineScale::scrub_target(265, false, 813) == 265);    // back in time: exactly there
+  CHECK(TimelineScale::scrub_target(1500, true, 800) == 1500);  // computes up to there
+  CHECK(TimelineScale::scrub_target(1500, false, 800) == 800);  // a drag stops at the edge
+  CHECK(TimelineScale::scrub_target(265, false, 813) == 265);   // back in time: exactly there
 }
