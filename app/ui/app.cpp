@@ -184,6 +184,7 @@ void App::layout_windows() {
   const float font = ImGui::GetFontSize();
   float top = viewport->Pos.y;
   s.layout.panels.clear();
+  s.layout.drag_at_once = {0, 0, 0, 0};  // until the timeline draws its bar
   set_text_field_state(&s);
 
   // Fingers need larger targets than a mouse: in a touch or compact layout (as last laid

@@ -148,7 +148,7 @@ async function welcomeOnPhone(url, context) {
 // scrubs (no hold), and the run ends at the time under the finger where it lifted.
 async function timelineByTouch(page, context) {
   await api(page, () => window.swarmlab.set({ playing: true, speed: 4 }));
-  let s = await until(page, (st) => st.t_reached >= 3);
+  let s = await until(page, (st) => st.t_reached >= Math.min(3, 0.8 * st.timeline.t_end));
   await api(page, () => window.swarmlab.set({ playing: false }));
   s = await until(page, (st) => !st.playing);
   const bar = await findTarget(page, 'timeline');
