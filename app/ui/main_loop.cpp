@@ -17,24 +17,28 @@ namespace {
 
 constexpr float kMaxUiFrameSeconds = 0.1f;  // s
 
-/// Whether one of last frame's ImGui windows (a panel, a strip, the welcome, a menu, a popup)
-/// lies at x, y: a finger there acts on it, never on the 3D view behind.
-bool window_at(float x, float y) {
-  const ImGuiContext* context = ImGui::GetCurrentContext();
-  for (const ImGuiWindow* w : context->Windows)
+/// The frontmost of last frame's ImGui windows (a panel, a strip, the welcome, a menu, a popup)
+/// at x, y, or none: a finger there acts on it, never on the 3D view behind.
+const ImGuiWindow* window_at(float x, float y) {
+  const ImVector<ImGuiWindow*>& windows = ImGui::GetCurrentContext()->Windows;  // back to front
+  for (int i = windows.Size - 1; i >= 0; --i) {
+    const ImGuiWindow* w = windows[i];
     if (w->Active && !w->Hidden && !(w->Flags & ImGuiWindowFlags_NoMouseInputs) &&
         w->OuterRectClipped.Contains(ImVec2(x, y)))
-      return true;
-  return false;
+      return w;
+  }
+  return nullptr;
 }
 
 /// What a finger landing at x, y acts on. While a menu or popup is open, a tap anywhere goes to
-/// ImGui (outside the popup it closes it, as a click does), never to the view behind.
+/// ImGui (outside the popup it closes it, as a click does), never to the view behind; a window
+/// floating over the timeline's bar takes the finger before the bar does.
 TouchSurface surface_at(const Layout& layout, float x, float y) {
-  if (layout.drag_at_once.contains(x, y)) return TouchSurface::control;
-  if (window_at(x, y) || !layout.view.contains(x, y) || ImGui::IsAnyItemActive() ||
-      ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))
-    return TouchSurface::panel;
+  if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return TouchSurface::panel;
+  const ImGuiWindow* w = window_at(x, y);
+  const bool floating = w && !(w->RootWindow->Flags & ImGuiWindowFlags_NoMove);
+  if (!floating && layout.drag_at_once.contains(x, y)) return TouchSurface::control;
+  if (w || !layout.view.contains(x, y) || ImGui::IsAnyItemActive()) return TouchSurface::panel;
   return TouchSurface::view;
 }
 
