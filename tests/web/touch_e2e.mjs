@@ -194,6 +194,27 @@ async function whiteboardClick(page, context) {
   await api(page, () => window.swarmlab.set({ selected: null }));
 }
 
+// A quick mouse drag along the timeline, moved and let go at once: the run ends at the time
+// under the pointer where the button was let go (finding 12: it ended at 8.13 with the pointer
+// at 2.65).
+async function timelineByMouse(page) {
+  let s = await appState(page);
+  const bar = await findTarget(page, 'timeline');
+  if (!bar) return;
+  const xAt = (t) => bar.x + bar.width * t / bar.t_end;
+  const y = bar.y + bar.height / 2;
+  const tTo = 0.25 * s.t_reached;
+  await page.mouse.move(xAt(0.85 * s.t_reached), y);
+  await page.mouse.down();
+  await page.mouse.move(xAt(tTo), y);
+  await page.mouse.up();
+  const dt = JSON.parse(await api(page, () => window.swarmlab.preset())).dt;
+  const tolerance = bar.t_end / bar.width + dt;
+  s = await until(page, (st) => Math.abs(st.t - tTo) <= tolerance);
+  check('a quick mouse drag on the timeline ends at the time under the pointer', Math.abs(s.t - tTo) <= tolerance,
+        `pointer over t = ${tTo.toFixed(3)} +- ${tolerance.toFixed(3)}, run at ${s.t.toFixed(3)}`);
+}
+
 async function gestures(page, context) {
   await api(page, () => window.swarmlab.set({ playing: false }));
   await frames(page, 3);
@@ -329,6 +350,7 @@ async function main(url) {
   await gestures(page, context);
   await timelineByTouch(page, context);
   await whiteboardClick(page, context);
+  await timelineByMouse(page);
 
   const sizes = [[390, 844, 'portrait'], [844, 390, 'landscape'], [1024, 768, 'landscape'],
                  [1366, 768, 'wide'], [1280, 720, 'wide'], [1920, 1080, 'wide']];
