@@ -218,7 +218,10 @@ void App::layout_windows() {
   draw_timeline_strip(s, l.bottom_strip.x, l.bottom_strip.y, l.bottom_strip.width,
                       l.bottom_strip.height);
   draw_panel_windows(s, l, touch_frame_, &lesson_tab_step_);
+  // Rows of 44 px targets over the view need little space between them: the view keeps room.
+  if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.2f * font));
   draw_view_strips(s, l);
+  if (roomy) ImGui::PopStyleVar();
   set_text_field_state(nullptr);
   s.layout.typed_text.reset();  // typed for a field that has closed since
   // The windows over the view get a square close button a finger can hit.

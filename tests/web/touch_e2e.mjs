@@ -38,11 +38,13 @@ async function fingers(page, cdp, paths, steps = 5) {
   await frames(page, 3);
 }
 
-// Waits until fn(state()) holds in the page (a lasting state: a window closed, a menu open, the
-// run at a time), or gives up after ms; returns the state it saw last.
-async function until(page, fn, ms = 20_000) {
+// Waits until fn(state(), arg) holds in the page (a lasting state: a window closed, a menu
+// open, the run at a time), or gives up after 20 s; returns the state it saw last. fn runs in
+// the page: what it needs from here comes in arg.
+async function until(page, fn, arg = null) {
   try {
-    await page.waitForFunction(`(${fn})(window.swarmlab.state())`, null, { timeout: ms, polling: 'raf' });
+    await page.waitForFunction(`(${fn})(window.swarmlab.state(), ${JSON.stringify(arg)})`, null,
+                               { timeout: 20_000, polling: 'raf' });
   } catch { /* the check after it reports what was seen */ }
   return appState(page);
 }
@@ -165,7 +167,7 @@ async function timelineByTouch(page, context) {
   const dt = JSON.parse(await api(page, () => window.swarmlab.preset())).dt;
   // The bar's pixel is bar.t_end / bar.width wide in time: the finger lands within one.
   const tolerance = bar.t_end / bar.width + dt;
-  s = await until(page, (st) => st.fingers === 0 && !st.fast_forward && Math.abs(st.t - expected) <= tolerance);
+  s = await until(page, (st, a) => st.fingers === 0 && Math.abs(st.t - a.expected) <= a.tolerance, { expected, tolerance });
   check('a finger dragged along the timeline at once scrubs it to the time under the finger',
         Math.abs(s.t - expected) <= tolerance, `expected t = ${expected.toFixed(3)} +- ${tolerance.toFixed(3)}, got ${s.t.toFixed(3)}`);
   check('... and does not turn the camera', sameCamera(s.camera, camera0), `${cameraText(camera0)} -> ${cameraText(s.camera)}`);
@@ -210,7 +212,7 @@ async function timelineByMouse(page) {
   await page.mouse.up();
   const dt = JSON.parse(await api(page, () => window.swarmlab.preset())).dt;
   const tolerance = bar.t_end / bar.width + dt;
-  s = await until(page, (st) => Math.abs(st.t - tTo) <= tolerance);
+  s = await until(page, (st, a) => Math.abs(st.t - a.tTo) <= a.tolerance, { tTo, tolerance });
   check('a quick mouse drag on the timeline ends at the time under the pointer', Math.abs(s.t - tTo) <= tolerance,
         `pointer over t = ${tTo.toFixed(3)} +- ${tolerance.toFixed(3)}, run at ${s.t.toFixed(3)}`);
 }
