@@ -35,7 +35,8 @@ void record_floating_windows(AppState& s) {
   const ImGuiContext& g = *ImGui::GetCurrentContext();
   const ImGuiStyle& style = g.Style;
   for (const ImGuiWindow* w : g.Windows) {
-    if (!w->Active || w->Hidden || (w->Flags & ImGuiWindowFlags_ChildWindow)) continue;
+    if (!w->Active || w->Hidden || w->IsFallbackWindow) continue;
+    if (w->Flags & ImGuiWindowFlags_ChildWindow) continue;
     if ((w->Flags & ImGuiWindowFlags_NoMove) && !(w->Flags & ImGuiWindowFlags_Popup)) continue;
     if (w->Flags & ImGuiWindowFlags_Tooltip) continue;
     Layout::FloatingWindow f{w->Name, {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}, {}, w->Scroll.y};
