@@ -6,6 +6,7 @@
 #include <imgui_internal.h>
 
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -45,7 +46,29 @@ nlohmann::json app_state_json(swarmlab::App& app) {
     panel["scroll"] = p.scroll;
     j["panels"].push_back(panel);
   }
+  // The menus' titles in the bar and the windows floating over the rest, with their close
+  // button (app.cpp records them): where a finger taps them.
+  j["menus"] = nlohmann::json::array();
+  for (const swarmlab::Layout::Panel& m : s.layout.menus) {
+    nlohmann::json menu = rect_json(m.rect.x, m.rect.y, m.rect.width, m.rect.height);
+    menu["name"] = m.name;
+    j["menus"].push_back(menu);
+  }
+  j["windows"] = nlohmann::json::array();
+  for (const swarmlab::Layout::FloatingWindow& w : s.layout.windows) {
+    nlohmann::json window = rect_json(w.rect.x, w.rect.y, w.rect.width, w.rect.height);
+    window["name"] = w.name;
+    window["scroll"] = w.scroll;
+    window["close"] = w.close.shown()
+                          ? rect_json(w.close.x, w.close.y, w.close.width, w.close.height)
+                          : nlohmann::json(nullptr);
+    j["windows"].push_back(window);
+  }
   // Time (web/js_time.cpp): the furthest time computed, and a fast-forward under way.
+  // The timeline's bar: its rectangle and the time at its right end (the left end is t = 0).
+  const swarmlab::ViewRect& bar = s.layout.drag_at_once;
+  j["timeline"] = rect_json(bar.x, bar.y, bar.width, bar.height);
+  j["timeline"]["t_end"] = double(std::max(1L, s.run->timeline().end_step())) * s.preset.dt;
   j["t_reached"] = double(s.run->timeline().reached()) * s.preset.dt;
   j["fast_forward"] = s.travel.active() && s.travel.kind != swarmlab::TimeTravel::Kind::seek
                           ? nlohmann::json{{"progress", s.travel.progress(s.run->step())}}

@@ -142,6 +142,8 @@
     }
     setAttr(el, 'aria-description', item.description || null);
     setAttr(el, 'aria-disabled', item.disabled ? 'true' : null);
+    // Scrolled out of its window: the rectangle is where it would be (Tab scrolls it in).
+    setAttr(el, 'data-clipped', item.clipped ? 'true' : null);
     var s = el.style;
     var left = item.x + 'px', top = item.y + 'px';
     var width = Math.max(item.width, 1) + 'px', height = Math.max(item.height, 1) + 'px';

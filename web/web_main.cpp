@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "finger_times.h"
 #include "lessons/lesson_file.h"
 #include "ui/main_loop.h"
 #include "storage_controls.h"
@@ -31,6 +32,7 @@ int main() {
         error.c_str());
     return 1;
   }
+  swarmlab::stamp_fingers_with_page_time("#canvas");
   frontend.app = std::make_unique<swarmlab::App>(swarmlab::make_web_preset_store("/presets"),
                                                  /*preset_location=*/"",
                                                  /*fixed_frame_time=*/false);

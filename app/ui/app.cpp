@@ -1,6 +1,7 @@
 #include "ui/app.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <chrono>
@@ -11,6 +12,7 @@
 #include "swarm/physics/system.h"
 #include "ui/classroom/presentation.h"
 #include "ui/input/shortcuts.h"
+#include "ui/input/touch_target.h"
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/windows.h"
@@ -24,6 +26,40 @@ namespace swarmlab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// The windows over the rest (top-level, not the panels or strips: those are NoMove) as drawn
+/// this frame, with the close button where ImGui puts it (RenderWindowTitleBarContents), in
+/// this frame's style: for swarmlab.state().
+void record_floating_windows(AppState& s) {
+  s.layout.windows.clear();
+  const ImGuiContext& g = *ImGui::GetCurrentContext();
+  const ImGuiStyle& style = g.Style;
+  for (const ImGuiWindow* w : g.Windows) {
+    if (!w->Active || w->Hidden || w->IsFallbackWindow) continue;
+    if (w->Flags & ImGuiWindowFlags_ChildWindow) continue;
+    if ((w->Flags & ImGuiWindowFlags_NoMove) && !(w->Flags & ImGuiWindowFlags_Popup)) continue;
+    if (w->Flags & ImGuiWindowFlags_Tooltip) continue;
+    Layout::FloatingWindow f{w->Name, {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}, {}, w->Scroll.y};
+    if (w->HasCloseButton && !(w->Flags & ImGuiWindowFlags_NoTitleBar)) {
+      const float side = g.FontSize + 2 * style.FramePadding.x;
+      f.close = {w->Pos.x + w->Size.x - 2 * style.FramePadding.x - g.FontSize, w->Pos.y, side,
+                 g.FontSize + 2 * style.FramePadding.y};
+    }
+    s.layout.windows.push_back(std::move(f));
+  }
+}
+
+/// A finger dragging on a window that floats over the view (the welcome, the help, a menu)
+/// scrolls it; the panels scroll themselves (panel_windows.cpp). ImGui's hovered window is the
+/// frontmost under the finger (the main loop put the mouse there).
+void scroll_floating_window(const TouchFrame& t) {
+  if (!t.pointer || t.scroll_y == 0) return;
+  ImGuiWindow* w = ImGui::GetCurrentContext()->HoveredWindow;
+  if (!w ||
+      ((w->RootWindow->Flags & ImGuiWindowFlags_NoMove) && !(w->Flags & ImGuiWindowFlags_Popup)))
+    return;
+  ImGui::SetScrollY(w, std::clamp(w->Scroll.y + t.scroll_y, 0.0f, w->ScrollMax.y));
+}
 
 constexpr const char* kFirstPreset = "fig1-four-masses.json";
 /// Stepping may take this much of a frame; beyond it the simulation runs slower than asked
@@ -93,6 +129,7 @@ void App::update(double real_seconds) {
   state_.instruments.update(*state_.run, state_.selected, state_.plots.average_window,
                             state_.preset.container_radius.has_value());
   layout_windows();
+  scroll_floating_window(touch_frame_);
   handle_view_input();
   update_camera();
   const Clock::time_point start = Clock::now();
@@ -148,8 +185,21 @@ void App::layout_windows() {
   const float font = ImGui::GetFontSize();
   float top = viewport->Pos.y;
   s.layout.panels.clear();
+  s.layout.drag_at_once = {0, 0, 0, 0};  // until the timeline draws its bar
 
+  // Fingers need larger targets than a mouse: in a touch or compact layout (as last laid
+  // out) every frame (button, field, slider, a window's close button, the menu bar) is at least
+  // kTouchTargetPx tall, the size WCAG asks of touch targets, and so is every menu's row.
+  const bool roomy = s.layout.touch || s.layout.screen.kind != LayoutKind::wide;
+  const float pad_y = std::max(0.45f * font, 0.5f * (kTouchTargetPx - font));
+  if (roomy) {
+    // Taller, not wider: the particle table's cells need their width for digits.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(0.3f * font, pad_y));
+    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, kTouchTargetPx - font));
+    ImGui::PushStyleVar(ImGuiStyleVar_ScrollbarSize, 1.1f * font);
+  }
   top += draw_menu_bar(s);
+  if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.45f * font));
 
   ScreenLayoutInput in;
   in.width = viewport->Size.x, in.height = viewport->Size.y;
@@ -167,20 +217,18 @@ void App::layout_windows() {
   // The timeline strip (timeline_strip.cpp) under the view.
   draw_timeline_strip(s, l.bottom_strip.x, l.bottom_strip.y, l.bottom_strip.width,
                       l.bottom_strip.height);
-
-  // Fingers need larger targets than a mouse: more padding in a touch or compact layout.
-  const bool roomy = s.layout.touch || l.kind != LayoutKind::wide;
-  if (roomy) {
-    // Taller, not wider: the particle table's cells need their width for digits.
-    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(0.3f * font, 0.45f * font));
-    ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.45f * font));
-    ImGui::PushStyleVar(ImGuiStyleVar_ScrollbarSize, 1.1f * font);
-  }
   draw_panel_windows(s, l, touch_frame_, &lesson_tab_step_);
+  // Rows of 44 px targets over the view need little space between them: the view keeps room.
+  if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.2f * font));
   draw_view_strips(s, l);
-  if (roomy) ImGui::PopStyleVar(3);
+  if (roomy) ImGui::PopStyleVar();
+  // The windows over the view get a square close button a finger can hit.
+  if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(pad_y, pad_y));
   draw_help_window(s);
   draw_welcome_window(s);
+  record_floating_windows(s);
+  if (roomy) ImGui::PopStyleVar();
+  if (roomy) ImGui::PopStyleVar(4);
 }
 
 void App::handle_view_input() {
@@ -197,18 +245,20 @@ void App::handle_view_input() {
     return;
   }
   const bool over_view = !io.WantCaptureMouse && view.contains(io.MousePos.x, io.MousePos.y);
+  // The drag turns the camera by the motion of this press (pointer_press.h), never ImGui's
+  // MouseDelta, which spans a jump to where a whiteboard presses with no motion before.
   if (over_view && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
     dragging_ = true;
-    drag_distance_ = 0;
+    press_.start(io.MousePos.x, io.MousePos.y);
   }
   if (dragging_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-    state_.camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
-    drag_distance_ += std::abs(io.MouseDelta.x) + std::abs(io.MouseDelta.y);
+    const PointerPress::Motion m = press_.move_to(io.MousePos.x, io.MousePos.y);
+    state_.camera.orbit(m.dx, m.dy);
   }
   if (dragging_ && ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
     dragging_ = false;
     // A click that hardly moved selects rather than turns.
-    if (drag_distance_ < 4) pick_particle(io.MousePos.x, io.MousePos.y);
+    if (press_.is_click()) pick_particle(io.MousePos.x, io.MousePos.y);
   }
   if (over_view && io.MouseWheel != 0) state_.camera.zoom(io.MouseWheel);
   // The right button slides the view, as two fingers do.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ui/app_state.h"
+#include "ui/input/pointer_press.h"
 #include "ui/input/touch_gestures.h"
 #include "ui/panels/windows.h"
 #include "ui/platform/save_dialog.h"
@@ -57,7 +58,7 @@ class App {
   LessonTabStep lesson_tab_step_{nullptr, 0};
   float framed_aspect_ = 1;  ///< the view's width / height when the camera distance was set
   bool dragging_ = false;
-  float drag_distance_ = 0;
+  PointerPress press_;    ///< the left button's press on the view, while dragging_
   bool panning_ = false;  ///< the right button went down on the view and is held
 };
 

@@ -64,12 +64,23 @@ struct Layout {
   float transport_height = 0, readouts_height = 0;
   float bottom_strip_height = 0;  ///< reserved under the view for strips of other features
   bool touch = false;             ///< the last pointer was a finger: larger targets
+  /// The timeline's bar as last drawn: a finger drags it as it lands (touch_gestures.h).
+  ViewRect drag_at_once{0, 0, 0, 0};
   struct Panel {
     std::string name;
     ScreenRect rect;
     float scroll = 0;  ///< pixels scrolled down
   };
   std::vector<Panel> panels;  ///< every window drawn this frame, for swarmlab.state()
+  /// For swarmlab.state() too: the menus' titles in the menu bar, and the windows floating over
+  /// the rest (the welcome, the help, an open menu or popup) with their close button if any.
+  std::vector<Panel> menus;
+  struct FloatingWindow {
+    std::string name;
+    ScreenRect rect, close;  ///< close: empty without a close button
+    float scroll = 0;        ///< pixels scrolled down
+  };
+  std::vector<FloatingWindow> windows;
 
   /// One step larger (+1) or smaller (-1), within the limits (menu and Ctrl +/-).
   void step_ui_scale(int direction) {

@@ -3,6 +3,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cfloat>
@@ -17,31 +18,52 @@ namespace {
 
 constexpr float kMaxUiFrameSeconds = 0.1f;  // s
 
-double seconds_since_start() {
-  static const auto start = std::chrono::steady_clock::now();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+/// The frontmost of last frame's ImGui windows (a panel, a strip, the welcome, a menu, a popup)
+/// at x, y, or none: a finger there acts on it, never on the 3D view behind.
+const ImGuiWindow* window_at(float x, float y) {
+  const ImVector<ImGuiWindow*>& windows = ImGui::GetCurrentContext()->Windows;  // back to front
+  for (int i = windows.Size - 1; i >= 0; --i) {
+    const ImGuiWindow* w = windows[i];
+    if (w->Active && !w->Hidden && !(w->Flags & ImGuiWindowFlags_NoMouseInputs) &&
+        w->OuterRectClipped.Contains(ImVec2(x, y)))
+      return w;
+  }
+  return nullptr;
 }
 
-/// A finger event to the app's gestures, in ImGui's window pixels.
+/// What a finger landing at x, y acts on. While a menu or popup is open, a tap anywhere goes to
+/// ImGui (outside the popup it closes it, as a click does), never to the view behind; a window
+/// floating over the timeline's bar takes the finger before the bar does.
+TouchSurface surface_at(const Layout& layout, float x, float y) {
+  if (ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return TouchSurface::panel;
+  const ImGuiWindow* w = window_at(x, y);
+  const bool floating = w && !(w->RootWindow->Flags & ImGuiWindowFlags_NoMove);
+  if (!floating && layout.drag_at_once.contains(x, y)) return TouchSurface::control;
+  if (w || !layout.view.contains(x, y) || ImGui::IsAnyItemActive()) return TouchSurface::panel;
+  return TouchSurface::view;
+}
+
+/// A finger event to the app's gestures, in ImGui's window pixels, at the event's own time
+/// (in the browser, the page's time of the touch event: web/finger_times.cpp).
 void feed_finger(App& app, const SDL_TouchFingerEvent& e) {
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   const float x = e.x * size.x, y = e.y * size.y;
   Layout& layout = app.state().layout;
   layout.touch = true;
   const long id = long(e.fingerId);
+  const double ms = double(e.timestamp);
   if (e.type == SDL_FINGERDOWN)
-    app.touch().down(id, x, y, layout.view.contains(x, y) && !ImGui::IsAnyItemActive(),
-                     seconds_since_start());
+    app.touch().down(id, x, y, surface_at(layout, x, y), ms);
   else if (e.type == SDL_FINGERMOTION)
-    app.touch().move(id, x, y);
+    app.touch().move(id, x, y, ms);
   else
-    app.touch().up(id, x, y);
+    app.touch().up(id, x, y, ms);
 }
 
 /// With fingers, ImGui's mouse is where a finger presses, clicks or scrolls a panel, and
 /// nowhere otherwise (no hover left behind, no tooltip stuck on the screen).
 void apply_touch(App& app) {
-  const TouchFrame t = app.touch().frame(seconds_since_start());
+  const TouchFrame t = app.touch().frame();
   app.set_touch_frame(t);
   if (!app.state().layout.touch) return;
   ImGuiIO& io = ImGui::GetIO();

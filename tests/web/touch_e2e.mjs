@@ -38,6 +38,185 @@ async function fingers(page, cdp, paths, steps = 5) {
   await frames(page, 3);
 }
 
+// Waits until fn(state(), arg) holds in the page (a lasting state: a window closed, a menu
+// open, the run at a time), or gives up after 20 s; returns the state it saw last. fn runs in
+// the page: what it needs from here comes in arg.
+async function until(page, fn, arg = null) {
+  try {
+    await page.waitForFunction(`(${fn})(window.swarmlab.state(), ${JSON.stringify(arg)})`, null,
+                               { timeout: 20_000, polling: 'raf' });
+  } catch { /* the check after it reports what was seen */ }
+  return appState(page);
+}
+
+// Where the app drew what a person presses, found by name from what it reports: a menu's title
+// in the bar, a floating window or its close button, the timeline's bar, a panel. The one place
+// tests look targets up; the parallel DOM will replace it with getByRole.
+async function findTarget(page, kind, name) {
+  const s = await appState(page);
+  const byName = (list) => (list || []).find((e) => e.name === name || (name instanceof RegExp && name.test(e.name)));
+  switch (kind) {
+    case 'menu': return byName(s.menus) || null;
+    case 'window': return byName(s.windows) || null;
+    case 'close': return byName(s.windows)?.close || null;
+    case 'timeline': return s.timeline;
+    case 'panel': return byName(s.panels) || null;
+  }
+  return null;
+}
+const centre = (r) => ({ x: r.x + r.width / 2, y: r.y + r.height / 2 });
+
+// One finger along path ([[x, y], ...]) through the DevTools protocol, the events back to back
+// as a quick hand sends them: the app tells gestures apart by the events' own times.
+async function drag(cdp, path) {
+  const at = ([x, y]) => [{ x, y, id: 1 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(path[0]) });
+  for (const p of path.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(p) });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+}
+const line = (x0, y0, x1, y1, n = 8) => Array.from({ length: n + 1 }, (_, k) => [x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n]);
+const sameCamera = (a, b) => a.yaw === b.yaw && a.pitch === b.pitch;
+const cameraText = (c) => `yaw ${c.yaw.toFixed(4)}, pitch ${c.pitch.toFixed(4)}`;
+
+// A first visit on a phone: the welcome floats over the view. A drag on it scrolls it and never
+// turns the camera; its close button closes it; the Lessons menu opens by a tap, and a tap
+// outside closes it without touching the view.
+async function welcomeOnPhone(url, context) {
+  const first = await context.newPage();
+  harness.watch(first, 'welcome');
+  await first.setViewportSize({ width: 390, height: 844 });
+  await first.goto(url + '?welcome', { waitUntil: 'load' });
+  await first.waitForFunction(() => window.swarmlab && window.swarmlab.frames() > 0 && window.swarmlab.welcomeShown(),
+                              null, { timeout: 30_000 }).catch(() => {});
+  const page = first;
+  let s = await until(page, (st) => st.windows && st.windows.some((w) => w.name === 'Welcome'));
+  if (!check('390x844 first visit: the welcome floats over the view', await api(page, () => window.swarmlab.welcomeShown()) &&
+             !!(await findTarget(page, 'window', 'Welcome')), JSON.stringify(s.windows))) return;
+  await page.screenshot({ path: join(outDir, 'touch-welcome-390x844.png') });
+  console.log('      screenshot -> build/web-test/touch-welcome-390x844.png');
+  const cdp = await context.newCDPSession(page);
+
+  // A drag on the welcome (up and sideways over its text) scrolls it; the camera stays.
+  const welcome = await findTarget(page, 'window', 'Welcome');
+  const camera0 = s.camera, selected0 = s.selected;
+  const mid = centre(welcome);
+  await drag(cdp, line(mid.x - 60, mid.y + 120, mid.x + 60, mid.y - 80));
+  s = await until(page, (st) => st.fingers === 0 && st.windows.some((w) => w.name === 'Welcome' && w.scroll > 0));
+  const scrolled = (s.windows.find((w) => w.name === 'Welcome') || {}).scroll;
+  check('a drag on the welcome scrolls it', scrolled > 0, `scroll ${scrolled}`);
+  check('... and does not turn the camera (nothing passes through to the view)', sameCamera(s.camera, camera0),
+        `${cameraText(camera0)} -> ${cameraText(s.camera)}`);
+  check('... nor select anything', s.selected === selected0, `selected ${selected0} -> ${s.selected}`);
+
+  // A tap on its close button closes it.
+  const close = await findTarget(page, 'close', 'Welcome');
+  check('the welcome\'s close button is at least 44 CSS px square', close && close.width >= 44 && close.height >= 44,
+        close ? `${close.width.toFixed(1)}x${close.height.toFixed(1)}` : 'no close button');
+  if (close) {
+    const c = centre(close);
+    await page.touchscreen.tap(c.x, c.y);
+    s = await until(page, (st) => !st.windows.some((w) => w.name === 'Welcome'));
+  }
+  check('a tap on the welcome\'s close button closes it', !(await api(page, () => window.swarmlab.welcomeShown())),
+        JSON.stringify(s.windows.map((w) => w.name)));
+  check('... and the camera stayed', sameCamera(s.camera, camera0), `${cameraText(camera0)} -> ${cameraText(s.camera)}`);
+
+  // The Lessons menu opens by a tap on its title, at least 44 px tall.
+  const lessons = await findTarget(page, 'menu', 'Lessons');
+  check('the menu bar shows Lessons, at least 44 CSS px tall', lessons && lessons.height >= 44,
+        lessons ? `${lessons.width.toFixed(0)}x${lessons.height.toFixed(0)}` : JSON.stringify(s.menus));
+  if (lessons) {
+    const c = centre(lessons);
+    await page.touchscreen.tap(c.x, c.y);
+    s = await until(page, (st) => st.windows.some((w) => /^##Menu/.test(w.name)));
+    const menu = await findTarget(page, 'window', /^##Menu/);
+    check('a tap on Lessons opens its menu', !!menu, JSON.stringify(s.windows.map((w) => w.name)));
+    await page.screenshot({ path: join(outDir, 'touch-lessons-menu-390x844.png') });
+    console.log('      screenshot -> build/web-test/touch-lessons-menu-390x844.png');
+    // A tap on the view beside the menu closes it and leaves the camera and selection alone.
+    const spot = { x: s.view.x + s.view.width - 20, y: s.view.y + s.view.height - 20 };
+    await page.touchscreen.tap(spot.x, spot.y);
+    s = await until(page, (st) => !st.windows.some((w) => /^##Menu/.test(w.name)));
+    check('a tap outside the open menu closes it', !s.windows.some((w) => /^##Menu/.test(w.name)),
+          JSON.stringify(s.windows.map((w) => w.name)));
+    check('... without selecting or turning anything behind it', s.selected === selected0 && sameCamera(s.camera, camera0),
+          `selected ${s.selected}, ${cameraText(s.camera)}`);
+  }
+  await cdp.detach();
+  await page.close();
+}
+
+// The timeline drags by touch at once: a finger that lands on the bar and moves straight away
+// scrubs (no hold), and the run ends at the time under the finger where it lifted.
+async function timelineByTouch(page, context) {
+  await api(page, () => window.swarmlab.set({ playing: true, speed: 4 }));
+  let s = await until(page, (st) => st.t_reached >= Math.min(3, 0.8 * st.timeline.t_end));
+  await api(page, () => window.swarmlab.set({ playing: false }));
+  s = await until(page, (st) => !st.playing);
+  const bar = await findTarget(page, 'timeline');
+  check('the timeline\'s bar is at least 44 CSS px tall', bar && bar.height >= 44, bar ? `${bar.width.toFixed(0)}x${bar.height.toFixed(0)}` : 'none');
+  if (!bar) return;
+  const xAt = (t) => bar.x + bar.width * t / bar.t_end;
+  const tFrom = s.t_reached * 0.9, tTo = s.t_reached * 0.3;
+  const y = bar.y + bar.height / 2;
+  const camera0 = s.camera;
+  const cdp = await context.newCDPSession(page);
+  await drag(cdp, line(xAt(tFrom), y, xAt(tTo), y, 6));
+  await cdp.detach();
+  const expected = s.t_reached * 0.3;
+  const dt = JSON.parse(await api(page, () => window.swarmlab.preset())).dt;
+  // The bar's pixel is bar.t_end / bar.width wide in time: the finger lands within one.
+  const tolerance = bar.t_end / bar.width + dt;
+  s = await until(page, (st, a) => st.fingers === 0 && Math.abs(st.t - a.expected) <= a.tolerance, { expected, tolerance });
+  check('a finger dragged along the timeline at once scrubs it to the time under the finger',
+        Math.abs(s.t - expected) <= tolerance, `expected t = ${expected.toFixed(3)} +- ${tolerance.toFixed(3)}, got ${s.t.toFixed(3)}`);
+  check('... and does not turn the camera', sameCamera(s.camera, camera0), `${cameraText(camera0)} -> ${cameraText(s.camera)}`);
+}
+
+// An interactive whiteboard (or a touchscreen acting as a mouse) presses at a new place with no
+// mouse motion before it: the press selects the particle there and never turns the camera.
+async function whiteboardClick(page, context) {
+  await api(page, () => window.swarmlab.set({ playing: false, selected: null }));
+  let s = await until(page, (st) => st.selected === null);
+  const cdp = await context.newCDPSession(page);
+  // The mouse was last somewhere else: over a panel, far from the particle.
+  const panel = s.panels[0];
+  await page.mouse.move(panel.x + panel.width / 2, panel.y + panel.height / 2);
+  s = await until(page, (st) => st.touch === false);  // the app has taken the mouse
+  const camera0 = s.camera;
+  const p = await api(page, () => window.swarmlab.screenPosition(1));
+  const press = { x: p.x, y: p.y, button: 'left', clickCount: 1 };
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mousePressed', ...press });
+  await cdp.send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...press });
+  s = await until(page, (st) => st.selected === 1);
+  check('a whiteboard press with no motion before it selects the particle there', s.selected === 1,
+        `pressed (${p.x.toFixed(0)}, ${p.y.toFixed(0)}), selected ${s.selected}`);
+  check('... and does not turn the camera', sameCamera(s.camera, camera0), `${cameraText(camera0)} -> ${cameraText(s.camera)}`);
+  await cdp.detach();
+  await api(page, () => window.swarmlab.set({ selected: null }));
+}
+
+// A quick mouse drag along the timeline, moved and let go at once: the run ends at the time
+// under the pointer where the button was let go (finding 12: it ended at 8.13 with the pointer
+// at 2.65).
+async function timelineByMouse(page) {
+  let s = await appState(page);
+  const bar = await findTarget(page, 'timeline');
+  if (!bar) return;
+  const xAt = (t) => bar.x + bar.width * t / bar.t_end;
+  const y = bar.y + bar.height / 2;
+  const tTo = 0.25 * s.t_reached;
+  await page.mouse.move(xAt(0.85 * s.t_reached), y);
+  await page.mouse.down();
+  await page.mouse.move(xAt(tTo), y);
+  await page.mouse.up();
+  const dt = JSON.parse(await api(page, () => window.swarmlab.preset())).dt;
+  const tolerance = bar.t_end / bar.width + dt;
+  s = await until(page, (st, a) => Math.abs(st.t - a.tTo) <= a.tolerance, { tTo, tolerance });
+  check('a quick mouse drag on the timeline ends at the time under the pointer', Math.abs(s.t - tTo) <= tolerance,
+        `pointer over t = ${tTo.toFixed(3)} +- ${tolerance.toFixed(3)}, run at ${s.t.toFixed(3)}`);
+}
+
 async function gestures(page, context) {
   await api(page, () => window.swarmlab.set({ playing: false }));
   await frames(page, 3);
@@ -112,7 +291,7 @@ async function gestures(page, context) {
     await fingers(page, cdp, [[x, y0, x, y0 - controls.height * 0.5]], 6);
     t = await appState(page);
     const after = t.panels.find((p) => p.name === 'Controls');
-    const field = await api(page, () => { const e = document.getElementById('swarmlab-number'); return e && !e.hidden; });
+    const field = await api(page, () => !!document.querySelector('#parallel-dom input.pdom-editing'));
     check('a finger dragged on the controls scrolls them', after && after.scroll > 0.3 * controls.height * 0.5,
           `scroll ${controls.scroll} -> ${after && after.scroll.toFixed(1)} px`);
     check('... without editing anything (no field open, preset unchanged)', !field && t.edited === false && t.name === s.name,
@@ -165,11 +344,15 @@ async function checkLayout(page, W, H, label, expect) {
 
 async function main(url) {
   const context = await launchBrowser({ width: 1024, height: 768, hasTouch: true, isMobile: true });
+  await welcomeOnPhone(url, context);  // first: the welcome shows on the profile's first visit only
   const blank = context.pages()[0];
   const { page, started, error } = await openApp(url, 'touch');
   if (blank) await blank.close();
   if (!check('the app starts on a touch tablet', started, error || '')) return;
   await gestures(page, context);
+  await timelineByTouch(page, context);
+  await whiteboardClick(page, context);
+  await timelineByMouse(page);
 
   const sizes = [[390, 844, 'portrait'], [844, 390, 'landscape'], [1024, 768, 'landscape'],
                  [1366, 768, 'wide'], [1280, 720, 'wide'], [1920, 1080, 'wide']];

@@ -14,12 +14,23 @@ float TouchGestures::spread() const {
   return std::hypot(fingers_[1].x - fingers_[0].x, fingers_[1].y - fingers_[0].y);
 }
 
-void TouchGestures::down(long id, float x, float y, bool on_view, double now) {
+void TouchGestures::down(long id, float x, float y, TouchSurface surface, double ms) {
   if (count_ == 2 || find(id)) return;  // a third finger changes nothing
   fingers_[count_++] = {id, x, y};
   if (count_ == 1) {
-    mode_ = on_view ? Mode::view_pending : Mode::panel_pending;
-    start_x_ = x, start_y_ = y, start_time_ = now;
+    start_x_ = x, start_y_ = y, start_ms_ = ms;
+    switch (surface) {
+      case TouchSurface::view:
+        mode_ = Mode::view_pending;
+        break;
+      case TouchSurface::panel:
+        mode_ = Mode::panel_pending;
+        break;
+      case TouchSurface::control:
+        mode_ = Mode::press;
+        mouse_.push_back({x, y, true});
+        break;
+    }
     return;
   }
   // A second finger on the view starts a pinch; on a panel it is ignored.
@@ -31,7 +42,7 @@ void TouchGestures::down(long id, float x, float y, bool on_view, double now) {
   }
 }
 
-void TouchGestures::move(long id, float x, float y) {
+void TouchGestures::move(long id, float x, float y, double ms) {
   Finger* f = find(id);
   if (!f) return;
   const float dx = x - f->x, dy = y - f->y;
@@ -55,7 +66,12 @@ void TouchGestures::move(long id, float x, float y) {
       break;
     }
     case Mode::panel_pending:
-      if (far) {
+      if (!far) break;
+      if (ms - start_ms_ >= kHoldMs) {
+        // Held still, then moved: press where it landed (what a slider grabs), then follow.
+        mode_ = Mode::press;
+        mouse_.push_back({start_x_, start_y_, true});
+      } else {
         mode_ = Mode::scroll;
         pending_.scroll_y += start_y_ - y;  // the content follows the finger
       }
@@ -68,33 +84,38 @@ void TouchGestures::move(long id, float x, float y) {
   }
 }
 
-void TouchGestures::up(long id, float x, float y) {
+void TouchGestures::up(long id, float x, float y, double /*ms*/) {
   Finger* f = find(id);
   if (!f) return;
   f->x = x, f->y = y;
+  lift_x_ = x, lift_y_ = y;
   if (mode_ == Mode::view_pending) {
     pending_.tap = true, pending_.tap_x = x, pending_.tap_y = y;
-  } else if (mode_ == Mode::panel_pending) {
-    click_ = 2, click_x_ = x, click_y_ = y;
-  } else if (mode_ == Mode::press) {
-    click_ = 1, click_x_ = x, click_y_ = y;  // released where the finger left
+  } else if (mode_ == Mode::panel_pending || mode_ == Mode::press) {
+    // Held (or pressed) where the finger left, then released: a tap clicks, a drag ends there.
+    const bool held_there =
+        !mouse_.empty() && mouse_.back().down && mouse_.back().x == x && mouse_.back().y == y;
+    if (!held_there) mouse_.push_back({x, y, true});
+    mouse_.push_back({x, y, false});
   }
   *f = fingers_[--count_];  // the other finger (if any) takes slot 0
   // After a pinch the last finger neither orbits nor taps: the gesture ends with it.
   mode_ = count_ == 0 ? Mode::none : mode_ == Mode::two_finger ? Mode::view_done : mode_;
 }
 
-TouchFrame TouchGestures::frame(double now) {
-  if (mode_ == Mode::panel_pending && now - start_time_ >= kHoldSeconds) mode_ = Mode::press;
+TouchFrame TouchGestures::frame() {
   TouchFrame out = pending_;
   pending_ = TouchFrame{};
-  if (click_ > 0) {
-    // Pressed on one frame, released on the next: ImGui reads the button once a frame.
-    out.pointer = true, out.x = click_x_, out.y = click_y_, out.down = click_ == 2;
-    --click_;
+  if (!mouse_.empty()) {
+    const Mouse m = mouse_.front();
+    mouse_.pop_front();
+    out.pointer = true, out.x = m.x, out.y = m.y, out.down = m.down;
   } else if (count_ > 0 && (mode_ == Mode::scroll || mode_ == Mode::press)) {
     out.pointer = true, out.x = fingers_[0].x, out.y = fingers_[0].y;
     out.down = mode_ == Mode::press;
+  } else if (out.scroll_y != 0) {
+    // A flick that lifted before this frame still scrolls the window it was on.
+    out.pointer = true, out.x = lift_x_, out.y = lift_y_;
   }
   return out;
 }

@@ -1,13 +1,24 @@
 #pragma once
 // Fingers as on a PhET sim, told apart from a mouse: on the 3D view a tap selects (or, on empty
-// space, deselects), one finger orbits, two fingers pinch to zoom and drag to pan; on a panel a
-// drag scrolls it without pressing what the finger started on, a tap clicks, and a finger held
-// still for a moment presses (to drag a slider). Pure: the main loop feeds it SDL's finger
-// events in window pixels and applies what frame() returns to ImGui's mouse and the camera.
+// space, deselects), one finger orbits, two fingers pinch to zoom and drag to pan; on a panel or
+// any window over the view (the welcome, a menu, a popup) a drag scrolls it without pressing
+// what the finger started on, a tap clicks, and a finger held still for a moment before it
+// moves presses (to drag a slider); on a control that takes drags at once (the timeline's bar)
+// the finger presses as it lands. Pure: a function of the finger events alone, each with its
+// own time stamp (never the frame's time, so a slow frame cannot turn a drag into a press). The
+// main loop feeds it SDL's finger events in window pixels and applies what frame() returns to
+// ImGui's mouse and the camera.
 
-#include <optional>
+#include <deque>
 
 namespace swarmlab {
+
+/// What is under a finger as it lands.
+enum class TouchSurface {
+  view,     ///< the 3D view, with no window over it
+  panel,    ///< a panel or a window over the view: drags scroll, taps click
+  control,  ///< a control dragged at once (the timeline's bar): pressed as the finger lands
+};
 
 /// What the fingers did since the last frame.
 struct TouchFrame {
@@ -26,19 +37,19 @@ struct TouchFrame {
 
 class TouchGestures {
  public:
-  /// A finger moving less than this (pixels) is still a tap; held still this long (seconds)
-  /// on a panel, it presses.
+  /// A finger moving less than this (pixels) is still a tap; held still this long
+  /// (milliseconds, by its own events' times) on a panel before it moves, it presses.
   static constexpr float kSlop = 10;
-  static constexpr double kHoldSeconds = 0.35;
+  static constexpr double kHoldMs = 350;
 
-  /// A finger touched at x, y; on_view: over the 3D view (else over a panel). now in seconds.
-  void down(long id, float x, float y, bool on_view, double now);
-  void move(long id, float x, float y);
-  void up(long id, float x, float y);
+  /// A finger touched at x, y over `surface`; ms: the event's own time stamp.
+  void down(long id, float x, float y, TouchSurface surface, double ms);
+  void move(long id, float x, float y, double ms);
+  void up(long id, float x, float y, double ms);
   /// What happened since the last call; call once per frame.
-  TouchFrame frame(double now);
-  /// Whether a finger is down or a tap's click is still being delivered.
-  bool active() const { return count_ > 0 || click_ > 0; }
+  TouchFrame frame();
+  /// Whether a finger is down or a press or click is still being delivered.
+  bool active() const { return count_ > 0 || !mouse_.empty(); }
   int fingers() const { return count_; }  ///< fingers down now
 
  private:
@@ -47,6 +58,12 @@ class TouchGestures {
     float x = 0, y = 0;
   };
   enum class Mode { none, view_pending, orbit, two_finger, view_done, panel_pending, scroll, press };
+  /// ImGui's mouse on one frame: ImGui reads the button once a frame, so a press and its
+  /// release (or a press and the last place it was dragged to) take a frame each.
+  struct Mouse {
+    float x = 0, y = 0;
+    bool down = false;
+  };
 
   Finger* find(long id);
   float spread() const;  ///< distance between the two fingers
@@ -55,13 +72,11 @@ class TouchGestures {
   int count_ = 0;
   Mode mode_ = Mode::none;
   float start_x_ = 0, start_y_ = 0;  ///< where the first finger touched
-  double start_time_ = 0;
+  double start_ms_ = 0;
+  float lift_x_ = 0, lift_y_ = 0;  ///< where a finger last left the glass
   float last_spread_ = 0, last_mid_x_ = 0, last_mid_y_ = 0;
-  TouchFrame pending_;  ///< accumulated until frame()
-  /// A tap on a panel becomes a click over frames: 2 press, 1 release, 0 done (a held press
-  /// ends with 1).
-  int click_ = 0;
-  float click_x_ = 0, click_y_ = 0;
+  TouchFrame pending_;       ///< accumulated until frame()
+  std::deque<Mouse> mouse_;  ///< frames of ImGui's mouse still to deliver, one per frame
 };
 
 }  // namespace swarmlab

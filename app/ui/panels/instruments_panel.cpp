@@ -10,6 +10,7 @@
 #include "swarm/measure/stopwatch.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {
@@ -30,26 +31,31 @@ void draw_stopwatch(AppState& state) {
   swarm::Stopwatch& w = state.instruments.stopwatch;
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
-  char text[96];
-  format_time(text, sizeof text, w.elapsed(), k);
-  ImGui::Text("Stopwatch  %s", text);
+  // The buttons first, each as wide whatever its label, and the growing time after them: no
+  // button moves while a finger is on it.
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("Stopwatch");
   help_marker(
       "Measures simulated time: pausing the simulation pauses it, and it runs as fast as the "
       "simulation. In periods 2\u03c0/\u03c9 = 2\u03c0/\u221a(J M) when J > 0; for J \u2264 0 "
       "the motion has no period.");
-  ImGui::SameLine();
-  if (ImGui::SmallButton(w.running() ? "Stop" : "Start")) {
+  const float start_width = std::max(target_width("Start"), target_width("Stop"));
+  same_line_if_fits(start_width);
+  if (ImGui::Button(w.running() ? "Stop###start" : "Start###start", ImVec2(start_width, 0))) {
     if (w.running())
       w.stop(t);
     else
       w.start(t);
   }
-  ImGui::SameLine();
+  same_line_if_fits(target_width("Lap"));
   ImGui::BeginDisabled(!w.running());
-  if (ImGui::SmallButton("Lap")) w.lap(t);
+  if (ImGui::Button("Lap", ImVec2(target_width("Lap"), 0))) w.lap(t);
   ImGui::EndDisabled();
-  ImGui::SameLine();
-  if (ImGui::SmallButton("Reset##stopwatch")) w.reset();
+  same_line_if_fits(target_width("Reset"));
+  if (ImGui::Button("Reset##stopwatch", ImVec2(target_width("Reset"), 0))) w.reset();
+  char text[96];
+  format_time(text, sizeof text, w.elapsed(), k);
+  ImGui::Text("  %s", text);
   if (swarm::regime_of(k) != swarm::Regime::attractive)
     ImGui::TextDisabled("J \u2264 0: the motion has no period");
   const auto& laps = w.laps();

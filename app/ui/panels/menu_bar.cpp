@@ -9,13 +9,25 @@
 #include "ui/platform/save_dialog.h"
 
 namespace swarmlab {
+namespace {
+
+/// Records where the menu whose title began at x0 lies in the bar: up to the next title.
+void record_menu(AppState& s, const char* name, float x0) {
+  const float x1 = ImGui::GetCursorScreenPos().x - ImGui::GetStyle().ItemSpacing.x;
+  s.layout.menus.push_back(
+      {name, {x0, ImGui::GetWindowPos().y, x1 - x0, ImGui::GetWindowSize().y}, 0});
+}
+
+}  // namespace
 
 float draw_menu_bar(AppState& state) {
   AppState& s = state;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float font = ImGui::GetFontSize();
   float height = 0;
+  s.layout.menus.clear();
   if (ImGui::BeginMainMenuBar()) {
+    float x0 = ImGui::GetCursorScreenPos().x;
     if (ImGui::BeginMenu("Scenario")) {
       for (const ShippedPreset& p : s.shipped)
         if (ImGui::MenuItem(p.preset.name.empty() ? p.id.c_str() : p.preset.name.c_str(), nullptr,
@@ -33,6 +45,8 @@ float draw_menu_bar(AppState& state) {
       if (ImGui::MenuItem("Quit")) request_quit(s);
       ImGui::EndMenu();
     }
+    record_menu(s, "Scenario", x0);
+    x0 = ImGui::GetCursorScreenPos().x;
     if (ImGui::BeginMenu("View")) {
       ImGui::MenuItem("Controls", "1", &s.layout.controls);
       ImGui::MenuItem("Plots", "2", &s.layout.plots);
@@ -49,7 +63,10 @@ float draw_menu_bar(AppState& state) {
       draw_presentation_menu_items(s);
       ImGui::EndMenu();
     }
+    record_menu(s, "View", x0);
+    x0 = ImGui::GetCursorScreenPos().x;
     draw_lessons_menu(s);
+    record_menu(s, "Lessons", x0);
     if (ImGui::MenuItem("Help")) s.layout.help = !s.layout.help;
     const std::string title = "Swarm Lab  \u2014  " + s.preset.name;
     const float w = ImGui::CalcTextSize(title.c_str()).x;

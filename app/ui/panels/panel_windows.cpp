@@ -36,9 +36,8 @@ void draw_controls(AppState& s) {
 /// A finger dragging on the current window scrolls it (ImGui's own mouse-wheel routing was
 /// seen to drop a scroll after a pinch, so the window under the finger is scrolled here).
 void touch_scroll(const TouchFrame& t) {
-  if (!t.pointer || t.scroll_y == 0) return;
-  const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  if (t.x < pos.x || t.y < pos.y || t.x >= pos.x + size.x || t.y >= pos.y + size.y) return;
+  // Only the frontmost window under the finger: not a panel under the welcome or a menu.
+  if (!t.pointer || t.scroll_y == 0 || !ImGui::IsWindowHovered()) return;
   ImGui::SetScrollY(std::clamp(ImGui::GetScrollY() + t.scroll_y, 0.0f, ImGui::GetScrollMaxY()));
 }
 

@@ -9,6 +9,7 @@
 
 #include "labels/system_labels.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 #include "ui/parallel_dom/item_tooltip.h"
 #include "ui/parallel_dom/parallel_dom.h"
@@ -21,7 +22,8 @@ void show_refusal(AppState& state, Section section) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
   ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
   ImGui::PopStyleColor();
-  if (ImGui::SmallButton("Undo the edit")) state.revert_draft();
+  if (ImGui::Button("Undo the edit", ImVec2(target_width("Undo the edit"), 0)))
+    state.revert_draft();
   item_tooltip(
         "Show the running values again. Until then the run goes on with the "
         "last valid preset.");

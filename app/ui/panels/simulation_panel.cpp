@@ -11,6 +11,7 @@
 #include "swarm/physics/regime.h"
 #include "ui/classroom/presentation.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 #include "ui/parallel_dom/item_tooltip.h"
 #include "ui/time/time_controls.h"
@@ -26,14 +27,6 @@ std::string describe(swarm::Method m) {
   text += info.order == 0 ? std::string("Exact") : "Order " + std::to_string(info.order);
   text += info.pairwise ? ", O(N^2) per step." : ", O(N) per step.";
   return text;
-}
-
-/// Continues the row when an item `width` wide still fits beside the last one, else starts the
-/// next row: on a phone the transport bar wraps instead of cutting off its end.
-void same_line_if_fits(float width) {
-  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-  if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right)
-    ImGui::SameLine();
 }
 
 /// The width of a button labelled `text`.

@@ -11,6 +11,7 @@
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 #include "ui/parallel_dom/item_tooltip.h"
 
@@ -99,7 +100,7 @@ void draw_table(AppState& state, ParticleList& list) {
       if (state.selected == i)
         ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().selected_row.packed());
       ImGui::TableNextColumn();
-      if (ImGui::SmallButton("x")) remove = i;
+      if (ImGui::Button("x", ImVec2(target_width("x"), 0))) remove = i;
       item_tooltip("Remove particle %zu", i + 1);
       ImGui::SameLine();
       ImGui::Text("%zu", i + 1);

@@ -10,6 +10,7 @@
 
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/wall_motion.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {
@@ -46,7 +47,7 @@ bool draw_moves(swarm::Preset& d, float width) {
     changed |= input_double("at u", &d.wall_moves[i].speed, "%.4g");
     if (d.wall_moves.size() > 1) {
       ImGui::SameLine();
-      if (ImGui::SmallButton("x")) drop = i;
+      if (ImGui::Button("x", ImVec2(target_width("x"), 0))) drop = i;
     }
     ImGui::PopID();
   }
@@ -54,7 +55,7 @@ bool draw_moves(swarm::Preset& d, float width) {
     d.wall_moves.erase(d.wall_moves.begin() + long(drop));
     changed = true;
   }
-  if (ImGui::SmallButton("+ move")) {
+  if (ImGui::Button("+ move", ImVec2(target_width("+ move"), 0))) {
     const swarm::WallMove last = d.wall_moves.back();
     d.wall_moves.push_back({d.container_radius.value_or(1.0), last.speed});
     changed = true;

@@ -1,13 +1,14 @@
 #include "ui/time/timeline_strip.h"
 
-#include "ui/time/time_controls.h"
-
 #include <imgui.h>
 
 #include <algorithm>
 #include <cstdio>
 
 #include "ui/classroom/theme_style.h"
+#include "ui/input/touch_target.h"
+#include "ui/time/time_controls.h"
+#include "ui/time/timeline_scale.h"
 
 namespace swarmlab {
 namespace {
@@ -22,7 +23,10 @@ const char* travel_name(TimeTravel::Kind kind) {
 
 }  // namespace
 
-float timeline_strip_height() { return 2.4f * ImGui::GetFontSize(); }
+float timeline_strip_height() {
+  return std::max(2.4f * ImGui::GetFontSize(),
+                  ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y);
+}
 
 void draw_timeline_strip(AppState& state, float x, float y, float width, float height) {
   const swarm::Timeline& timeline = state.run->timeline();
@@ -42,13 +46,19 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
   char clock[96];
   std::snprintf(clock, sizeof clock, "t = %.4g / %.4g reached", state.run->time(),
                 double(timeline.reached()) * dt);
+  // The clock's text keeps one width, so the bar after it never moves under the pointer.
+  const ImVec2 clock_at = ImGui::GetCursorScreenPos();
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(clock);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "The present time and the furthest time computed. Drag on the bar to go back to any "
         "moment: the same state to the last bit, recomputed from snapshots.");
+  const float clock_width =
+      std::max(ImGui::CalcTextSize("t = 00.000 / 00.000 reached").x, ImGui::GetItemRectSize().x);
   ImGui::SameLine();
+  ImGui::SetCursorScreenPos(ImVec2(clock_at.x + clock_width + ImGui::GetStyle().ItemSpacing.x,
+                                   ImGui::GetCursorScreenPos().y));
 
   const TimeTravel& travel = state.travel;
   float bar_width = ImGui::GetContentRegionAvail().x;
@@ -56,23 +66,22 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
     bar_width -= 18 * font;  // room for the progress and Cancel
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float bar_height = ImGui::GetFrameHeight();
-  ImGui::InvisibleButton("##scrub", ImVec2(std::max(bar_width, 4 * font), bar_height));
-  const float x0 = origin.x, x1 = origin.x + std::max(bar_width, 4 * font);
-  const double end = double(std::max(1L, timeline.end_step()));
-  auto x_of = [&](long step) { return x0 + float(double(step) / end) * (x1 - x0); };
-  auto step_at = [&](float px) {
-    return long(std::clamp(double(px - x0) / double(x1 - x0), 0.0, 1.0) * end + 0.5);
-  };
-  // Dragging scrubs over the time computed so far; a click beyond it computes up to there.
-  if (ImGui::IsItemActive()) {
-    const long wanted = step_at(ImGui::GetIO().MousePos.x);
-    const long target =
-        ImGui::IsItemActivated() ? wanted : std::min(wanted, timeline.reached());
+  bar_width = std::max(bar_width, 4 * font);
+  ImGui::InvisibleButton("##scrub", ImVec2(bar_width, bar_height));
+  state.layout.drag_at_once = {origin.x, origin.y, bar_width, bar_height};
+  const TimelineScale scale{origin.x, origin.x + bar_width, std::max(1L, timeline.end_step())};
+  const float x0 = scale.x0, x1 = scale.x1;
+  auto x_of = [&](long step) { return scale.x_of(step); };
+  // Dragging scrubs over the time computed so far; a click beyond it computes up to there. The
+  // frame the button is let go counts too: a quick drag may move and release in one frame.
+  if (ImGui::IsItemActive() || ImGui::IsItemDeactivated()) {
+    const long target = TimelineScale::scrub_target(scale.step_at(ImGui::GetIO().MousePos.x),
+                                                    ImGui::IsItemActivated(), timeline.reached());
     if (!travel.active() || travel.target != target)
       travel_to(state, TimeTravel::Kind::seek, target);
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("t = %.4g", double(step_at(ImGui::GetIO().MousePos.x)) * dt);
+    ImGui::SetTooltip("t = %.4g", double(scale.step_at(ImGui::GetIO().MousePos.x)) * dt);
 
   const Palette& colours = current_palette();
   const ImU32 track = colours.timeline_track.packed(), reached = colours.timeline_reached.packed(),
@@ -108,20 +117,24 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
 }
 
 void draw_time_buttons(AppState& state) {
-  if (ImGui::Button("\u25c0|")) step_back(state, false);
+  if (ImGui::Button("\u25c0|", ImVec2(target_width("\u25c0|"), 0))) step_back(state, false);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("B: one step back");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25c0\u25c0")) step_back(state, true);
+  same_line_if_fits(target_width("\u25c0\u25c0"));
+  if (ImGui::Button("\u25c0\u25c0", ImVec2(target_width("\u25c0\u25c0"), 0)))
+    step_back(state, true);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Left: back by 1/100 of a period");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25b6\u25b6")) step_forward_coarse(state);
+  same_line_if_fits(target_width("\u25b6\u25b6"));
+  if (ImGui::Button("\u25b6\u25b6", ImVec2(target_width("\u25b6\u25b6"), 0)))
+    step_forward_coarse(state);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Right: on by 1/100 of a period");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25b6| stage")) fast_forward_to_stage_end(state);
+  same_line_if_fits(target_width("\u25b6| stage"));
+  if (ImGui::Button("\u25b6| stage", ImVec2(target_width("\u25b6| stage"), 0)))
+    fast_forward_to_stage_end(state);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("N: fast-forward to the end of this stage, as fast as the machine allows");
-  ImGui::SameLine();
-  if (ImGui::Button("\u25b6| end")) fast_forward_to_run_end(state);
+  same_line_if_fits(target_width("\u25b6| end"));
+  if (ImGui::Button("\u25b6| end", ImVec2(target_width("\u25b6| end"), 0)))
+    fast_forward_to_run_end(state);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("End: fast-forward to the end of the run (Esc cancels)");
 }
