@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 
+#include "ui/input/keyboard_regions.h"
 #include "ui/platform/fonts.h"
 #include "ui/platform/gl_api.h"
 #include "ui/plots/plot_export.h"
@@ -94,6 +95,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   // would toggle Play twice; the UI's clock is capped so a press repeats only when held.
   ImGui::GetIO().DeltaTime = std::min(ImGui::GetIO().DeltaTime, kMaxUiFrameSeconds);
   apply_touch(*f.app);
+  keep_ctrl_tab_from_imgui();  // the browser's key: regions are F6 (keyboard_regions.h)
   ImGui::NewFrame();
   f.app->update(seconds);
   f.outputs.update(f.app->state(), f.window.window, seconds);
