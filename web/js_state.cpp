@@ -87,11 +87,12 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["presentation"] = s.presentation.on;
   j["sound"] = s.presentation.sound;
   j["fullscreen"] = s.presentation.fullscreen;
-  // The panel keyboard navigation is in ("Controls", "Plots", "transport", "menu"), or null.
+  // The region keyboard navigation is in, by its window's title ("Controls", "Plots",
+  // "Transport", "Read-outs", "Timeline", "Panels", "menu"), or null (the 3D view).
   const ImGuiContext* imgui = ImGui::GetCurrentContext();
   const ImGuiWindow* nav = imgui ? imgui->NavWindow : nullptr;
   if (nav && imgui->NavLayer == ImGuiNavLayer_Menu) j["keyboard_focus"] = "menu";
-  else if (nav) j["keyboard_focus"] = std::string(nav->Name).substr(nav->Name[0] == '#' ? 2 : 0);
+  else if (nav) j["keyboard_focus"] = std::string(nav->RootWindow->Name).substr(0, std::string(nav->RootWindow->Name).find("##"));
   else j["keyboard_focus"] = nullptr;
   return j;
 }

@@ -238,7 +238,7 @@ LessonStep step_of(const json& j, const std::string& path, const PresetLookup& l
     if (show.has("plot"))
       s.plot = named(show, "plot",
                      {LessonPlot::wall, LessonPlot::energy, LessonPlot::expansion,
-                      LessonPlot::compare});
+                      LessonPlot::compare, LessonPlot::particle, LessonPlot::projects});
     if (show.has("select")) {
       const std::size_t N = particle_count(scene);
       s.select = show.index("select", N,
@@ -327,6 +327,8 @@ std::string_view name_of(LessonPlot plot) {
     case LessonPlot::energy: return "energy";
     case LessonPlot::expansion: return "expansion";
     case LessonPlot::compare: return "compare";
+    case LessonPlot::particle: return "particle";
+    case LessonPlot::projects: return "projects";
   }
   return "";
 }

@@ -17,7 +17,7 @@ namespace swarmlab {
 inline constexpr int kLessonVersion = 1;
 
 /// The plots panel's tabs a step can open.
-enum class LessonPlot { wall, energy, expansion, compare };
+enum class LessonPlot { wall, energy, expansion, compare, particle, projects };
 /// The Fig. 1 springs drawn over the view: none, every pair, or each particle to the CM.
 enum class LessonOverlay { none, springs, springs_to_cm };
 /// What a measure task asks for, each read from the running simulation: the period 2 pi / omega

@@ -199,4 +199,50 @@ AxisTicks ticks_for(const AxisRange& range, bool log, int target) {
   return t;
 }
 
+double tick_position(double value, const AxisRange& range, bool log, double length) {
+  const double lo = std::min(range.lo, range.hi), hi = std::max(range.lo, range.hi);
+  if (log && lo > 0 && value > 0)
+    return length * (std::log10(value) - std::log10(lo)) / (std::log10(hi) - std::log10(lo));
+  return hi > lo ? length * (value - lo) / (hi - lo) : 0;
+}
+
+namespace {
+
+/// Whether each label's box, centred on its tick, keeps the gap to the next one's.
+bool labels_fit(const AxisTicks& t, const AxisRange& range, bool log, const AxisRoom& room) {
+  for (std::size_t i = 0; i + 1 < t.values.size(); ++i) {
+    const double a = tick_position(t.values[i], range, log, room.length);
+    const double b = tick_position(t.values[i + 1], range, log, room.length);
+    const double half_widths = 0.5 * (room.label_length(t.labels[i], room.context) +
+                                      room.label_length(t.labels[i + 1], room.context));
+    if (std::abs(b - a) < half_widths + room.gap) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+AxisTicks ticks_that_fit(const AxisRange& range, bool log, const AxisRoom& room) {
+  // No label is shorter than one digit: the length holds no more ticks than such labels.
+  const double shortest = room.label_length("0", room.context) + room.gap;
+  AxisTicks t;
+  for (int target = std::max(1, int(room.length / std::max(shortest, 1.0))); target >= 1;
+       target = target > 12 ? target * 2 / 3 : target - 1) {
+    t = ticks_for(range, log, target);
+    if (labels_fit(t, range, log, room)) return t;
+  }
+  // Even the fewest do not fit: keep every stride-th tick (with its label) until they do.
+  for (std::size_t stride = 2; t.values.size() / stride >= 1; ++stride) {
+    AxisTicks kept;
+    kept.scale_suffix = t.scale_suffix;
+    for (std::size_t i = 0; i < t.values.size(); i += stride) {
+      kept.values.push_back(t.values[i]);
+      kept.labels.push_back(t.labels[i]);
+    }
+    if (labels_fit(kept, range, log, room)) return kept;
+    if (kept.values.size() <= 1) return kept;
+  }
+  return t;
+}
+
 }  // namespace swarmlab::plotting

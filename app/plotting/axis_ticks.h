@@ -74,6 +74,24 @@ AxisRange axis_range(double lo, double hi, const RangeOptions& options = {});
 /// positive ones of its linear ticks, at least two where it reaches above zero.
 AxisTicks ticks_for(const AxisRange& range, bool log, int target = kDefaultTickTarget);
 
+/// An axis on screen: how long it is and how much room one label takes along it.
+struct AxisRoom {
+  double length = 0;  ///< pixels from the range's low end to its high end
+  /// Pixels a label takes along the axis: its width on an x axis, its height on a y axis.
+  double (*label_length)(const std::string& label, const void* context) = nullptr;
+  const void* context = nullptr;
+  double gap = 0;  ///< pixels kept free between two labels
+};
+
+/// Where a tick of `range` lies along an axis `length` pixels long, from the low end.
+double tick_position(double value, const AxisRange& range, bool log, double length);
+
+/// The ticks of ticks_for with as many as the room holds without two labels' boxes (with the
+/// gap between them) overlapping: the target falls from what the length could hold until
+/// they fit, and where even the fewest the rule gives do not (a log axis keeps four), every
+/// second, third, ... tick is kept, down to one. Never labels that overlap.
+AxisTicks ticks_that_fit(const AxisRange& range, bool log, const AxisRoom& room);
+
 /// "⁻¹³" for -13: exponents written the way a printed page writes them.
 std::string superscript(int n);
 

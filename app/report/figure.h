@@ -21,6 +21,9 @@ struct Series {
   std::vector<double> x, y;
   Mark mark = Mark::line;
   int colour = 0;  ///< index into the palette, so the same quantity keeps its colour
+  /// A colour given instead ("#rrggbb"), with its opacity: an app plot's line as on screen.
+  std::string rgb{};
+  double opacity = 1;
   bool dashed = false;
   bool thin = false;  ///< a guide line (e.g. a residual's connecting line) drawn lighter
 };
@@ -34,6 +37,19 @@ struct Panel {
   std::string note{};         ///< a short line drawn above the panel, at its left
 };
 
+/// The colours a figure is drawn in besides its series: the defaults print black on white;
+/// an app plot saved as SVG takes its theme's (ui/plots/plot_figure.h), so that it looks as on
+/// screen.
+struct Ink {
+  std::string background = "white";
+  std::string grid = "#e8e8e8";
+  std::string frame = "#333333";       ///< the plot's frame and its ticks
+  std::string zero_line = "#555555";
+  std::string text = "#222222";        ///< title, tick labels, axis titles
+  std::string dim_text = "#555555";    ///< subtitle and notes
+  std::string legend_border = "#bbbbbb";
+};
+
 struct Figure {
   std::string title;
   std::string subtitle;  ///< e.g. the preset's name, drawn smaller under the title
@@ -41,6 +57,7 @@ struct Figure {
   /// All panels share the x axis: one range, tick labels and axis label only at the bottom.
   bool shared_x = false;
   double width = 760;  ///< pixels; the height follows from the panels
+  Ink ink{};
 };
 
 /// A figure and the file stem it is saved under.

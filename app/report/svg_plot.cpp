@@ -110,8 +110,18 @@ std::string axis_title(const Axis& axis, const std::string& scale_suffix) {
   return in_brackets.empty() ? axis.label : axis.label + " (" + in_brackets + ")";
 }
 
+/// The series' own colour if it has one, else the palette's, as SVG attributes' values.
+std::string colour_of(const Series& s) { return s.rgb.empty() ? colour_of(s.colour) : s.rgb; }
+/// An opacity below 1 as an SVG attribute, else nothing.
+std::string opacity_attribute(const char* attribute, double opacity) {
+  if (opacity >= 1) return "";
+  char buffer[48];
+  std::snprintf(buffer, sizeof buffer, " %s=\"%.2f\"", attribute, opacity);
+  return buffer;
+}
+
 void draw_series(std::ostringstream& svg, const Series& s, const PlotArea& area) {
-  const char* colour = colour_of(s.colour);
+  const std::string colour = colour_of(s);
   const bool lines = s.mark != Mark::points;
   // Markers on a long line series would only blur it.
   const bool points =
@@ -130,12 +140,12 @@ void draw_series(std::ostringstream& svg, const Series& s, const PlotArea& area)
       if (run.empty()) continue;
       svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\""
           << (s.thin ? "1" : "1.8") << "\" stroke-linejoin=\"round\""
-          << (s.thin ? " stroke-opacity=\"0.55\"" : "")
+          << opacity_attribute("stroke-opacity", (s.thin ? 0.55 : 1) * s.opacity)
           << (s.dashed ? " stroke-dasharray=\"7 4\"" : "") << " points=\"" << run << "\"/>\n";
     }
   }
   if (points) {
-    svg << "<g fill=\"" << colour << "\">";
+    svg << "<g fill=\"" << colour << "\"" << opacity_attribute("fill-opacity", s.opacity) << ">";
     for (std::size_t i = 0; i < s.x.size(); ++i)
       if (usable(s.x[i], area.xlog) && usable(s.y[i], area.ylog))
         svg << "<circle cx=\"" << px(area.x(s.x[i])) << "\" cy=\"" << px(area.y(s.y[i]))
@@ -145,7 +155,8 @@ void draw_series(std::ostringstream& svg, const Series& s, const PlotArea& area)
 }
 
 /// The corner of the panel whose legend box would cover the fewest drawn points.
-void place_legend(std::ostringstream& svg, const Panel& panel, const PlotArea& area) {
+void place_legend(std::ostringstream& svg, const Panel& panel, const PlotArea& area,
+                  const Ink& ink) {
   std::vector<const Series*> entries;
   double text_width = 0;
   for (const Series& s : panel.series)
@@ -192,26 +203,27 @@ void place_legend(std::ostringstream& svg, const Panel& panel, const PlotArea& a
   const Corner at = corners[best];
   svg << "<rect x=\"" << px(at.x) << "\" y=\"" << px(at.y) << "\" width=\"" << px(w)
       << "\" height=\"" << px(h)
-      << "\" fill=\"white\" fill-opacity=\"0.88\" stroke=\"#bbbbbb\" rx=\"3\"/>\n";
+      << "\" fill=\"" << ink.background << "\" fill-opacity=\"0.88\" stroke=\""
+      << ink.legend_border << "\" rx=\"3\"/>\n";
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const Series& s = *entries[i];
     const double row = at.y + kLegendPad + kLegendRow * (double(i) + 0.5) - 2;
     const double x0 = at.x + kLegendPad, x1 = x0 + kLegendSample;
     if (s.mark != Mark::points)
       svg << "<line x1=\"" << px(x0) << "\" y1=\"" << px(row) << "\" x2=\"" << px(x1) << "\" y2=\""
-          << px(row) << "\" stroke=\"" << colour_of(s.colour) << "\" stroke-width=\""
+          << px(row) << "\" stroke=\"" << colour_of(s) << "\" stroke-width=\""
           << (s.thin ? "1" : "1.8") << "\"" << (s.dashed ? " stroke-dasharray=\"7 4\"" : "")
           << "/>";
     if (s.mark != Mark::line)
       svg << "<circle cx=\"" << px(0.5 * (x0 + x1)) << "\" cy=\"" << px(row) << "\" r=\"3\" fill=\""
-          << colour_of(s.colour) << "\"/>";
-    svg << "<text x=\"" << px(x1 + kLegendPad) << "\" y=\"" << px(row + 4) << "\" font-size=\"12\">"
-        << escaped(s.name) << "</text>\n";
+          << colour_of(s) << "\"/>";
+    svg << "<text x=\"" << px(x1 + kLegendPad) << "\" y=\"" << px(row + 4) << "\" font-size=\"12\" fill=\""
+        << ink.text << "\">" << escaped(s.name) << "</text>\n";
   }
 }
 
 void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& area, bool x_labels,
-                int index) {
+                int index, const Ink& ink) {
   const plotting::AxisTicks xt = plotting::ticks_for(area.xr, area.xlog),
                             yt = plotting::ticks_for(area.yr, area.ylog);
   const std::string clip = "plot" + std::to_string(index);
@@ -220,7 +232,7 @@ void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& are
       << "\"/></clipPath>\n";
 
   // Grid first, so that data and frame lie on top of it.
-  svg << "<g stroke=\"#e8e8e8\" stroke-width=\"1\">";
+  svg << "<g stroke=\"" << ink.grid << "\" stroke-width=\"1\">";
   for (double v : xt.values)
     svg << "<line x1=\"" << px(area.x(v)) << "\" y1=\"" << px(area.top) << "\" x2=\""
         << px(area.x(v)) << "\" y2=\"" << px(area.top + area.height) << "\"/>";
@@ -231,24 +243,24 @@ void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& are
   if (panel.zero_line && !area.ylog && area.yr.lo < 0 && area.yr.hi > 0)
     svg << "<line x1=\"" << px(area.left) << "\" y1=\"" << px(area.y(0)) << "\" x2=\""
         << px(area.left + area.width) << "\" y2=\"" << px(area.y(0))
-        << "\" stroke=\"#555555\" stroke-width=\"1\" stroke-dasharray=\"3 3\"/>\n";
+        << "\" stroke=\"" << ink.zero_line << "\" stroke-width=\"1\" stroke-dasharray=\"3 3\"/>\n";
 
   svg << "<g clip-path=\"url(#" << clip << ")\">\n";
   for (const Series& s : panel.series) draw_series(svg, s, area);
   svg << "</g>\n";
   svg << "<rect x=\"" << px(area.left) << "\" y=\"" << px(area.top) << "\" width=\""
       << px(area.width) << "\" height=\"" << px(area.height)
-      << "\" fill=\"none\" stroke=\"#333333\"/>\n";
+      << "\" fill=\"none\" stroke=\"" << ink.frame << "\"/>\n";
 
   const double bottom = area.top + area.height;
-  svg << "<g stroke=\"#333333\">";
+  svg << "<g stroke=\"" << ink.frame << "\">";
   for (double v : yt.values)
     svg << "<line x1=\"" << px(area.left - kTickLength) << "\" y1=\"" << px(area.y(v)) << "\" x2=\""
         << px(area.left) << "\" y2=\"" << px(area.y(v)) << "\"/>";
   for (double v : xt.values)
     svg << "<line x1=\"" << px(area.x(v)) << "\" y1=\"" << px(bottom) << "\" x2=\"" << px(area.x(v))
         << "\" y2=\"" << px(bottom + kTickLength) << "\"/>";
-  svg << "</g>\n<g font-size=\"12\" fill=\"#222222\">";
+  svg << "</g>\n<g font-size=\"12\" fill=\"" << ink.text << "\">";
   for (std::size_t i = 0; i < yt.values.size(); ++i)
     svg << "<text x=\"" << px(area.left - kTickLength - 3) << "\" y=\""
         << px(area.y(yt.values[i]) + 4) << "\" text-anchor=\"end\">" << escaped(yt.labels[i])
@@ -261,16 +273,17 @@ void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& are
 
   const double y_mid = area.top + 0.5 * area.height;
   svg << "<text x=\"20\" y=\"" << px(y_mid) << "\" transform=\"rotate(-90 20 " << px(y_mid)
-      << ")\" text-anchor=\"middle\" font-size=\"14\">"
+      << ")\" text-anchor=\"middle\" font-size=\"14\" fill=\"" << ink.text << "\">"
       << escaped(axis_title(panel.y, yt.scale_suffix)) << "</text>\n";
   if (x_labels)
     svg << "<text x=\"" << px(area.left + 0.5 * area.width) << "\" y=\"" << px(bottom + 44)
-        << "\" text-anchor=\"middle\" font-size=\"14\">"
+        << "\" text-anchor=\"middle\" font-size=\"14\" fill=\"" << ink.text << "\">"
         << escaped(axis_title(panel.x, xt.scale_suffix)) << "</text>\n";
   if (!panel.note.empty())
     svg << "<text x=\"" << px(area.left) << "\" y=\"" << px(area.top - 6)
-        << "\" font-size=\"12\" fill=\"#444444\">" << escaped(panel.note) << "</text>\n";
-  place_legend(svg, panel, area);
+        << "\" font-size=\"12\" fill=\"" << ink.dim_text << "\">" << escaped(panel.note)
+        << "</text>\n";
+  place_legend(svg, panel, area, ink);
 }
 
 }  // namespace
@@ -310,15 +323,16 @@ std::string svg_of(const Figure& figure) {
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << px(width) << "\" height=\""
       << px(height) << "\" viewBox=\"0 0 " << px(width) << " " << px(height) << "\" font-family=\""
       << kFont << "\">\n";
-  svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  svg << "<text x=\"" << px(width / 2) << "\" y=\"28\" text-anchor=\"middle\" font-size=\"17\">"
+  svg << "<rect width=\"100%\" height=\"100%\" fill=\"" << figure.ink.background << "\"/>\n";
+  svg << "<text x=\"" << px(width / 2) << "\" y=\"28\" text-anchor=\"middle\" font-size=\"17\" fill=\""
+      << figure.ink.text << "\">"
       << escaped(figure.title) << "</text>\n";
   if (!figure.subtitle.empty())
     svg << "<text x=\"" << px(width / 2) << "\" y=\"48\" text-anchor=\"middle\" font-size=\"13\" "
-        << "fill=\"#555555\">" << escaped(figure.subtitle) << "</text>\n";
+        << "fill=\"" << figure.ink.dim_text << "\">" << escaped(figure.subtitle) << "</text>\n";
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const bool x_labels = !figure.shared_x || i + 1 == figure.panels.size();
-    draw_panel(svg, figure.panels[i], areas[i], x_labels, int(i));
+    draw_panel(svg, figure.panels[i], areas[i], x_labels, int(i), figure.ink);
   }
   svg << "</svg>\n";
   return svg.str();

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cfloat>
 
+#include "ui/input/keyboard_regions.h"
 #include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/fonts.h"
 #include "ui/platform/gl_api.h"
@@ -117,6 +118,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   // would toggle Play twice; the UI's clock is capped so a press repeats only when held.
   ImGui::GetIO().DeltaTime = std::min(ImGui::GetIO().DeltaTime, kMaxUiFrameSeconds);
   apply_touch(*f.app);
+  keep_ctrl_tab_from_imgui();  // the browser's key: regions are F6 (keyboard_regions.h)
   ParallelDom& dom = parallel_dom();
   dom.apply_requests();  // what the page's mirrored elements asked since the last frame
   dom.begin_frame();

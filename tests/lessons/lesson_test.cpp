@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "lessons/lesson_file.h"
 
@@ -70,6 +71,18 @@ TEST_CASE("a valid lesson reads into its steps, scenes and tasks") {
   CHECK(l.steps[3].task->tolerance == 0.02);  // the default
 }
 
+TEST_CASE("a step can open every plot tab by name, the Projects tab too (lesson 7 needs it)") {
+  for (const auto& [name, plot] : {std::pair{"particle", LessonPlot::particle},
+                                   std::pair{"projects", LessonPlot::projects}}) {
+    ojson lesson = base_lesson();
+    lesson["steps"][0]["show"]["plot"] = name;
+    const LessonParse parsed = parse_lesson(lesson.dump(), test_lookup);
+    REQUIRE_MESSAGE(parsed.lesson, parsed.error);
+    CHECK(parsed.lesson->steps[0].plot == plot);
+    CHECK(name_of(plot) == name);
+  }
+}
+
 TEST_CASE("every rule of the lesson format is refused with the field and the rule") {
   struct Case {
     const char* pointer;  // JSON pointer to set, or remove when value is empty
@@ -97,7 +110,8 @@ TEST_CASE("every rule of the lesson format is refused with the field and the rul
       {"/steps/0/preset", "{\"J\": 1, \"particles\": [{\"m\": -1, \"r\": [0,0,0], \"v\": [0,0,0]}]}",
        "steps[0].preset.particles[0].m: must be > 0"},
       {"/steps/0/show/plot", "\"pv\"",
-       "steps[0].show.plot: must be one of \"wall\", \"energy\", \"expansion\", \"compare\" (not \"pv\")"},
+       "steps[0].show.plot: must be one of \"wall\", \"energy\", \"expansion\", \"compare\", "
+       "\"particle\", \"projects\" (not \"pv\")"},
       {"/steps/0/show/select", "2", "steps[0].show.select: must be below the preset's 2 particles"},
       {"/steps/0/show/select", "-1", "steps[0].show.select: must be a whole number >= 0"},
       {"/steps/0/show/overlay", "\"springs-cm\"",

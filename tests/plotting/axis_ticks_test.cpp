@@ -417,3 +417,67 @@ TEST_CASE("axis_range as the app's plots use it: zero, fixed ends and one value 
   check_range(axis_range(1, 1000, live(OneValue::at_start, false, true)), std::pow(10.0, -0.15),
               std::pow(10.0, 3.15));
 }
+
+namespace {
+
+/// A label's extent along the axis in pixels: a 13 px line on a y axis, 7 px a character on an
+/// x axis (UTF-8 continuation bytes take no room).
+double line_height(const std::string&, const void*) { return 13; }
+double text_width(const std::string& label, const void*) {
+  double glyphs = 0;
+  for (char c : label) glyphs += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return 7 * glyphs;
+}
+
+/// The pixel of v on an axis `length` long over range: an independent linear or log map.
+double pixel_of(double v, const AxisRange& r, bool log, double length) {
+  if (log) return length * std::log(v / r.lo) / std::log(r.hi / r.lo);
+  return length * (v - r.lo) / (r.hi - r.lo);
+}
+
+}  // namespace
+
+TEST_CASE("ticks_that_fit: at any plot size the tick labels' boxes never overlap") {
+  struct Axis {
+    AxisRange range;
+    bool log;
+  };
+  const Axis axes[] = {{{-0.031, 0.047}, false}, {{0, 190}, false},    {{0, 3.2}, false},
+                       {{1e-3, 1e3}, true},      {{0.4, 0.9}, true},   {{2.0, 3.1}, true},
+                       {{-1e-14, 3e-14}, false}, {{10, 1e6}, true},    {{12.5, 12.75}, false}};
+  for (const Axis& a : axes)
+    for (bool vertical : {true, false})
+      for (double length = 4; length <= 900; length *= 1.17) {
+        AxisRoom room;
+        room.length = length;
+        room.label_length = vertical ? line_height : text_width;
+        room.gap = vertical ? 3 : 10;
+        const AxisTicks t = ticks_that_fit(a.range, a.log, room);
+        CAPTURE(a.range.lo);
+        CAPTURE(a.range.hi);
+        CAPTURE(vertical);
+        CAPTURE(length);
+        REQUIRE(t.values.size() == t.labels.size());
+        for (std::size_t i = 0; i + 1 < t.values.size(); ++i) {
+          const double span = pixel_of(t.values[i + 1], a.range, a.log, length) -
+                              pixel_of(t.values[i], a.range, a.log, length);
+          const double needed = 0.5 * (room.label_length(t.labels[i], nullptr) +
+                                       room.label_length(t.labels[i + 1], nullptr));
+          CHECK(span >= needed + room.gap - 1e-9);
+        }
+        // Room for four labels and their gaps: at least two, so the axis tells its scale.
+        if (vertical && length >= 4 * (13 + 3)) CHECK(t.values.size() >= 2);
+      }
+}
+
+TEST_CASE("ticks_that_fit: with room to spare it gives what ticks_for gives for that room") {
+  AxisRoom room;
+  room.length = 400;
+  room.label_length = line_height;
+  room.gap = 3;
+  const AxisTicks t = ticks_that_fit({0, 10}, false, room);
+  // Each label is 16 px with its gap: 400 px hold many; the 1-2-5 rule still steps in 1s or 0.5s.
+  CHECK(t.values.size() >= 6);
+  CHECK(t.values.front() == 0);
+  CHECK(t.values.back() == 10);
+}

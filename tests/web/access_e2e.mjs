@@ -23,19 +23,24 @@ async function main(url) {
     await page.waitForFunction((target) => window.swarmlab.frames() >= target, start + n, { timeout: 15000 });
   };
   const tap = async (key) => { await page.keyboard.down(key); await framesPass(3); await page.keyboard.up(key); await framesPass(3); };
-  // Ctrl+Tab switches panels as Alt+Tab switches programs: Tab pressed k times with Ctrl held
-  // goes k panels down the list of recently used ones. Tries k = 1, 2, ... until `wanted` has
-  // the keyboard focus.
-  const focusPanel = async (wanted) => {
-    let focus = null;
-    for (let k = 1; k <= 6; ++k) {
-      await page.keyboard.down('Control'); await framesPass(2);
-      for (let i = 0; i < k; ++i) await tap('Tab');
-      await page.keyboard.up('Control'); await framesPass(3);
-      focus = (await appState()).keyboard_focus;
+  // F6 moves the keyboard to the next region as in desktop apps (Shift+F6 back); pressed until
+  // `wanted` has the keyboard focus, at most once round all regions. Returns where it went.
+  const press = async (chord) => {
+    const keys = chord.split('+');
+    const key = keys.pop();
+    for (const m of keys) await page.keyboard.down(m);
+    await tap(key);
+    for (const m of keys.reverse()) await page.keyboard.up(m);
+  };
+  const focusRegion = async (wanted, chord = 'F6') => {
+    const visited = [];
+    for (let k = 0; k < 10; ++k) {
+      await press(chord);
+      const focus = (await appState()).keyboard_focus;
+      visited.push(focus);
       if (wanted.includes(focus)) break;
     }
-    return focus;
+    return visited;
   };
 
   // 1. What the page says at the start: the live region and the title.
@@ -51,11 +56,28 @@ async function main(url) {
   check('the page title says what runs', title === `Swarm Lab \u2014 ${DEFAULT_PRESET}, playing`, title);
 
   // 2. Keyboard only: the page has focus (as after a Tab into it) but no mouse event reaches
-  // the app. Ctrl+Tab walks the panels; in the transport bar the first control is Play/Pause,
-  // and Space presses it.
+  // the app. F6 walks the regions in reading order; in the transport bar the first control is
+  // Play/Pause, and Space presses it.
   await page.focus('#canvas');
-  const focus = await focusPanel(['transport']);
-  check('Ctrl+Tab reaches the transport bar', focus === 'transport', `keyboard focus: ${focus}`);
+  // The wide layout's regions in reading order (null: the 3D view), round and round.
+  const order = ['menu', 'Controls', 'Transport', null, 'Read-outs', 'Timeline', 'Plots'];
+  const walk = await focusRegion(['Transport']);
+  const start = order.indexOf(walk[0]);
+  check('F6 walks the regions in reading order to the transport bar',
+        start >= 0 && walk.at(-1) === 'Transport' && walk.every((r, i) => r === order[(start + i) % order.length]),
+        `keyboard focus: ${walk.map(String).join(' > ')}`);
+  const inView = await focusRegion([null]);
+  check('F6 from the transport bar goes to the 3D view (no panel has the keys)',
+        inView.length === 1 && inView[0] === null, `keyboard focus: ${inView.map(String).join(' > ')}`);
+  const back = await focusRegion(['Transport'], 'Shift+F6');
+  check('Shift+F6 goes back to the transport bar', back.join(' > ') === 'Transport', `keyboard focus: ${back.map(String).join(' > ')}`);
+  const ctrlF6 = await focusRegion([null], 'Control+F6');
+  check('Ctrl+F6 moves on as F6 does', ctrlF6.length === 1 && ctrlF6[0] === null, `keyboard focus: ${ctrlF6.map(String).join(' > ')}`);
+  await focusRegion(['Transport'], 'Shift+F6');
+  // Ctrl+Tab is the browser's (its tabs): the app's keyboard focus stays where it is.
+  await press('Control+Tab');
+  check('Ctrl+Tab does not move the app\'s keyboard focus', (await appState()).keyboard_focus === 'Transport',
+        `keyboard focus: ${(await appState()).keyboard_focus}`);
   await tap('Space');
   await framesPass(3);
   let s = await appState();
@@ -67,18 +89,18 @@ async function main(url) {
   s = await appState();
   check('Space again plays', s.playing === true, `playing ${s.playing}`);
 
-  // A preset change through the menu bar: Ctrl+Tab to it, Space opens Scenario, Down moves in
-  // its list, Space opens the preset focused.
+  // A preset change through the menu bar: F6 to it, Space opens Scenario, Down moves in its
+  // list, Space opens the preset focused.
   const shipped = await api(() => window.swarmlab.shipped());
   const before = (await appState()).name;
-  const menuFocus = await focusPanel(['menu', 'MainMenuBar']);
+  const menuFocus = (await focusRegion(['menu'])).pop();
   await tap('Space');
   await framesPass(3);
   await tap('ArrowDown');
   await tap('Space');
   await framesPass(5);
   s = await appState();
-  check('Ctrl+Tab to the menu bar, Space, Down, Space opens another shipped preset',
+  check('F6 to the menu bar, Space, Down, Space opens another shipped preset',
         s.name !== before && shipped.some((p) => p.name === s.name),
         `focus: ${menuFocus}; "${before}" -> "${s.name}"`);
   await framesPass(3);

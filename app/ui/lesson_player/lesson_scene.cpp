@@ -9,6 +9,8 @@ PlotTab plot_tab(LessonPlot plot) {
     case LessonPlot::energy: return PlotTab::energy;
     case LessonPlot::expansion: return PlotTab::expansion;
     case LessonPlot::compare: return PlotTab::compare;
+    case LessonPlot::particle: return PlotTab::particle;
+    case LessonPlot::projects: return PlotTab::projects;
   }
   return PlotTab::wall;
 }

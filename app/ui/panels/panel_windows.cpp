@@ -75,7 +75,7 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
   if (l.drawer.shown()) {
     // Compact: one drawer beside or under the view, its parts as tabs, each scrolling alone.
     place(l.drawer);
-    if (ImGui::Begin("##drawer", nullptr, panel | ImGuiWindowFlags_NoTitleBar)) {
+    if (ImGui::Begin("Panels###drawer", nullptr, panel | ImGuiWindowFlags_NoTitleBar)) {
       if (ImGui::BeginTabBar("drawer", ImGuiTabBarFlags_FittingPolicyScroll)) {
         auto tab = [&](const char* name, bool shown, void (*body)(AppState&)) {
           if (!shown || !ImGui::BeginTabItem(name)) return;

@@ -73,7 +73,10 @@ void wall_rows(const swarm::WallEstimate& w) {
   if (w.mean.hits > 0)
     format_estimate(value, sizeof value, w.mean.T, w.T_stderr);
   else
-    std::snprintf(value, sizeof value, "no wall hits yet");
+    // True whether none has hit yet or the swarm has drawn in from the wall since ("yet" was
+    // read after a shrinking swarm's last hit long ago).
+    std::snprintf(value, sizeof value, "no wall hit in the last %.4g: the swarm stays inside",
+                  w.window);
   row("T", value,
       (std::string("T = half the mean kinetic energy of the particles hitting the wall "
                    "(k_B = 1)") + window).c_str());

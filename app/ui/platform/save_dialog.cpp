@@ -4,6 +4,7 @@
 #include <imgui_stdlib.h>
 
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 #include "report/run_csv.h"
@@ -83,8 +84,26 @@ void request_save_preset(AppState& state) {
 }
 
 std::string request_samples_csv(AppState& state) {
-  return request_csv(state, "the samples as CSV (the columns of swarmlab run --csv)",
-                     "-samples.csv", report::samples_csv(state.run->primary().samples()));
+  // The samples are those of the run as it is now: after a seek back they end at the present
+  // time, not at the furthest time reached. The file's name and the dialog say which range it
+  // holds rather than leave a shorter run to be taken for the whole.
+  const double now = state.run->time();
+  const double reached = double(state.run->timeline().reached()) * state.preset.dt;
+  if (state.run->step() >= state.run->timeline().reached())
+    return request_csv(state, "the samples as CSV (the columns of swarmlab run --csv)",
+                       "-samples.csv", report::samples_csv(state.run->primary().samples()));
+  char what[200], suffix[64];
+  std::snprintf(what, sizeof what,
+                "the samples from t = 0 to t = %.4g, the time shown, as CSV (the run reached "
+                "t = %.4g: play on or press End to export all of it)",
+                now, reached);
+  std::snprintf(suffix, sizeof suffix, "-samples-t0-to-t%.4g.csv", now);
+  const std::string name =
+      request_csv(state, what, suffix, report::samples_csv(state.run->primary().samples()));
+  char note[160];
+  std::snprintf(note, sizeof note, " (t = 0 to %.4g of the %.4g reached)", now, reached);
+  if (!state.status_is_error && state.status.rfind("Saved ", 0) == 0) state.status += note;
+  return name;
 }
 
 std::string request_stages_csv(AppState& state) {

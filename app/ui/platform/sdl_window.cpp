@@ -56,7 +56,7 @@ SdlWindow open_window(const char* title, int width, int height, std::string& err
   // Panel sizes follow the window; nothing is worth keeping in an imgui.ini.
   ImGui::GetIO().IniFilename = nullptr;
   // Every control reachable from the keyboard: arrows move, Space activates, Enter types into
-  // a field, Escape backs out, Ctrl+Tab goes to the next window.
+  // a field, Escape backs out; F6 goes to the next region (input/keyboard_regions.h).
   ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
   apply_ui_scale(1.0f);
   ImGui_ImplSDL2_InitForOpenGL(w.window, w.context);

@@ -1,99 +1,68 @@
 #include "ui/plots/plot_export_menu.h"
 
-#include <algorithm>
-#include <cmath>
+#include <iterator>
 #include <utility>
 
 #include "report/figure_csv.h"
 #include "report/svg_plot.h"
+#include "ui/classroom/theme_style.h"
+#include "ui/plots/plot_figure.h"
 
 namespace swarmlab {
 namespace {
 
-std::optional<PlotExport> pending;  // asked for in the menu, not yet taken by the app
+std::optional<PlotExport> pending;  // asked for by a button or the menu, not yet taken by the app
 
-/// "P (force/area)" -> label "P", unit "force/area", as the report's axes carry them.
-report::Axis axis_of(const PlotAxis& a, bool include_zero) {
-  report::Axis axis;
-  axis.log = a.log;
-  axis.include_zero = include_zero && !a.log;
-  const std::size_t open = a.label.rfind(" (");
-  if (open != std::string::npos && a.label.back() == ')') {
-    axis.label = a.label.substr(0, open);
-    axis.unit = a.label.substr(open + 2, a.label.size() - open - 3);
-  } else {
-    axis.label = a.label;
-  }
-  return axis;
+void request_plot_export(const PlotSpec& spec, PlotExport::Kind kind, ImVec2 min, ImVec2 max) {
+  PlotExport e;
+  e.kind = kind;
+  e.title = spec.title;
+  e.min = min;
+  e.max = max;
+  // SVG and CSV from the plot's own numbers, in the colours on screen; PNG is read from the
+  // screen (plot_export.h).
+  if (kind == PlotExport::Kind::svg) e.content = report::svg_of(figure_of(spec, current_palette()));
+  if (kind == PlotExport::Kind::csv) e.content = report::csv_of(figure_of(spec, current_palette()));
+  pending = e;
 }
 
 }  // namespace
 
-report::Figure figure_of(const PlotSpec& spec) {
-  report::Figure figure;
-  figure.title = spec.title;
-  report::Panel panel;
-  panel.x = axis_of(spec.x, false);
-  panel.y = axis_of(spec.y, spec.y_from_zero);
-  double x_lo = INFINITY, x_hi = -INFINITY;
-  int colour = 0;
-  for (const PlotSeries& s : spec.series) {
-    report::Series out;
-    out.name = s.label;
-    out.mark = s.points ? report::Mark::points : report::Mark::line;
-    out.colour = colour++;
-    const std::size_t n = std::min(s.x->size(), s.y->size());
-    for (std::size_t i = 0; i < n; ++i) {
-      const double x = (*s.x)[i];
-      // The plot's scroll window: the figure shows what the plot shows.
-      if ((spec.x.min && x < *spec.x.min) || (spec.x.max && x > *spec.x.max)) continue;
-      out.x.push_back(x);
-      out.y.push_back((*s.y)[i]);
-      if (std::isfinite(x) && (!spec.x.log || x > 0))
-        x_lo = std::min(x_lo, x), x_hi = std::max(x_hi, x);
-    }
-    panel.series.push_back(std::move(out));
+void plot_export_buttons(const PlotSpec& spec, ImVec2 min, ImVec2 max) {
+  // Labelled buttons, so that touch, the keyboard and a screen reader reach them as any other
+  // (the right-click menu was the only way once, and a finger has no right button).
+  const struct {
+    const char* label;
+    PlotExport::Kind kind;
+    const char* tip;
+  } kButtons[] = {
+      {"Export CSV", PlotExport::Kind::csv, "Export CSV: this plot's numbers (panel,series,x,y)"},
+      {"Export PNG", PlotExport::Kind::png, "Export PNG: this plot as on screen"},
+      {"Export SVG", PlotExport::Kind::svg, "Export SVG: this plot as a drawing, in its colours"},
+  };
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float width = 0;
+  for (const auto& b : kButtons)
+    width += ImGui::CalcTextSize(b.label).x + 2 * style.FramePadding.x + style.ItemSpacing.x;
+  // Right-aligned under the plot, where a saved file is looked for; they wrap on a narrow one.
+  const float room = ImGui::GetContentRegionAvail().x;
+  if (width < room) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + room - width + style.ItemSpacing.x);
+  for (std::size_t i = 0; i < std::size(kButtons); ++i) {
+    if (i > 0 && ImGui::GetContentRegionAvail().x > ImGui::CalcTextSize(kButtons[i].label).x +
+                                                         2 * style.FramePadding.x + style.ItemSpacing.x)
+      ImGui::SameLine();
+    if (ImGui::Button(kButtons[i].label)) request_plot_export(spec, kButtons[i].kind, min, max);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kButtons[i].tip);
   }
-  for (const PowerLawLine& f : spec.fits) {
-    if (!(x_lo < x_hi)) break;
-    report::Series line;
-    line.name = f.label;
-    line.dashed = true;
-    line.colour = colour++;
-    for (int k = 0; k <= 64; ++k) {
-      const double u = double(k) / 64;
-      const double x = spec.x.log ? x_lo * std::pow(x_hi / x_lo, u) : x_lo + u * (x_hi - x_lo);
-      line.x.push_back(x);
-      line.y.push_back(f.prefactor * std::pow(x, f.exponent));
-    }
-    panel.series.push_back(std::move(line));
-  }
-  figure.panels.push_back(std::move(panel));
-  return figure;
 }
 
 void plot_export_menu(const PlotSpec& spec, ImVec2 min, ImVec2 max, bool open) {
   if (open) ImGui::OpenPopup("plot menu");
   if (!ImGui::BeginPopup("plot menu")) return;
   ImGui::TextDisabled("%s", spec.title.c_str());
-  PlotExport e;
-  e.title = spec.title;
-  e.min = min;
-  e.max = max;
-  if (ImGui::MenuItem("Save as SVG...")) {
-    e.kind = PlotExport::Kind::svg;
-    e.content = report::svg_of(figure_of(spec));
-    pending = e;
-  }
-  if (ImGui::MenuItem("Save as PNG...")) {
-    e.kind = PlotExport::Kind::png;  // read from the screen once the menu is gone
-    pending = e;
-  }
-  if (ImGui::MenuItem("Save the numbers as CSV...")) {
-    e.kind = PlotExport::Kind::csv;
-    e.content = report::csv_of(figure_of(spec));
-    pending = e;
-  }
+  if (ImGui::MenuItem("Export SVG...")) request_plot_export(spec, PlotExport::Kind::svg, min, max);
+  if (ImGui::MenuItem("Export PNG...")) request_plot_export(spec, PlotExport::Kind::png, min, max);
+  if (ImGui::MenuItem("Export CSV...")) request_plot_export(spec, PlotExport::Kind::csv, min, max);
   ImGui::EndPopup();
 }
 

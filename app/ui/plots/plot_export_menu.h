@@ -1,15 +1,15 @@
 #pragma once
-// A plot's context menu (right click): save it as SVG (drawn by the report's svg_plot from the
-// plot's own data), as PNG (the pixels on screen), or its numbers as CSV (the report's
-// panel,series,x,y). The menu knows no AppState: the request waits here until the app takes it
-// (plot_export.h) and opens the save dialog.
+// A plot's export: the buttons under it (Export CSV, Export PNG, Export SVG) and the same
+// three in its right-click menu. SVG is drawn by the report's svg_plot from the plot's own data
+// in its screen colours (plot_figure.h), PNG is the pixels on screen, CSV its numbers (the
+// report's panel,series,x,y). Neither knows the AppState: the request waits here until the app
+// takes it (plot_export.h) and opens the save dialog.
 
 #include <imgui.h>
 
 #include <optional>
 #include <string>
 
-#include "report/figure.h"
 #include "ui/plots/plot_spec.h"
 
 namespace swarmlab {
@@ -21,8 +21,8 @@ struct PlotExport {
   ImVec2 min, max;      ///< the plot's rectangle on screen (logical pixels), for PNG
 };
 
-/// The report figure of a plot: one panel, its series and fit lines, its axes.
-report::Figure figure_of(const PlotSpec& spec);
+/// The export buttons of the plot drawn over [min, max], on the line under it.
+void plot_export_buttons(const PlotSpec& spec, ImVec2 min, ImVec2 max);
 
 /// The menu of the plot drawn over [min, max]; open: it was right-clicked this frame.
 void plot_export_menu(const PlotSpec& spec, ImVec2 min, ImVec2 max, bool open);

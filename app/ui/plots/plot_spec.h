@@ -1,10 +1,9 @@
 #pragma once
-// What a plot shows: its title, axes, series and fit lines, as plain data. The widget draws it
-// (plot_widget.h) and its right-click menu saves it (plot_export_menu.h) without needing the
-// widget.
+// What a plot shows: its title, axes, series and fit lines, as plain data (no ImGui). The
+// widget draws it (plot_widget.h), its export buttons save it (plot_export_menu.h) and
+// plot_figure.h makes the SVG's figure of it, each from the same colours.
 
-#include <imgui.h>
-
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,7 +14,7 @@ struct PlotSeries {
   std::string label;
   const std::vector<double>* x = nullptr;
   const std::vector<double>* y = nullptr;
-  ImU32 colour = IM_COL32_WHITE;
+  std::uint32_t colour = 0xffffffff;  ///< the palette's Colour::packed() (ImGui's ImU32)
   bool points = false;  ///< markers (stages of an expansion) instead of a line
   float thickness = 2.0f;
 };
@@ -24,7 +23,7 @@ struct PlotSeries {
 struct PowerLawLine {
   std::string label;
   double prefactor = 1, exponent = 0;
-  ImU32 colour = IM_COL32_WHITE;
+  std::uint32_t colour = 0xffffffff;  ///< the palette's Colour::packed() (ImGui's ImU32)
 };
 
 struct PlotAxis {

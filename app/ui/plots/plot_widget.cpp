@@ -11,6 +11,9 @@
 namespace swarmlab {
 namespace {
 
+/// The plot's frame is never shorter than this many lines of text (four tick labels).
+constexpr float kMinFrameLines = 5.0f;
+
 /// Maps data values to pixels along one axis, linearly or logarithmically.
 struct Scale {
   double lo = 0, hi = 1;  // in transformed units (log10 when log)
@@ -77,7 +80,7 @@ plotting::RangeOptions range_options(const PlotAxis& axis, bool from_zero,
 
 }  // namespace
 
-void draw_plot(const char* id, const PlotSpec& spec, float height) {
+bool draw_plot(const char* id, const PlotSpec& spec, float height) {
   ImGui::PushID(id);
   // The theme's colours (access/theme_palette.h, held to WCAG AA by its test).
   const Palette& colours = current_palette();
@@ -87,10 +90,6 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   const float font = ImGui::GetFontSize();
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float width = std::max(ImGui::GetContentRegionAvail().x, 10 * font);
-  ImGui::InvisibleButton("plot", ImVec2(width, height));
-  const bool hovered = ImGui::IsItemHovered();
-  const bool right_clicked = ImGui::IsItemClicked(ImGuiMouseButton_Right);
-  ImDrawList* draw = ImGui::GetWindowDrawList();
 
   // The legend goes in rows between the title and the frame, never over the data.
   struct LegendEntry {
@@ -122,7 +121,16 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
   const float legend_top = origin.y + (y_label_below ? 2.5f : 1.3f) * font;
   const float left = origin.x + 4.2f * font, right = origin.x + width - 0.6f * font;
   const float top = legend_top + 1.2f * font * float(legend_rows) + 0.4f * font;
+  // The height asked for holds the plot and its line of export buttons. The frame never gets
+  // less than kMinFrameLines lines of text: a panel too short for every plot scrolls (a
+  // residuals plot once squashed to nothing on a tablet).
+  const float buttons = ImGui::GetFrameHeightWithSpacing();
+  height = std::max(height - buttons, (top - origin.y) + kMinFrameLines * font + 2.4f * font);
   const float bottom = origin.y + height - 2.4f * font;
+  ImGui::InvisibleButton("plot", ImVec2(width, height));
+  const bool hovered = ImGui::IsItemHovered();
+  const bool right_clicked = ImGui::IsItemClicked(ImGuiMouseButton_Right);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(origin, ImVec2(origin.x + width, origin.y + height), kPlotBackground, 4.0f);
   draw->AddText(ImVec2(origin.x + 0.5f * font, origin.y + 0.2f * font), kText, spec.title.c_str());
 
@@ -137,16 +145,23 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
       lo, hi, range_options(spec.y, spec.y_from_zero, plotting::OneValue::centred)));
 
   // Grid, ticks and their labels: the figures' tick rule, with as many ticks as the labels
-  // leave room for.
+  // leave room for at this size and font, their boxes never overlapping.
   // An empty plot has no range to number: its axes stay blank (no +-1e-9 ticks).
+  plotting::AxisRoom x_room, y_room;
+  x_room.length = right - left;
+  x_room.label_length = [](const std::string& label, const void*) {
+    return double(ImGui::CalcTextSize(label.c_str()).x);
+  };
+  x_room.gap = 1.0 * font;
+  y_room.length = bottom - top;
+  y_room.label_length = [](const std::string& label, const void*) {
+    return double(ImGui::CalcTextSize(label.c_str()).y);
+  };
+  y_room.gap = 0.3 * font;
   const plotting::AxisTicks xt =
-      has_data ? plotting::ticks_for(xs.range(), xs.log,
-                                     std::max(2, int((right - left) / (5.5f * font))))
-               : plotting::AxisTicks{};
+      has_data ? plotting::ticks_that_fit(xs.range(), xs.log, x_room) : plotting::AxisTicks{};
   const plotting::AxisTicks yt =
-      has_data ? plotting::ticks_for(ys.range(), ys.log,
-                                     std::max(2, int((bottom - top) / (2.2f * font))))
-               : plotting::AxisTicks{};
+      has_data ? plotting::ticks_that_fit(ys.range(), ys.log, y_room) : plotting::AxisTicks{};
   for (std::size_t i = 0; i < xt.values.size(); ++i) {
     const float px = xs.pixel(xt.values[i]);
     if (px < left - 0.5f || px > right + 0.5f) continue;
@@ -311,8 +326,11 @@ void draw_plot(const char* id, const PlotSpec& spec, float height) {
     }
     ImGui::EndTooltip();
   }
-  plot_export_menu(spec, origin, ImVec2(origin.x + width, origin.y + height), right_clicked);
+  const ImVec2 corner(origin.x + width, origin.y + height);
+  plot_export_menu(spec, origin, corner, right_clicked);
+  plot_export_buttons(spec, origin, corner);
   ImGui::PopID();
+  return hovered;
 }
 
 }  // namespace swarmlab

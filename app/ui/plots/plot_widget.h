@@ -7,7 +7,9 @@
 
 namespace swarmlab {
 
-/// Draws the plot at the cursor, full available width and the given height.
-void draw_plot(const char* id, const PlotSpec& spec, float height);
+/// Draws the plot at the cursor, full available width and the given height, with its export
+/// buttons on a line under it (within that height). A height too small for a readable plot is
+/// raised to the least that is (the panel scrolls). Returns whether the plot is hovered.
+bool draw_plot(const char* id, const PlotSpec& spec, float height);
 
 }  // namespace swarmlab

@@ -21,7 +21,7 @@ namespace {
 const Palette& colours() { return current_palette(); }
 
 /// A method's plot colour, from the core's method table.
-ImU32 colour_of(swarm::Method m) {
+std::uint32_t colour_of(swarm::Method m) {
   const auto& [r, g, b] = swarm::info_of(m).colour;
   return plot_line_colour(Colour{std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 255},
                           current_theme())
@@ -171,7 +171,7 @@ void draw_expansion_tab(AppState& state, float plot_height) {
                   state.preset.expansion->tau);
   auto plot = [&](const char* id, const char* title, const char* x_label,
                   const std::vector<double>& x, const char* y_label, const std::vector<double>& y,
-                  const swarm::PowerLawFit& fit, const char* law, ImU32 colour) {
+                  const swarm::PowerLawFit& fit, const char* law, std::uint32_t colour) {
     PlotSpec s;
     s.title = title;
     s.x = {x_label, log, std::nullopt, std::nullopt};
@@ -184,8 +184,7 @@ void draw_expansion_tab(AppState& state, float plot_height) {
       std::snprintf(label, sizeof label, "%s^%.3f \u00b1 %.3f", law, fit.slope, fit.slope_stderr);
       s.fits.push_back({label, std::exp(fit.intercept), fit.slope, colours().fit.packed()});
     }
-    draw_plot(id, s, plot_height);
-    if (fit.valid && ImGui::IsItemHovered()) {
+    if (draw_plot(id, s, plot_height) && fit.valid) {
       ImGui::BeginTooltip();
       ImGui::Text("ln y = %.4g + (%.4g \u00b1 %.2g) ln x,  R\u00b2 = %.4f over %zu stages",
                   fit.intercept, fit.slope, fit.slope_stderr, fit.r_squared, fit.used.size());

@@ -38,7 +38,7 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
                                  ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
-  if (!ImGui::Begin("##timeline", nullptr, flags)) {
+  if (!ImGui::Begin("Timeline###timeline", nullptr, flags)) {
     ImGui::End();
     return;
   }
