@@ -33,6 +33,13 @@ export const shipped = (file) => JSON.parse(readFileSync(join(root, 'assets/pres
 let server = null, profile = null;
 /** The browser of the running suite (set by runSuite). */
 export let context = null;
+/** Closes the suite's browser (its profile too), keeping the server: a suite may open another. */
+export async function closeBrowser() {
+  if (context) await context.close().catch(() => {});
+  context = null;
+  if (profile) rmSync(profile, { recursive: true, force: true });
+  profile = null;
+}
 export async function cleanup() {
   if (context) await context.close().catch(() => {});
   context = null;
