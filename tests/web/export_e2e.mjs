@@ -72,6 +72,22 @@ async function main(url) {
         lines.slice(1).every((l) => l.split(',').length === lines[0].split(',').length && l.split(',').every((f) => f !== '' && isFinite(Number(f)))),
         `${lines.length - 1} rows`);
 
+  // 5. After a seek back the samples end at the time shown: the file says which range it holds,
+  // and its last row is that time, not the furthest reached.
+  const reached = (await page.evaluate(() => window.swarmlab.state())).t_reached;
+  const shown = await page.evaluate((t) => window.swarmlab.seek(t), reached / 2);
+  const [back, backName] = await Promise.all([
+    page.waitForEvent('download', { timeout: 15_000 }).catch(() => null),
+    page.evaluate(() => window.swarmlab.exportCsv())]);
+  const backRows = back ? readFileSync(await back.path(), 'utf8').split('\n').filter(Boolean) : [];
+  const lastT = backRows.length > 1 ? Number(backRows.at(-1).split(',')[0]) : NaN;
+  check('after a seek back the CSV\'s name says it ends at the time shown',
+        /-samples-t0-to-t[0-9.e+-]+\.csv$/.test(backName) && Math.abs(Number(/-to-t(.*)\.csv$/.exec(backName)[1]) - shown) <= 1e-3 * Math.max(1, shown),
+        `reached ${reached}, shown ${shown}, file "${backName}"`);
+  // Samples come every few steps: the last is at most one sampling interval before it.
+  check('and its rows end at that time, not at the time reached', lastT <= shown * (1 + 1e-9) && lastT >= 0.9 * shown,
+        `last t ${lastT}, shown ${shown}, reached ${reached}`);
+
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
 }
