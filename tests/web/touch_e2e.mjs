@@ -1,10 +1,14 @@
-// Touch and screen layouts of the browser app (issue 12), in headless Chromium with touch
-// emulation: a tap selects a particle, a tap on empty space deselects without turning the
-// camera, one finger orbits, two fingers pinch to zoom and slide the view, a finger drags a
-// panel's content without editing what it started on; swarmlab.set() refuses what it does
-// not know; and at the six classroom screen sizes (and 1280x720 at UI scale 1.5) every panel
-// lies inside the canvas, none over another or over the 3D view, with a screenshot of each in
-// build/web-test/.
+// Touch and screen layouts of the browser app (issues 12 and 21), in headless Chromium with
+// touch emulation and real touch and mouse events: on a phone's first visit a drag on the
+// welcome scrolls it and never turns the camera, a tap on its close button closes it, a tap
+// opens the Lessons menu and one outside closes it; a tap selects a particle, a tap on empty
+// space deselects without turning the camera, one finger orbits, two fingers pinch to zoom
+// and slide the view, a finger drags a panel's content without editing what it started on,
+// also across a stalled frame; the timeline drags by touch at once and a quick mouse drag on
+// it ends under the pointer; a whiteboard's press with no motion before it selects;
+// swarmlab.set() refuses what it does not know; and at the six classroom screen sizes (and
+// 1280x720 at UI scale 1.5) every panel lies inside the canvas, none over another or over the
+// 3D view, with a screenshot of each in build/web-test/.
 // Run through tests/web/run.sh; the last line is "N passed, M failed".
 import * as harness from './harness.mjs';
 
