@@ -12,12 +12,15 @@
 #include "swarm/physics/regime.h"
 #include "swarm/physics/wall.h"
 #include "ui/panels/panels.h"
+#include "ui/parallel_dom/parallel_dom.h"
 
 namespace swarmlab {
 namespace {
 
 /// One name and value: two cells of the table, which wraps to its next row by itself.
 void row(const char* name, const char* value, const char* equation) {
+  // A screen reader reads the row as it is shown (the parallel DOM keeps it up to date).
+  mirror_text(ItemRole::paragraph, std::string(name) + " = " + value);
   ImGui::TableNextColumn();
   ImGui::TextUnformatted(name);
   bool hovered = ImGui::IsItemHovered();
