@@ -24,6 +24,10 @@ std::unique_ptr<ProgressStore> make_web_progress_store();
 /// An automated browser that did not ask for the welcome (?welcome) is not shown it.
 bool web_welcome_unwanted();
 
+/// Gives the lesson panel its Share button: the page's address + the lesson's fragment, copied
+/// and shown (js_lessons.cpp).
+void install_lesson_share(AppState& state);
+
 /// Starts a browser download of the running preset (the same JSON a desktop Save writes) and
 /// says so in the scenario panel. Returns the file name.
 std::string download_preset(AppState& state);

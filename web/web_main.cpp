@@ -39,6 +39,7 @@ int main() {
   frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
                                      swarmlab::shipped_preset_lookup("/presets"));
   if (swarmlab::web_welcome_unwanted()) frontend.app->state().lessons.show_welcome = false;
+  swarmlab::install_lesson_share(frontend.app->state());
   // A share link in the address replaces the default preset before the first frame.
   EM_ASM({
     if (Module.swarmlabStarted) Module.swarmlabStarted();
