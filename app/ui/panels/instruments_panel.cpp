@@ -30,8 +30,10 @@ void draw_stopwatch(AppState& state) {
   swarm::Stopwatch& w = state.instruments.stopwatch;
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
+  // Times in periods would give the period away where a lesson step hides the read-outs.
+  const double k_shown = state.lessons.hides(LessonHidden::readouts) ? 0 : k;
   char text[96];
-  format_time(text, sizeof text, w.elapsed(), k);
+  format_time(text, sizeof text, w.elapsed(), k_shown);
   ImGui::Text("Stopwatch  %s", text);
   help_marker(
       "Measures simulated time: pausing the simulation pauses it, and it runs as fast as the "
@@ -56,7 +58,7 @@ void draw_stopwatch(AppState& state) {
   for (std::size_t i = laps.size() > kLapsShown ? laps.size() - kLapsShown : 0; i < laps.size();
        ++i) {
     const double split = laps[i] - (i > 0 ? laps[i - 1] : 0.0);
-    format_time(text, sizeof text, split, k);
+    format_time(text, sizeof text, split, k_shown);
     ImGui::Text("  lap %zu: %s", i + 1, text);
   }
 }
@@ -87,11 +89,14 @@ void draw_period_meter(AppState& state) {
     case swarm::PeriodStatus::measured:
       ImGui::Text("measured  %.6g  (%d period%s timed)", *m.period(), m.periods_measured(),
                   m.periods_measured() == 1 ? "" : "s");
-      ImGui::Text("formula   %.6g  = 2\u03c0/\u221a(J M)", *m.formula_period());
-      ImGui::Text("difference %+.2e  (relative)", *m.relative_difference());
+      // The formula's value is a read-out: a lesson step that hides them hides it too.
+      if (!state.lessons.hides(LessonHidden::readouts)) {
+        ImGui::Text("formula   %.6g  = 2\u03c0/\u221a(J M)", *m.formula_period());
+        ImGui::Text("difference %+.2e  (relative)", *m.relative_difference());
+      }
       break;
   }
-  if (m.status() == swarm::PeriodStatus::measuring)
+  if (m.status() == swarm::PeriodStatus::measuring && !state.lessons.hides(LessonHidden::readouts))
     ImGui::TextDisabled("formula 2\u03c0/\u221a(J M) = %.6g", *m.formula_period());
   if (m.gaps() > 0)
     ImGui::TextColored(kNote, "%d jump(s) too long to time across (over a quarter period)",
