@@ -208,28 +208,32 @@ async function main(url) {
         `t = ${st5.t}, max seen ${await page.evaluate(() => window.__lessonMaxT)}, playing ${st5.playing}`);
   await api(page, 'set', { speed: 1 });
 
-  // 5e. Enter checks an answer, both Enter keys: click the lesson panel's title, Tab to the
-  // answer field, type, Enter (compact layout, where the Lesson tab holds one field).
-  await page.setViewportSize({ width: 390, height: 844 });
-  await api(page, 'openLesson', 'one-period');
-  await api(page, 'lessonRestart');
-  await api(page, 'lessonNext');
-  await waitFrames(page, 4);
-  const lessonPanel = (await api(page, 'state')).panels.find((p) => p.name === 'Lesson');
+  // 5e. Enter checks an answer, both Enter keys: on a page of its own at a phone's size, click
+  // the lesson panel's title, Tab to the answer field, type, Enter (the compact layout's Lesson
+  // tab holds one field).
+  const keys = await openApp(url, 'enter-key', 10);
+  await keys.page.setViewportSize({ width: 390, height: 844 });
+  await api(keys.page, 'openLesson', 'one-period');
+  await api(keys.page, 'lessonRestart');
+  await api(keys.page, 'lessonNext');
+  await waitFrames(keys.page, 6);
+  const lessonPanel = (await api(keys.page, 'state')).panels.find((p) => p.name === 'Lesson');
   check('the compact layout shows the Lesson tab', !!lessonPanel);
   if (lessonPanel) {
     for (const [key, typed, right] of [['Enter', '4.44', true], ['NumpadEnter', '9', false]]) {
-      await page.mouse.click(lessonPanel.x + 12, lessonPanel.y + 12);
-      await page.keyboard.press('Tab');
-      await page.keyboard.type(typed);
-      await page.keyboard.press(key);
-      await page.waitForFunction(() => (window.swarmlab.lessonState().task || {}).answered, null, { timeout: 5_000, polling: 50 }).catch(() => {});
-      const answered = (await api(page, 'lessonState')).task.answered;
+      await keys.page.mouse.click(lessonPanel.x + 12, lessonPanel.y + 12);
+      await keys.page.keyboard.press('Tab');
+      await keys.page.keyboard.type(typed);
+      await keys.page.keyboard.press(key);
+      await keys.page.waitForFunction(() => (window.swarmlab.lessonState().task || {}).answered, null, { timeout: 5_000, polling: 50 }).catch(() => {});
+      const answered = (await api(keys.page, 'lessonState')).task.answered;
       check(`${key} in the answer field checks it`, answered && answered.correct === right, JSON.stringify(answered));
-      await api(page, 'lessonBack');
-      await api(page, 'lessonNext');  // a fresh step: no marking, an empty field
+      await api(keys.page, 'lessonBack');
+      await api(keys.page, 'lessonNext');  // a fresh step: no marking, an empty field
+      await waitFrames(keys.page, 2);
     }
   }
+  await keys.page.close();
 
   // 5f. The panel and the summary as a student sees them, at a phone's, a tablet's and a
   // laptop's size in both themes (build/web-test/lessons-*.png), and presentation mode at
