@@ -221,10 +221,11 @@ async function main(url) {
   check('the compact layout shows the Lesson tab', !!lessonPanel);
   if (lessonPanel) {
     for (const [key, typed, right] of [['Enter', '4.44', true], ['NumpadEnter', '9', false]]) {
-      await keys.page.mouse.click(lessonPanel.x + 12, lessonPanel.y + 12);
-      await keys.page.keyboard.press('Tab');
-      await keys.page.keyboard.type(typed);
-      await keys.page.keyboard.press(key);
+      // Held as long as a person holds a key or a button (about 60 ms), not within one frame.
+      await keys.page.mouse.click(lessonPanel.x + 12, lessonPanel.y + 12, { delay: 60 });
+      await keys.page.keyboard.press('Tab', { delay: 60 });
+      await keys.page.keyboard.type(typed, { delay: 60 });
+      await keys.page.keyboard.press(key, { delay: 60 });
       await keys.page.waitForFunction(() => (window.swarmlab.lessonState().task || {}).answered, null, { timeout: 5_000, polling: 50 }).catch(() => {});
       const answered = (await api(keys.page, 'lessonState')).task.answered;
       check(`${key} in the answer field checks it`, answered && answered.correct === right, JSON.stringify(answered));
