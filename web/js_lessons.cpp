@@ -1,5 +1,6 @@
 // The C side of the lesson calls of window.swarmlab (lessons, openLesson, lessonState,
-// lessonAnswer, lessonNext, lessonBack in web/swarmlab_api.js).
+// lessonAnswer, lessonNext, lessonBack, lessonLink in web/swarmlab_api.js), the #lesson= link,
+// and the lesson panel's Share button.
 
 #include <emscripten.h>
 
@@ -7,14 +8,30 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
+#include "lessons/lesson_link.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "web_app.h"
+
+// The Share button: the page makes the link from the fragment, copies it and shows it.
+EM_JS(void, js_share_lesson, (const char* fragment),
+      { Module.swarmlab.shareLesson(UTF8ToString(fragment)); });
 
 namespace {
 
 using json = nlohmann::json;
-std::string lessons_text, open_error, state_text, answer_text;  // valid until the next call
+std::string lessons_text, open_error, state_text, answer_text,
+    fragment_text;  // valid until the next call
+
+/// Shows a refused lesson in the lesson panel and the scenario panel; returns it.
+const std::string& refuse_lesson(swarmlab::AppState& s, std::string error) {
+  s.lessons.error = error;
+  s.status = error;
+  s.status_is_error = true;
+  open_error = std::move(error);
+  return open_error;
+}
 
 json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
@@ -48,8 +65,16 @@ json lesson_state(swarmlab::AppState& app) {
     else
       task["answered"] = nullptr;
   }
-  return {{"id", lesson->id},       {"title", lesson->title}, {"step", lessons.step()},
-          {"steps", lesson->steps.size()}, {"text", step.text},   {"task", task}};
+  return {{"id", lesson->id},
+          {"title", lesson->title},
+          {"step", lessons.step()},
+          {"steps", lesson->steps.size()},
+          {"text", step.text},
+          {"task", task},
+          {"summary", lessons.showing_summary()},
+          {"hidden", {{"readouts", lessons.hides(swarmlab::LessonHidden::readouts)},
+                      {"card", lessons.hides(swarmlab::LessonHidden::card)},
+                      {"plots", lessons.hides(swarmlab::LessonHidden::plots)}}}};
 }
 
 }  // namespace
@@ -75,17 +100,39 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson(const char* text, int is_j
   if (!app) return "the app has not started";
   swarmlab::AppState& s = app->state();
   std::string error = is_json ? swarmlab::open_lesson_json(s, text) : swarmlab::open_lesson_id(s, text);
-  if (!error.empty()) {
-    error = std::string(source) + ": " + error;
-    s.lessons.error = error;
-    s.status = error;
-    s.status_is_error = true;
-  } else {
-    s.lessons.error.clear();
-    s.lessons.dismiss_welcome();
-  }
-  open_error = error;
+  if (!error.empty()) return refuse_lesson(s, std::string(source) + ": " + error).c_str();
+  s.lessons.error.clear();
+  s.lessons.dismiss_welcome();
+  open_error.clear();
   return open_error.c_str();
+}
+
+/// Opens what a #lesson= link holds (the text after "#lesson=", lesson_link.h): a shipped
+/// lesson's id or a lesson's JSON in base64url. "" on success, else "lesson link: ..." (also
+/// shown in the app); the running lesson stays.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson_link(const char* value) {
+  swarmlab::App* app = swarmlab::web_app();
+  if (!app) return "the app has not started";
+  swarmlab::AppState& s = app->state();
+  std::vector<std::string> ids;
+  for (const swarmlab::Lesson& l : s.lessons.shipped()) ids.push_back(l.id);
+  const swarmlab::LessonLinkTarget target = swarmlab::read_lesson_link(value, ids);
+  std::string error = target.error;
+  if (error.empty())
+    error = target.id.empty() ? swarmlab::open_lesson_json(s, target.json)
+                              : swarmlab::open_lesson_id(s, target.id);
+  if (!error.empty()) return refuse_lesson(s, "lesson link: " + error).c_str();
+  s.lessons.error.clear();
+  s.lessons.dismiss_welcome();
+  open_error.clear();
+  return open_error.c_str();
+}
+
+/// The link fragment ("#lesson=...") that opens the open lesson, "" when none is open.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_fragment() {
+  swarmlab::App* app = swarmlab::web_app();
+  fragment_text = app ? app->state().lessons.share_fragment() : std::string();
+  return fragment_text.c_str();
 }
 
 /// The open lesson's state as JSON, "null" when none is open.
@@ -130,6 +177,19 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_move(int direction) {
   return swarmlab_lesson_state();
 }
 
+/// The Finish button (+1: the summary) or Restart lesson (-1: step 1, answers forgotten); the
+/// lesson state afterwards.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_finish(int finish) {
+  if (swarmlab::App* app = swarmlab::web_app()) {
+    swarmlab::AppState& s = app->state();
+    if (finish > 0)
+      s.lessons.finish();
+    else
+      swarmlab::show_lesson_scene(s, s.lessons.restart());
+  }
+  return swarmlab_lesson_state();
+}
+
 /// Whether the welcome window is showing (for tests of the first visit).
 EMSCRIPTEN_KEEPALIVE int swarmlab_welcome_shown() {
   swarmlab::App* app = swarmlab::web_app();
@@ -137,3 +197,7 @@ EMSCRIPTEN_KEEPALIVE int swarmlab_welcome_shown() {
 }
 
 }  // extern "C"
+
+void swarmlab::install_lesson_share(AppState& state) {
+  state.lessons.share = [](const std::string& fragment) { js_share_lesson(fragment.c_str()); };
+}

@@ -2,7 +2,9 @@
 // (before swarmlab_api.js, which uses it). Two forms, both accepted when a page opens:
 //   #preset=<base64url of the preset's UTF-8 JSON>            always written and read
 //   #z=<base64url of the JSON compressed with deflate-raw>     shorter; needs CompressionStream
-// and a lesson (docs/lessons.md) as #lesson=<base64url> or #lz=<deflate-raw, base64url>.
+// and a lesson (docs/lessons.md) as #lesson=<a shipped lesson's id, or base64url of its JSON>
+// (what the lesson panel's Share button writes; the app itself reads it, app/lessons/
+// lesson_link.h) or #lz=<deflate-raw, base64url>.
 // base64url is RFC 4648 section 5 without padding; padding and the '+' '/' of plain base64 are
 // accepted too, as is whitespace a mail program may have inserted. The fragment never reaches
 // the web server, so a link works from any static host.
@@ -119,9 +121,15 @@ var SwarmlabLink = (function () {
       var key = parts[i].slice(0, eq), value = parts[i].slice(eq + 1);
       if (key !== 'preset' && key !== 'z' && key !== 'lesson' && key !== 'lz') continue;
       try { value = decodeURIComponent(value); } catch (e) { /* keep it as it is */ }
-      // A lesson travels the same way: #lesson= (base64url) or #lz= (deflate-raw); the result
-      // then says { lesson: true }.
-      if (key === 'lesson' || key === 'lz')
+      // A lesson: #lesson= is read by the app, which knows the shipped lessons' ids
+      // ({ lessonLink }); #lz= (deflate-raw) is inflated here ({ json, lesson: true }).
+      if (key === 'lesson') {
+        if (value.length > Math.ceil(maxPresetBytes / 3) * 4)
+          return Promise.resolve({ error: 'lesson link: the text after #lesson= is ' +
+                                          sizeText(value.length * 3 / 4) + '; a lesson may be at most ' + sizeText(maxPresetBytes) });
+        return Promise.resolve({ lessonLink: value });
+      }
+      if (key === 'lz')
         return decode(key, value).then(function (r) { r.lesson = true; return r; });
       return decode(key, value);
     }

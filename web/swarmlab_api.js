@@ -38,7 +38,12 @@
 //   swarmlab.lessonAnswer(value) answers the task (a number, or an option's index):
 //                          { correct, feedback } (correct null for a prediction)
 //   swarmlab.lessonNext(), swarmlab.lessonBack() move a step; return lessonState()
-//   swarmlab.lessonLink(json) a link that opens the lesson: page address + #lesson=base64url
+//   swarmlab.lessonFinish(), swarmlab.lessonRestart() the summary, or step 1 afresh; return
+//                          lessonState()
+//   swarmlab.lessonLink(idOrJson) a link that opens the lesson: page address + #lesson= and a
+//                          shipped lesson's id, or base64url of a lesson's JSON (text or object)
+//   swarmlab.shareLesson(fragment) the lesson panel's Share button: the page's address + the
+//                          fragment, copied, put in the address bar and shown
 //   swarmlab.welcomeShown() whether the welcome window is showing
 //   swarmlab.ready         Promise resolved once main() has started (and a start link is open)
 //   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks)
@@ -122,6 +127,7 @@
   // { json } or { error } from SwarmlabLink.read, into the app. Returns '' or the message.
   function openLinkResult(result) {
     if (result.error) return refuse(result.error);
+    if (result.lessonLink !== undefined) return openLessonLink(result.lessonLink);
     if (result.lesson) return openLessonText(result.json, true, 'lesson link');
     return openJson(result.json, 'share link', 'shared-preset.json');
   }
@@ -141,6 +147,31 @@
     else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
     return error;
   }
+
+  // The text after #lesson=: the app opens a shipped lesson's id or a lesson's JSON in
+  // base64url, and refuses anything else in one sentence. Returns '' or the message.
+  function openLessonLink(value) {
+    var error = withHeapText(String(value), function (pointer) {
+      return Module.ccall('swarmlab_open_lesson_link', 'string', ['number'], [pointer]);
+    });
+    if (error) notice('error', error);
+    else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
+    return error;
+  }
+
+  // The page's link for a lesson fragment: copied, put in the address bar and shown.
+  function shareFragment(fragment, what) {
+    var url = pageAddress() + fragment;
+    history.replaceState(null, '', url);
+    return copyText(url).then(function (copied) {
+      var how = copied ? 'Link copied to the clipboard' : 'Copy this link';
+      setStatus(how + (copied ? ' (' + url.length + ' characters)' : ' from the page or the address bar'), false);
+      notice('link', how + ': whoever opens it ' + what + '.', url);
+      return url;
+    });
+  }
+
+  function lessonFragmentNow() { return Module.ccall('swarmlab_lesson_fragment', 'string', [], []); }
 
   function lessonStateNow() { return JSON.parse(Module.ccall('swarmlab_lesson_state', 'string', [], [])); }
 
@@ -194,6 +225,10 @@
       return SwarmlabLink.fragment(presetText(-1)).then(function (f) { return pageAddress() + f; });
     },
     copyLink: function () {
+      // During a lesson the link is the lesson's: a student who opens it starts the lesson,
+      // which sets its own scenes (docs/lessons.md, "Sharing it").
+      var lesson = lessonFragmentNow();
+      if (lesson) return shareFragment(lesson, 'opens the lesson \u201c' + lessonStateNow().title + '\u201d');
       return api.link().then(function (url) {
         history.replaceState(null, '', url); // the address bar shows it too; no reload
         return copyText(url).then(function (copied) {
@@ -296,9 +331,23 @@
     },
     lessonNext: function () { check(); return JSON.parse(Module.ccall('swarmlab_lesson_move', 'string', ['number'], [1])); },
     lessonBack: function () { check(); return JSON.parse(Module.ccall('swarmlab_lesson_move', 'string', ['number'], [-1])); },
-    lessonLink: function (json) {
-      var text = typeof json === 'string' ? json : JSON.stringify(json);
+    lessonFinish: function () { check(); return JSON.parse(Module.ccall('swarmlab_lesson_finish', 'string', ['number'], [1])); },
+    lessonRestart: function () { check(); return JSON.parse(Module.ccall('swarmlab_lesson_finish', 'string', ['number'], [-1])); },
+    lessonLink: function (idOrJson) {
+      // A shipped lesson's id links by its id; a lesson (JSON text or an object) by its JSON.
+      if (typeof idOrJson === 'string' && !/^\s*\{/.test(idOrJson)) {
+        check();
+        var known = api.lessons().some(function (l) { return l.id === idOrJson; });
+        if (!known) throw new Error('swarmlab.lessonLink(): ' + JSON.stringify(idOrJson) + ' is not a shipped lesson\'s id');
+        return pageAddress() + '#lesson=' + idOrJson;
+      }
+      var text = typeof idOrJson === 'string' ? idOrJson : JSON.stringify(idOrJson);
       return pageAddress() + '#lesson=' + SwarmlabLink.toBase64url(new TextEncoder().encode(text));
+    },
+    // The lesson panel's Share button (js_lessons.cpp): Promise of the link.
+    shareLesson: function (fragment) {
+      check();
+      return shareFragment(fragment, 'opens the lesson \u201c' + (lessonStateNow() || {}).title + '\u201d');
     },
     welcomeShown: function () { check(); return Module.ccall('swarmlab_welcome_shown', 'number', [], []) === 1; },
     shipped: function () {

@@ -40,6 +40,7 @@ int main() {
   // Lessons embedded at /lessons (assets/lessons); progress and the welcome in localStorage.
   frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
                                      swarmlab::shipped_preset_lookup("/presets"));
+  swarmlab::install_lesson_share(frontend.app->state());
   // A share link in the address replaces the default preset before the first frame.
   EM_ASM({
     if (Module.swarmlabStarted) Module.swarmlabStarted();

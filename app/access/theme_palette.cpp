@@ -36,6 +36,11 @@ Palette dark_palette() {
   p.text_warning = rgb(255, 200, 110);
   p.text_ok = rgb(140, 230, 150);
   p.text_key = rgb(255, 217, 115);
+  p.lesson_title = rgb(255, 217, 115);
+  p.lesson_keyword = rgb(255, 204, 90);
+  p.feedback_right = rgb(140, 230, 150);
+  p.feedback_wrong = rgb(255, 150, 130);
+  p.feedback_note = rgb(166, 204, 255);
   p.slider_grab = rgb(120, 170, 240);
   p.check_mark = rgb(130, 190, 255);
   p.nav_highlight = rgb(255, 200, 60);
@@ -116,6 +121,11 @@ Palette light_palette() {
   p.text_warning = rgb(135, 75, 0);
   p.text_ok = rgb(20, 110, 40);
   p.text_key = rgb(120, 60, 0);
+  p.lesson_title = rgb(20, 50, 130);
+  p.lesson_keyword = rgb(120, 60, 0);
+  p.feedback_right = rgb(20, 110, 40);
+  p.feedback_wrong = rgb(170, 20, 20);
+  p.feedback_note = rgb(20, 70, 150);
   p.slider_grab = rgb(30, 80, 170);
   p.check_mark = rgb(20, 70, 160);
   p.nav_highlight = rgb(200, 60, 0);

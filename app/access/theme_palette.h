@@ -21,6 +21,9 @@ struct Palette {
   Colour tab, tab_hovered, tab_active;
   Colour selected_row;  ///< the selected particle's row in the particle table
   Colour text, text_disabled, text_error, text_warning, text_ok, text_key;
+  // Lessons (the lesson panel, the welcome): the lesson's title, *emphasised* words, and the
+  // feedback to an answer that is right, not yet right, or recorded (a prediction, a note).
+  Colour lesson_title, lesson_keyword, feedback_right, feedback_wrong, feedback_note;
   // Marks on the panels that must be seen (3:1 against what they sit on).
   Colour slider_grab, check_mark, nav_highlight, border, scrollbar_grab;
   // The 3D view.

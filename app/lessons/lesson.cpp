@@ -1,9 +1,11 @@
 #include "lessons/lesson.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "lessons/device_words.h"
 #include "swarm/preset/printable_text.h"
 #include "swarm/preset/strict_json.h"
 
@@ -17,6 +19,8 @@ constexpr std::size_t kMaxTextBytes = 8000;
 constexpr std::size_t kMaxTitleBytes = 120;
 constexpr std::size_t kMaxIdBytes = 64;
 constexpr std::size_t kMaxOptions = 8;
+/// A step's run may be continued to at most this time (a class period at any speed).
+constexpr double kMaxRunUntil = 1e6;
 
 struct Invalid {
   std::string message;
@@ -105,6 +109,7 @@ void check_prose(const std::string& text, const std::string& path) {
       fail(path, "an emphasis is not closed in its paragraph (write *like this*)");
     if (paragraph_end) stars = 0;
   }
+  if (const std::string problem = device_words_problem(text); !problem.empty()) fail(path, problem);
 }
 
 std::vector<std::string> option_list(const Fields& f, const char* key) {
@@ -211,7 +216,7 @@ LessonTask task_of(const json& j, const std::string& path, const swarm::Preset& 
 
 LessonStep step_of(const json& j, const std::string& path, const PresetLookup& lookup,
                    const std::optional<swarm::Preset>& running) {
-  const Fields f(j, path, {"text", "preset", "show", "task"});
+  const Fields f(j, path, {"text", "preset", "show", "hide", "run", "task"});
   LessonStep s;
   s.text = f.text("text", kMaxTextBytes, "what the step says");
   check_prose(s.text, f.path("text"));
@@ -247,6 +252,40 @@ LessonStep step_of(const json& j, const std::string& path, const PresetLookup& l
     if (show.has("overlay"))
       s.overlay = named(show, "overlay",
                         {LessonOverlay::none, LessonOverlay::springs, LessonOverlay::springs_to_cm});
+  }
+  if (f.has("hide")) {
+    const json& list = f.at("hide");
+    const char* rule = "must be a list of what to hide: \"readouts\", \"card\", \"plots\"";
+    require(list.is_array() && !list.empty(), f.path("hide"), rule);
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string item = f.path("hide") + "[" + std::to_string(i) + "]";
+      require(list[i].is_string(), item, rule);
+      const std::string name = list[i].get<std::string>();
+      bool known = false;
+      for (LessonHidden h : {LessonHidden::readouts, LessonHidden::card, LessonHidden::plots})
+        if (name_of(h) == name) {
+          require(!s.hides(h), item, "\"" + name + "\" is listed twice");
+          s.hide.push_back(h);
+          known = true;
+        }
+      require(known, item,
+              std::string(rule) + " (not \"" + swarm::printable(name) + "\")");
+    }
+  }
+  if (f.has("run")) {
+    const Fields run(f.at("run"), f.path("run"), {"until", "loop"});
+    require(run.has("until") != run.has("loop"), f.path("run"),
+            "give either \"until\": a time or \"loop\": true, not both and not neither");
+    if (run.has("until")) {
+      const double until = run.number("until");
+      require(until > 0 && until <= kMaxRunUntil, run.path("until"),
+              "must be > 0 and at most " + format(kMaxRunUntil) + " (the time the run lasts to)");
+      s.run_until = until;
+    } else {
+      require(run.at("loop") == true, run.path("loop"),
+              "must be true (the run starts again whenever it ends)");
+      s.run_loop = true;
+    }
   }
   if (f.has("task")) s.task = task_of(f.at("task"), f.path("task"), scene);
   return s;
@@ -301,9 +340,12 @@ LessonParse parse_lesson(std::string_view json_text, const PresetLookup& lookup)
   } catch (const Invalid& e) {
     out.error = e.message;
   } catch (const json::parse_error& e) {
-    out.error = swarm::printable(std::string("lesson: not valid JSON (") + e.what() + ")", 300);
-  } catch (const json::exception& e) {
-    out.error = swarm::printable(std::string("lesson: ") + e.what(), 300);
+    // The library's own text ("[json.exception.parse_error.101] ...") means nothing to a
+    // teacher: where it broke is enough.
+    out.error = "lesson: not valid JSON (it breaks at byte " + std::to_string(e.byte) +
+                "; a lesson is one JSON object, see docs/lessons.md)";
+  } catch (const json::exception&) {
+    out.error = "lesson: not a lesson the app can read (a value of the wrong type)";
   }
   return out;
 }
@@ -354,6 +396,25 @@ std::string_view name_of(Quantity quantity) {
   return "";
 }
 
+std::string_view name_of(LessonHidden hidden) {
+  switch (hidden) {
+    case LessonHidden::readouts: return "readouts";
+    case LessonHidden::card: return "card";
+    case LessonHidden::plots: return "plots";
+  }
+  return "";
+}
+
+bool LessonStep::hides(LessonHidden what) const {
+  return std::find(hide.begin(), hide.end(), what) != hide.end();
+}
+
+std::string quantity_symbol(Quantity quantity, bool repulsive) {
+  if (quantity == Quantity::omega) return repulsive ? "\u03a9" : "\u03c9";
+  if (quantity == Quantity::period) return "the period";
+  return std::string(name_of(quantity));
+}
+
 std::string_view name_of(LessonTask::Kind kind) {
   switch (kind) {
     case LessonTask::Kind::measure: return "measure";
@@ -363,14 +424,15 @@ std::string_view name_of(LessonTask::Kind kind) {
   return "";
 }
 
-Marking mark_measurement(const LessonTask& task, double answer, double expected) {
+Marking mark_measurement(const LessonTask& task, double answer, double expected,
+                         const std::string& symbol) {
   Marking m;
   if (!std::isfinite(answer)) {
     m.feedback = "Type a number, e.g. 4.44.";
     return m;
   }
   if (!std::isfinite(expected)) {
-    m.feedback = "The running simulation has no " + std::string(name_of(task.quantity)) +
+    m.feedback = "The running simulation has no " + symbol +
                  " to compare with right now (has the scene changed?).";
     return m;
   }
@@ -378,8 +440,12 @@ Marking mark_measurement(const LessonTask& task, double answer, double expected)
   m.correct = off <= task.tolerance;
   const std::string percent = format(100 * task.tolerance);
   if (*m.correct)
-    m.feedback = "Right: the simulation has " + std::string(name_of(task.quantity)) + " = " +
-                 format(expected) + ", and you are within " + percent + "% of it.";
+    m.feedback = "Right: the simulation has " + symbol + " = " + format(expected) +
+                 ", and you are within " + percent + "% of it.";
+  else if (answer != 0 && (answer < 0) != (expected < 0))
+    // "200 % too large" for -E would hide the one thing that is wrong.
+    m.feedback = std::string("Not yet: the sign is wrong (") + symbol + " is " +
+                 (expected < 0 ? "negative" : "positive") + " here). Look again.";
   else
     m.feedback = "Not yet: your value is " + format(100 * off) + "% too " +
                  (answer > expected ? "large" : "small") + " (within " + percent +

@@ -24,6 +24,10 @@ enum class LessonOverlay { none, springs, springs_to_cm };
 /// (J > 0), omega = sqrt(|J| M), the total mass M, the energy E, the wall pressure P and
 /// temperature T (need a container).
 enum class Quantity { period, omega, M, E, P, T };
+/// What a step can keep off the screen while its task is open, because it would give the
+/// answer away: the read-outs (the period, omega, M, E, P, T by formula), the selected
+/// particle's card (its period and amplitude) and the plots.
+enum class LessonHidden { readouts, card, plots };
 
 struct LessonTask {
   enum class Kind { measure, choice, predict };
@@ -49,7 +53,17 @@ struct LessonStep {
   std::optional<LessonPlot> plot;
   std::optional<std::size_t> select;
   std::optional<LessonOverlay> overlay;
+  /// Kept off the screen while the step is shown and its task is not yet answered.
+  std::vector<LessonHidden> hide;
+  /// How long the run lasts while the step is shown (and the steps after it in the same scene),
+  /// so that it never ends while the student reads: on to at least t = run_until (the run is
+  /// continued past the preset's end), or started again from its first moment whenever it
+  /// ends (run_loop).
+  std::optional<double> run_until;
+  bool run_loop = false;
   std::optional<LessonTask> task;
+
+  bool hides(LessonHidden what) const;
 };
 
 struct Lesson {
@@ -85,6 +99,11 @@ std::string_view name_of(LessonPlot plot);
 std::string_view name_of(LessonOverlay overlay);
 std::string_view name_of(Quantity quantity);
 std::string_view name_of(LessonTask::Kind kind);
+std::string_view name_of(LessonHidden hidden);
+
+/// How a quantity is named in feedback: omega is "ω" for an attracting system and
+/// "Ω" (the growth rate) for a repulsive one, as the read-outs and the lessons write it.
+std::string quantity_symbol(Quantity quantity, bool repulsive);
 
 /// A student's answer, marked.
 struct Marking {
@@ -93,8 +112,10 @@ struct Marking {
 };
 
 /// A measured number against the running simulation's value `expected`: right when within the
-/// task's relative tolerance of it.
-Marking mark_measurement(const LessonTask& task, double answer, double expected);
+/// task's relative tolerance of it. The feedback names the quantity as `symbol` writes it
+/// (quantity_symbol), and says so when only the sign is wrong.
+Marking mark_measurement(const LessonTask& task, double answer, double expected,
+                         const std::string& symbol);
 /// A picked option (choice: marked, with that option's feedback; predict: recorded, with the
 /// outcome to compare it with).
 Marking mark_option(const LessonTask& task, std::size_t option);

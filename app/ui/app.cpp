@@ -14,6 +14,7 @@
 #include "ui/input/shortcuts.h"
 #include "ui/input/touch_target.h"
 #include "ui/lesson_player/lesson_panel.h"
+#include "ui/lesson_player/lesson_scene.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/windows.h"
 #include "ui/platform/save_dialog.h"
@@ -162,6 +163,7 @@ void App::advance_simulation(double seconds) {
   }
   const Clock::time_point start = Clock::now();
   const long taken = steps > 0 ? s.run->advance(steps) : 0;
+  if (s.playing) keep_lesson_run_going(s);  // a lesson step's run never ends while it is read
   const double ms = milliseconds_since(start);
   if (taken > 0) smooth(s.stats.step_ms, ms / double(taken));
   smooth(s.stats.simulation_ms, ms);
@@ -206,7 +208,8 @@ void App::layout_windows() {
   in.font = font;
   in.menu_height = top - viewport->Pos.y;
   in.mode = s.layout.mode;
-  in.controls = s.layout.controls, in.plots = s.layout.plots;
+  // An open lesson keeps its column when the controls are closed (presentation mode).
+  in.controls = s.layout.controls || s.lessons.open_lesson(), in.plots = s.layout.plots;
   in.transport_height = s.layout.transport_height;
   in.readouts_height = s.layout.readouts_height;
   in.bottom_strip_height = s.layout.bottom_strip_height = timeline_strip_height();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <vector>
 
 #include "ui/input/keyboard_regions.h"
 #include "ui/parallel_dom/parallel_dom.h"
@@ -75,8 +76,23 @@ void apply_touch(App& app) {
 }  // namespace
 
 bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
+  // ImGui 1.86 sees a key as held or not once a frame: a key pressed and released between two
+  // frames (a quick tap of Enter, a busy Chromebook, a scripted press) would never be seen
+  // pressed, and Enter in a lesson's answer field did nothing. Such a release is held back to
+  // the next frame.
+  static std::vector<SDL_Event> held_key_ups;
+  for (SDL_Event& up : held_key_ups) ImGui_ImplSDL2_ProcessEvent(&up);
+  held_key_ups.clear();
+  std::vector<SDL_Scancode> pressed_this_frame;
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
+    if (event.type == SDL_KEYDOWN) pressed_this_frame.push_back(event.key.keysym.scancode);
+    if (event.type == SDL_KEYUP &&
+        std::find(pressed_this_frame.begin(), pressed_this_frame.end(),
+                  event.key.keysym.scancode) != pressed_this_frame.end()) {
+      held_key_ups.push_back(event);
+      continue;
+    }
     if (event.type == SDL_FINGERDOWN || event.type == SDL_FINGERMOTION ||
         event.type == SDL_FINGERUP) {
       feed_finger(*f.app, event.tfinger);

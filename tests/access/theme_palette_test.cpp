@@ -68,6 +68,16 @@ void check_theme(Theme theme) {
              {"ok", p.text_ok},
              {"key", p.text_key}},
             {{"window", p.window}, {"popup", p.popup}}, kText);
+  // A lesson's title, keywords and feedback on the panel, in the step's box (a child window
+  // drawn on the panel), in the welcome window and in tooltips. Presentation mode draws the
+  // light theme, so the light palette's check covers it.
+  check_all(name,
+            {{"lesson title", p.lesson_title},
+             {"lesson keyword", p.lesson_keyword},
+             {"feedback: right", p.feedback_right},
+             {"feedback: not yet", p.feedback_wrong},
+             {"feedback: recorded", p.feedback_note}},
+            {{"window", p.window}, {"popup", p.popup}, {"field", on_window(p.frame)}}, kText);
   // Marks a student must see on what they sit on.
   check_all(name, {{"slider grab", p.slider_grab}, {"check mark", p.check_mark}},
             {{"field", on_window(p.frame)}, {"hovered field", on_window(p.frame_hovered)}},

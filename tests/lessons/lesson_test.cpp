@@ -204,18 +204,99 @@ TEST_CASE("a measurement is right within the relative tolerance of the simulatio
   task.quantity = Quantity::period;
   task.tolerance = 0.02;
   const double period = 2 * M_PI / std::sqrt(2.0);  // the pair: 2 pi / sqrt(J M)
-  CHECK(*mark_measurement(task, 4.44, period).correct);
-  CHECK(*mark_measurement(task, period * 1.019, period).correct);
-  CHECK_FALSE(*mark_measurement(task, period * 1.021, period).correct);
-  CHECK_FALSE(*mark_measurement(task, period * 0.979, period).correct);
-  CHECK_FALSE(*mark_measurement(task, period / 2, period).correct);  // timing KE's 2 omega
-  CHECK(mark_measurement(task, period * 1.5, period).feedback.find("50% too large") !=
+  CHECK(*mark_measurement(task, 4.44, period, "E").correct);
+  CHECK(*mark_measurement(task, period * 1.019, period, "E").correct);
+  CHECK_FALSE(*mark_measurement(task, period * 1.021, period, "E").correct);
+  CHECK_FALSE(*mark_measurement(task, period * 0.979, period, "E").correct);
+  CHECK_FALSE(*mark_measurement(task, period / 2, period, "E").correct);  // timing KE's 2 omega
+  CHECK(mark_measurement(task, period * 1.5, period, "the period").feedback.find("50% too large") !=
         std::string::npos);
-  CHECK_FALSE(mark_measurement(task, NAN, period).correct);
-  CHECK_FALSE(mark_measurement(task, 4.44, NAN).correct);  // nothing to compare with
+  CHECK_FALSE(mark_measurement(task, NAN, period, "E").correct);
+  CHECK_FALSE(mark_measurement(task, 4.44, NAN, "E").correct);  // nothing to compare with
   task.tolerance = 0.1;
-  CHECK(*mark_measurement(task, -1.05, -1.0).correct);  // negative energies compare by size
-  CHECK_FALSE(*mark_measurement(task, 1.0, -1.0).correct);
+  CHECK(*mark_measurement(task, -1.05, -1.0, "E").correct);  // negative energies compare by size
+  CHECK_FALSE(*mark_measurement(task, 1.0, -1.0, "E").correct);
+}
+
+TEST_CASE("feedback: a sign error says the sign is wrong; the quantity is named as asked") {
+  LessonTask task;
+  task.kind = LessonTask::Kind::measure;
+  task.quantity = Quantity::E;
+  // Not "200% too large": the size is right, only the sign is not.
+  const Marking sign = mark_measurement(task, 1.0, -1.0, "E");
+  CHECK_FALSE(*sign.correct);
+  CHECK(sign.feedback == "Not yet: the sign is wrong (E is negative here). Look again.");
+  CHECK(sign.feedback.find('%') == std::string::npos);
+  // A repulsive system's omega is its growth rate Omega, as lesson 3 asks for it.
+  task.quantity = Quantity::omega;
+  CHECK(quantity_symbol(Quantity::omega, true) == "\u03a9");
+  CHECK(quantity_symbol(Quantity::omega, false) == "\u03c9");
+  const Marking right = mark_measurement(task, 1.8, 1.8028, quantity_symbol(Quantity::omega, true));
+  CHECK(right.feedback.rfind("Right: the simulation has \u03a9 = 1.803", 0) == 0);
+  CHECK(right.feedback.find("omega") == std::string::npos);
+}
+
+TEST_CASE("a step's hide and run fields: what they hold and each rule by name") {
+  ojson lesson = base_lesson();
+  lesson["steps"][1]["hide"] = {"readouts", "card"};
+  lesson["steps"][2]["run"] = {{"until", 40}};
+  lesson["steps"][3]["run"] = {{"loop", true}};
+  const LessonParse ok = parse_lesson(lesson.dump(), test_lookup);
+  REQUIRE_MESSAGE(ok.lesson, ok.error);
+  const Lesson& l = *ok.lesson;
+  CHECK(l.steps[1].hides(LessonHidden::readouts));
+  CHECK(l.steps[1].hides(LessonHidden::card));
+  CHECK_FALSE(l.steps[1].hides(LessonHidden::plots));
+  CHECK(l.steps[0].hide.empty());
+  CHECK(*l.steps[2].run_until == 40);
+  CHECK_FALSE(l.steps[2].run_loop);
+  CHECK(l.steps[3].run_loop);
+  CHECK_FALSE(l.steps[3].run_until);
+
+  auto refused = [&](const char* field, ojson value) {
+    ojson broken = base_lesson();
+    broken["steps"][1][field] = std::move(value);
+    return error_of_json(broken);
+  };
+  CHECK(refused("hide", "readouts") ==
+        "steps[1].hide: must be a list of what to hide: \"readouts\", \"card\", \"plots\"");
+  CHECK(refused("hide", ojson::array()) ==
+        "steps[1].hide: must be a list of what to hide: \"readouts\", \"card\", \"plots\"");
+  CHECK(refused("hide", {"readouts", "answer"}) ==
+        "steps[1].hide[1]: must be a list of what to hide: \"readouts\", \"card\", \"plots\" "
+        "(not \"answer\")");
+  CHECK(refused("hide", {"card", "card"}) == "steps[1].hide[1]: \"card\" is listed twice");
+  CHECK(refused("run", {{"until", 0}}) ==
+        "steps[1].run.until: must be > 0 and at most 1e+06 (the time the run lasts to)");
+  CHECK(refused("run", {{"until", "long"}}) == "steps[1].run.until: must be a number");
+  CHECK(refused("run", {{"loop", false}}) ==
+        "steps[1].run.loop: must be true (the run starts again whenever it ends)");
+  CHECK(refused("run", {{"loop", true}, {"until", 3}}) ==
+        "steps[1].run: give either \"until\": a time or \"loop\": true, not both and not neither");
+  CHECK(refused("run", ojson::object()) ==
+        "steps[1].run: give either \"until\": a time or \"loop\": true, not both and not neither");
+  CHECK(refused("run", {{"repeat", true}}).rfind("steps[1].run.repeat: unknown key (allowed here: until, loop)", 0) == 0);
+}
+
+TEST_CASE("device words in lesson text are checked where they are written") {
+  ojson lesson = base_lesson();
+  lesson["steps"][0]["text"] = "{Tap|Click} a ball, then {tap *Play*|click *Play*|press *Space*}.";
+  CHECK(error_of_json(lesson).empty());
+  lesson["steps"][0]["text"] = "{tap} a ball";
+  CHECK(error_of_json(lesson) ==
+        "steps[0].text: a device choice is {touch words|mouse words} or {touch|mouse|keyboard "
+        "words}: 2 or 3 non-empty alternatives split by '|', closed on the same line");
+  lesson["steps"][0]["text"] = "a } alone";
+  CHECK(error_of_json(lesson).rfind("steps[0].text: a '}' with no '{' before it", 0) == 0);
+  lesson = base_lesson();
+  lesson["steps"][1]["task"]["prompt"] = "{tap|click|press Enter|shout}";
+  CHECK(error_of_json(lesson).rfind("steps[1].task.prompt: a device choice is", 0) == 0);
+}
+
+TEST_CASE("text that is not JSON is refused in one sentence, without the parser's own codes") {
+  const std::string e = error_of("not json");
+  CHECK(e.rfind("lesson: not valid JSON (it breaks at byte ", 0) == 0);
+  CHECK(e.find("json.exception") == std::string::npos);
 }
 
 TEST_CASE("a choice is marked with its option's feedback; a prediction is recorded, not marked") {

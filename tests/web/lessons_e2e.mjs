@@ -4,8 +4,12 @@
 // .reading), each choice with its right option (read from the lesson file), each prediction
 // recorded; a wrong answer is marked wrong; a broken lesson (bad JSON, a rule broken, an
 // unknown id, a #lesson= link) gives a field-named message and the running lesson stays; a
-// #lesson= link opens its lesson. Screenshots of the welcome and the lesson panel at 1280x720
-// and 390x844 go to build/web-test/.
+// #lesson= link opens its lesson; a shipped lesson's id link opens it and anything else is
+// refused in one sentence; Copy link during a lesson links the lesson; lesson 1 hides the
+// read-outs until its timing is answered; runs go on (until, loop) while a step is read; Enter
+// and keypad Enter in the answer field check it (real keys); Finish shows the summary.
+// Screenshots of the welcome, the lesson panel and the summary at 390x844, 820x1180, 1366x768
+// in both themes and presentation mode at 1920x1080 go to build/web-test/.
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import * as harness from './harness.mjs';
@@ -155,6 +159,117 @@ async function main(url) {
   await page.evaluate((h) => { location.hash = h; }, await api(page, 'lessonLink', good).then((u) => u.slice(u.indexOf('#'))));
   await page.waitForFunction(() => (window.swarmlab.lessonState() || {}).id === 'from-a-link', null, { timeout: 10_000, polling: 50 }).catch(() => {});
   check('a #lesson= link opens its lesson', (await api(page, 'lessonState')).id === 'from-a-link');
+
+  // 5b. Share links: a shipped lesson by its id; anything that is not what Share writes is
+  // refused with one sentence (never the JSON parser's own message, finding 4).
+  const idLink = await api(page, 'lessonLink', 'one-period');
+  check('lessonLink(id) links a shipped lesson by its id', idLink.endsWith('#lesson=one-period'), idLink);
+  await page.evaluate((h) => { location.hash = h; }, '#lesson=one-period');
+  await page.waitForFunction(() => (window.swarmlab.lessonState() || {}).id === 'one-period', null, { timeout: 10_000, polling: 50 }).catch(() => {});
+  check('#lesson=<id> opens the shipped lesson', (await api(page, 'lessonState')).id === 'one-period');
+  const copied = await api(page, 'copyLink');
+  check('Copy link during a lesson copies the lesson link', copied.endsWith('#lesson=one-period'), copied);
+  const sentence = 'lesson link: the text after #lesson= is neither a shipped lesson\'s id (' + listedIds.join(', ') +
+    ') nor a lesson written by Share (its JSON in base64url); the link may have been cut short';
+  for (const bad of [base64url(Buffer.from('one-period')), 'no-such-lesson', 'x%%y']) {
+    await page.evaluate((h) => { window.swarmlab.lastMessage = null; location.hash = h; }, '#lesson=' + bad);
+    await page.waitForFunction(() => window.swarmlab.lastMessage, null, { timeout: 10_000, polling: 50 }).catch(() => {});
+    const m = await page.evaluate(() => window.swarmlab.lastMessage && window.swarmlab.lastMessage.text);
+    check(`#lesson=${bad.slice(0, 16)} is refused in one sentence`, m === sentence, String(m));
+  }
+  check('after refused links the lesson stays', (await api(page, 'lessonState')).id === 'one-period');
+
+  // 5c. What gives an answer away is hidden until the task is answered (lesson 1, step 2).
+  await api(page, 'lessonRestart');
+  let hidden = await api(page, 'lessonNext');
+  check('lesson 1 step 2 hides the read-outs and the card', hidden.hidden.readouts && hidden.hidden.card && !hidden.hidden.plots,
+        JSON.stringify(hidden.hidden));
+  await page.evaluate(() => window.swarmlab.lessonAnswer(window.swarmlab.lessonState().task.reading));
+  hidden = await api(page, 'lessonState');
+  check('answered right, they come back', !hidden.hidden.readouts && !hidden.hidden.card, JSON.stringify(hidden.hidden));
+
+  // 5d. A step's run never ends while it is read: lesson 1's pair (its preset ends at t = 8.9)
+  // runs on to t = 1000; lesson 5's Fig. 4 (ends at t = 3.2) loops.
+  await api(page, 'set', { speed: 20 });
+  await page.waitForFunction(() => window.swarmlab.state().t > 10, null, { timeout: 60_000, polling: 100 }).catch(() => {});
+  let st5 = await api(page, 'state');
+  check('lesson 1: the pair runs on past its preset\'s end', st5.t > 10 && st5.playing, `t = ${st5.t}, playing ${st5.playing}`);
+  await api(page, 'openLesson', 'gas-at-the-wall');
+  await api(page, 'lessonRestart');
+  await api(page, 'set', { speed: 4 });
+  await page.evaluate(() => { window.__lessonMaxT = 0; });
+  await page.waitForFunction(() => {
+    const s = window.swarmlab.state();
+    window.__lessonMaxT = Math.max(window.__lessonMaxT, s.t);
+    return window.__lessonMaxT > 3 && s.t < 2 && s.playing;
+  }, null, { timeout: 90_000, polling: 50 }).catch(() => {});
+  st5 = await api(page, 'state');
+  check('lesson 5: Fig. 4 starts again when it ends, and plays on', st5.playing && st5.t < 3,
+        `t = ${st5.t}, max seen ${await page.evaluate(() => window.__lessonMaxT)}, playing ${st5.playing}`);
+  await api(page, 'set', { speed: 1 });
+
+  // 5e. Enter checks an answer, both Enter keys: on a page of its own at a phone's size, click
+  // the lesson panel's title, Tab to the answer field, type, Enter (the compact layout's Lesson
+  // tab holds one field).
+  const keys = await openApp(url, 'enter-key', 10);
+  await keys.page.setViewportSize({ width: 390, height: 844 });
+  await api(keys.page, 'openLesson', 'one-period');
+  await api(keys.page, 'lessonRestart');
+  await api(keys.page, 'lessonNext');
+  await waitFrames(keys.page, 6);
+  const lessonPanel = (await api(keys.page, 'state')).panels.find((p) => p.name === 'Lesson');
+  check('the compact layout shows the Lesson tab', !!lessonPanel);
+  if (lessonPanel) {
+    for (const [key, typed, right] of [['Enter', '4.44', true], ['NumpadEnter', '9', false]]) {
+      // Held as long as a person holds a key or a button (about 60 ms), not within one frame.
+      await keys.page.mouse.click(lessonPanel.x + 12, lessonPanel.y + 12, { delay: 60 });
+      await keys.page.keyboard.press('Tab', { delay: 60 });
+      await keys.page.keyboard.type(typed, { delay: 60 });
+      await keys.page.keyboard.press(key, { delay: 60 });
+      await keys.page.waitForFunction(() => (window.swarmlab.lessonState().task || {}).answered, null, { timeout: 5_000, polling: 50 }).catch(() => {});
+      const answered = (await api(keys.page, 'lessonState')).task.answered;
+      check(`${key} in the answer field checks it`, answered && answered.correct === right, JSON.stringify(answered));
+      await api(keys.page, 'lessonBack');
+      await api(keys.page, 'lessonNext');  // a fresh step: no marking, an empty field
+      await waitFrames(keys.page, 2);
+    }
+  }
+  await keys.page.close();
+
+  // 5f. The panel and the summary as a student sees them, at a phone's, a tablet's and a
+  // laptop's size in both themes (build/web-test/lessons-*.png), and presentation mode at
+  // 1920x1080 showing the lesson.
+  for (const theme of ['dark', 'light']) {
+    await api(page, 'set', { theme });
+    for (const [w, h] of [[390, 844], [820, 1180], [1366, 768]]) {
+      await page.setViewportSize({ width: w, height: h });
+      await api(page, 'openLesson', 'gas-at-the-wall');
+      await api(page, 'lessonRestart');
+      await api(page, 'lessonNext');
+      await api(page, 'lessonAnswer', 2);  // a wrong option: feedback beside the options
+      await waitFrames(page, 6);
+      const shown = (await api(page, 'state')).panels.map((p) => p.name);
+      check(`${w}x${h} ${theme}: the lesson is on screen`, shown.includes('Lesson') || shown.includes('Controls'), shown.join(', '));
+      await screenshot(page, `lessons-step-${w}x${h}-${theme}.png`);
+      const done = await api(page, 'lessonFinish');
+      check(`${w}x${h} ${theme}: Finish shows the summary`, done.summary === true);
+      await waitFrames(page, 6);
+      await screenshot(page, `lessons-summary-${w}x${h}-${theme}.png`);
+    }
+  }
+  await api(page, 'set', { theme: 'dark' });
+  await page.setViewportSize({ width: 1920, height: 1080 });
+  await api(page, 'lessonRestart');
+  await api(page, 'set', { presentation: true });
+  await waitFrames(page, 8);
+  const presenting = (await api(page, 'state')).panels.map((p) => p.name);
+  check('presentation mode at 1920x1080 shows the lesson', presenting.includes('Lesson'), presenting.join(', '));
+  await screenshot(page, 'lessons-presentation-1920x1080.png');
+  await api(page, 'set', { presentation: false });
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await api(page, 'openLesson', 'one-period');
+  await api(page, 'lessonRestart');
+  for (let i = 0; i < lessonById['one-period'].steps.length - 2; ++i) await api(page, 'lessonNext');
 
   // 6. The second visit: no welcome, and the lesson progress is still there.
   const second = await openApp(url + '?welcome', 'second-visit', 10);

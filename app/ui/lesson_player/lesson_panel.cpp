@@ -4,6 +4,8 @@
 
 #include "ui/lesson_player/lesson_panel.h"
 
+#include "lessons/device_words.h"
+#include "ui/classroom/theme_style.h"
 #include "ui/lesson_player/lesson_scene.h"
 
 #include <imgui.h>
@@ -19,10 +21,6 @@
 namespace swarmlab {
 namespace {
 
-const ImVec4 kEmphasis(1.0f, 0.80f, 0.35f, 1.0f);
-const ImVec4 kRight(0.45f, 0.90f, 0.45f, 1.0f);
-const ImVec4 kWrong(1.0f, 0.55f, 0.45f, 1.0f);
-const ImVec4 kNeutral(0.65f, 0.80f, 1.0f, 1.0f);
 
 /// Keeps the current window inside the main viewport (after the browser window shrinks, a
 /// phone turns, or the student drags it off), no wider or taller than the viewport.
@@ -85,7 +83,7 @@ void draw_prose(const std::string& text) {
           if (!first) ImGui::SameLine(0, 0);
           first = false;
           if (p.emphasis)
-            ImGui::TextColored(kEmphasis, "%s", p.text.c_str());
+            ImGui::TextColored(colour_vec4(current_palette().lesson_keyword), "%s", p.text.c_str());
           else
             ImGui::TextUnformatted(p.text.c_str());
         }
@@ -100,24 +98,61 @@ void draw_prose(const std::string& text) {
 
 namespace {
 
-void draw_feedback(const Marking& m) {
-  const ImVec4 colour = !m.correct ? kNeutral : *m.correct ? kRight : kWrong;
-  ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  draw_prose(m.feedback);
+/// The input the student used last, for words that fit it ({tap|click|press Space}).
+InputKind input_kind(const AppState& state) {
+  if (state.layout.touch) return InputKind::touch;
+  return ImGui::GetIO().NavVisible ? InputKind::keyboard : InputKind::mouse;
+}
+
+void draw_lesson_prose(const AppState& state, const std::string& text) {
+  draw_prose(device_words(text, input_kind(state)));
+}
+
+ImVec4 marking_colour(const std::optional<bool>& correct) {
+  const Palette& p = current_palette();
+  return colour_vec4(!correct ? p.feedback_note : *correct ? p.feedback_right : p.feedback_wrong);
+}
+
+void draw_feedback(const AppState& state, const Marking& m) {
+  ImGui::PushStyleColor(ImGuiCol_Text, marking_colour(m.correct));
+  draw_lesson_prose(state, m.feedback);
   ImGui::PopStyleColor();
 }
 
-void draw_task(AppState& state, const LessonTask& task) {
+/// A button on the same line as the last item when it fits there, else on the next line: the
+/// row of buttons wraps on a phone rather than running off the panel.
+bool button_in_row(const char* label) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::CalcTextSize(label, nullptr, true).x + 2 * style.FramePadding.x;
+  const float right = ImGui::GetItemRectMax().x + style.ItemSpacing.x + width;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+  return ImGui::Button(label);
+}
+
+/// Whether Enter (the main key or the keypad's) was pressed this frame.
+bool enter_pressed() {
+  return ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+         ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false);
+}
+
+/// The task area under the step's text: the prompt, the options or the answer field, Check,
+/// and the feedback right under them, all outside the text's scrolling box so that they stay
+/// in view. Returns whether feedback was drawn.
+bool draw_task(AppState& state, const LessonTask& task) {
   LessonSession& lessons = state.lessons;
-  ImGui::Separator();
-  draw_prose(task.prompt);
+  const Palette& palette = current_palette();
+  draw_lesson_prose(state, task.prompt);
   if (task.kind == LessonTask::Kind::measure) {
     ImGui::SetNextItemWidth(8 * ImGui::GetFontSize());
-    const bool entered = ImGui::InputText("##answer", &lessons.typed,
+    const bool entered = ImGui::InputText("Your answer##answer", &lessons.typed,
                                           ImGuiInputTextFlags_CharsScientific |
                                               ImGuiInputTextFlags_EnterReturnsTrue);
+    // Enter in the field checks, whichever Enter key it was (the field may give up its focus
+    // on the main Enter key before EnterReturnsTrue reports it).
+    const bool enter = entered || (ImGui::IsItemFocused() && enter_pressed()) ||
+                       (ImGui::IsItemDeactivated() && enter_pressed());
     ImGui::SameLine();
-    if (ImGui::Button("Check") || entered) {
+    if (ImGui::Button("Check") || enter) {
       char* end = nullptr;
       const double value = std::strtod(lessons.typed.c_str(), &end);
       lessons.answer_number(*state.run, end != lessons.typed.c_str() ? value : NAN);
@@ -125,9 +160,10 @@ void draw_task(AppState& state, const LessonTask& task) {
   } else if (task.kind == LessonTask::Kind::choice) {
     for (std::size_t i = 0; i < task.options.size(); ++i) {
       ImGui::PushID(int(i));
-      if (ImGui::Button("Pick")) answer_lesson_option(state, i);
+      const std::string label = "Pick " + std::string(1, char('A' + i)) + "##pick";
+      if (ImGui::Button(label.c_str())) answer_lesson_option(state, i);
       ImGui::SameLine();
-      draw_prose(task.options[i]);
+      draw_lesson_prose(state, task.options[i]);
       ImGui::PopID();
     }
   } else {
@@ -136,58 +172,171 @@ void draw_task(AppState& state, const LessonTask& task) {
       ImGui::TextDisabled("The run waits for your prediction.");
       for (std::size_t i = 0; i < task.options.size(); ++i) {
         ImGui::PushID(int(i));
-        if (ImGui::Button("Predict")) answer_lesson_option(state, i);
+        const std::string label = "Predict " + std::string(1, char('A' + i)) + "##predict";
+        if (ImGui::Button(label.c_str())) answer_lesson_option(state, i);
         ImGui::SameLine();
-        draw_prose(task.options[i]);
+        draw_lesson_prose(state, task.options[i]);
         ImGui::PopID();
       }
     } else {
-      ImGui::TextColored(kNeutral, "Your prediction:");
-      draw_prose(task.options[*predicted]);
+      ImGui::TextColored(colour_vec4(palette.feedback_note), "Your prediction:");
+      draw_lesson_prose(state, task.options[*predicted]);
       if (!task.outcome.empty()) {
-        ImGui::TextColored(kNeutral, "Now compare:");
-        draw_prose(task.outcome);
+        ImGui::TextColored(colour_vec4(palette.feedback_note), "Now compare:");
+        draw_lesson_prose(state, task.outcome);
       }
-      return;  // the outcome is already shown beside the prediction
+      return true;  // the outcome is already shown beside the prediction
     }
   }
-  if (lessons.marking()) draw_feedback(*lessons.marking());
+  if (!lessons.marking()) return false;
+  draw_feedback(state, *lessons.marking());
+  return true;
+}
+
+/// The height the lesson's parts other than the text box took on the last frame (kept in
+/// ImGui's storage under the lesson's id), so that the text box leaves them room.
+float& chrome_height() {
+  return *ImGui::GetStateStorage()->GetFloatRef(ImGui::GetID("chrome-height"), 0);
+}
+
+/// The finished lesson: each task, the student's answer and whether it was right; Restart and
+/// the next lesson.
+void draw_summary(AppState& state, float box_height) {
+  LessonSession& lessons = state.lessons;
+  const Lesson& lesson = *lessons.open_lesson();
+  const Palette& palette = current_palette();
+  const LessonProgress* progress = lessons.progress_of(lesson.id);
+  char line[96];
+  std::snprintf(line, sizeof line, "Finished: %zu of %zu tasks answered right.",
+                lessons.answered_count(), lessons.task_count());
+  ImGui::TextUnformatted(line);
+  ImGui::BeginChild("summary", ImVec2(0, box_height), true);
+  std::size_t number = 0;
+  for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+    const LessonStep& step = lesson.steps[i];
+    if (!step.task) continue;
+    ImGui::PushID(int(i));
+    std::snprintf(line, sizeof line, "Task %zu (step %zu)", ++number, i + 1);
+    ImGui::TextColored(colour_vec4(palette.lesson_title), "%s", line);
+    draw_lesson_prose(state, step.task->prompt);
+    const StepAnswer* a = nullptr;
+    if (progress) {
+      const auto found = progress->answers.find(i);
+      if (found != progress->answers.end()) a = &found->second;
+    }
+    if (!a) {
+      ImGui::TextDisabled("Not answered.");
+    } else {
+      const std::string verdict = !a->correct ? "recorded (a prediction is not marked)"
+                                  : *a->correct ? "right"
+                                                : "not right yet";
+      std::string text = "Your answer: " + a->answer + " \u2014 " + verdict;
+      if (a->tries > 1) text += " (after " + std::to_string(a->tries) + " tries)";
+      ImGui::PushStyleColor(ImGuiCol_Text, marking_colour(a->correct));
+      draw_prose(text);
+      ImGui::PopStyleColor();
+    }
+    ImGui::Spacing();
+    ImGui::PopID();
+  }
+  ImGui::EndChild();
+  if (ImGui::Button("Restart lesson")) show_lesson_scene(state, lessons.restart());
+  if (const Lesson* next = lessons.next_lesson()) {
+    const std::string label = "Next lesson: " + next->title + "##next-lesson";
+    if (button_in_row(label.c_str())) open_lesson(state, *next);
+  }
 }
 
 }  // namespace
 
-void draw_lesson(AppState& state, float step_height) {
+bool draw_hidden_by_lesson(const AppState& state, LessonHidden what) {
+  if (!state.lessons.hides(what)) return false;
+  const char* name = what == LessonHidden::readouts ? "The read-outs are"
+                     : what == LessonHidden::card   ? "The particle's card is"
+                                                    : "The plots are";
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextDisabled("%s hidden until you answer the lesson's question: it would give the "
+                      "answer away.", name);
+  ImGui::PopTextWrapPos();
+  return true;
+}
+
+void draw_lesson(AppState& state, float height) {
   LessonSession& lessons = state.lessons;
   const Lesson* lesson = lessons.open_lesson();
   if (!lesson) return;
+  const Palette& palette = current_palette();
+  const float font = ImGui::GetFontSize();
   ImGui::PushID("lesson");
-  ImGui::TextColored(kEmphasis, "%s", lesson->title.c_str());
+  const float top = ImGui::GetCursorPosY();
+  // A new step (or the summary) opens at its top, in the text box and in the panel around it.
+  const int shown = lessons.showing_summary() ? -1 : int(lessons.step());
+  int& last_shown = *ImGui::GetStateStorage()->GetIntRef(ImGui::GetID("shown-step"), -2);
+  const ImGuiID lesson_key = ImGui::GetID(lesson->id.c_str());
+  int& last_lesson = *ImGui::GetStateStorage()->GetIntRef(ImGui::GetID("shown-lesson"), 0);
+  const bool new_page = shown != last_shown || int(lesson_key) != last_lesson;
+  last_shown = shown, last_lesson = int(lesson_key);
+  if (new_page) ImGui::SetScrollY(0);
+
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette.lesson_title));
+  ImGui::PushTextWrapPos(0);
+  ImGui::TextUnformatted(lesson->title.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
   const std::size_t step = lessons.step(), steps = lesson->steps.size();
-  char progress[48];
-  std::snprintf(progress, sizeof progress, "step %zu of %zu", step + 1, steps);
-  ImGui::ProgressBar(float(step + 1) / float(steps), ImVec2(-1, 0), progress);
+  if (!lessons.showing_summary()) {
+    char progress[48];
+    std::snprintf(progress, sizeof progress, "step %zu of %zu", step + 1, steps);
+    ImGui::ProgressBar(float(step + 1) / float(steps), ImVec2(-1, 0), progress);
+  }
   if (!lessons.error.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kWrong);
+    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette.feedback_wrong));
     draw_prose(lessons.error);
     ImGui::PopStyleColor();
   }
-  ImGui::BeginChild("step", ImVec2(0, step_height), true);
-  const LessonStep& s = lesson->steps[step];
-  draw_prose(s.text);
-  if (s.task) draw_task(state, *s.task);
-  ImGui::EndChild();
-  ImGui::BeginDisabled(step == 0);
-  if (ImGui::Button("\u2190 Back")) show_lesson_scene(state, lessons.back());
-  ImGui::EndDisabled();
-  ImGui::SameLine();
+  // The text box takes what the task area, the buttons and the title leave, and at least four
+  // lines: on a short screen the text scrolls in its box while the task stays in view.
+  const float box = std::max(4 * ImGui::GetTextLineHeightWithSpacing() +
+                                 2 * ImGui::GetStyle().WindowPadding.y,
+                             height - chrome_height());
   bool close = false;
-  if (step + 1 < steps) {
-    if (ImGui::Button("Next \u2192")) show_lesson_scene(state, lessons.next());
-  } else if (ImGui::Button("Finish")) {
-    close = true;
+  if (lessons.showing_summary()) {
+    draw_summary(state, box);
+    if (button_in_row("Close lesson")) close = true;
+  } else {
+    const LessonStep& s = lesson->steps[step];
+    ImGui::BeginChild("step", ImVec2(0, box), true);
+    if (new_page) ImGui::SetScrollY(0);
+    draw_lesson_prose(state, s.text);
+    // The step's text is all the box holds: shorter text leaves the rest of the box empty
+    // rather than pushing the task down and up from step to step.
+    ImGui::EndChild();
+    bool feedback = false;
+    if (s.task) {
+      ImGui::Separator();
+      feedback = draw_task(state, *s.task);
+    }
+    // Feedback that has just appeared is brought into view in a panel that scrolls.
+    int& last_answers = *ImGui::GetStateStorage()->GetIntRef(ImGui::GetID("answers"), 0);
+    if (feedback && int(lessons.answer_count()) != last_answers) ImGui::SetScrollHereY(1.0f);
+    last_answers = int(lessons.answer_count());
+    ImGui::BeginDisabled(step == 0);
+    if (ImGui::Button("\u2190 Back")) show_lesson_scene(state, lessons.back());
+    ImGui::EndDisabled();
+    if (step + 1 < steps) {
+      if (button_in_row("Next \u2192")) show_lesson_scene(state, lessons.next());
+    } else if (button_in_row("Finish")) {
+      lessons.finish();
+    }
+    if (button_in_row("Close lesson")) close = true;
   }
-  ImGui::SameLine();
-  if (ImGui::Button("Close lesson")) close = true;
+  if (lessons.share) {
+    if (button_in_row("Share lesson")) lessons.share(lessons.share_fragment());
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("A link that opens this lesson for a student: copied, and shown on the page");
+  }
+  // What is not the text box, for the next frame's box height.
+  chrome_height() = ImGui::GetCursorPosY() - top - box + 0.25f * font;
   ImGui::PopID();
   if (close) lessons.close();
 }
@@ -197,9 +346,7 @@ void draw_lesson(AppState& state, float step_height) {
 void draw_lessons_menu(AppState& state) {
   if (!ImGui::BeginMenu("Lessons")) return;
   for (const Lesson& l : state.lessons.shipped()) {
-    const LessonProgress* p = state.lessons.progress_of(l.id);
-    const std::string done =
-        p ? std::to_string(p->solved.size()) + "/" + std::to_string(l.steps.size()) : "";
+    const std::string done = progress_note(l, state.lessons.progress_of(l.id));
     const Lesson* open = state.lessons.open_lesson();
     if (ImGui::MenuItem(l.title.c_str(), done.c_str(), open && open->id == l.id))
       open_lesson(state, l);
@@ -225,7 +372,7 @@ void draw_welcome_window(AppState& state) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     keep_inside_viewport();
     ImGui::PushTextWrapPos(0);
-    ImGui::TextColored(kEmphasis, "Welcome to Swarm Lab");
+    ImGui::TextColored(colour_vec4(current_palette().lesson_title), "Welcome to Swarm Lab");
     draw_prose(
         "Particles that pull on each other like springs (F = J m\u2081 m\u2082 r), solved "
         "exactly. The *3D view*: drag to turn it, scroll or pinch to zoom, right-drag or "
@@ -235,7 +382,7 @@ void draw_welcome_window(AppState& state) {
         "the tabs below) the *Controls* (the scenario, the masses, the container, the method) "
         "and live *Plots* with the *Instruments*: a stopwatch and a period meter.");
     ImGui::Spacing();
-    ImGui::TextColored(kEmphasis, "Three things to try");
+    ImGui::TextColored(colour_vec4(current_palette().lesson_title), "Three things to try");
     draw_prose("1. Press *Space* to pause and play; click a ball and watch all four close their "
                "orbits together.");
     draw_prose("2. Open *Scenario* and pick the repulsive fireball: the push turns into a gas "
@@ -243,7 +390,7 @@ void draw_welcome_window(AppState& state) {
     draw_prose("3. In *Controls \u2192 System*, change a mass and see the period in the "
                "read-outs change.");
     ImGui::Spacing();
-    ImGui::TextColored(kEmphasis, "Lessons (10 to 20 minutes each)");
+    ImGui::TextColored(colour_vec4(current_palette().lesson_title), "Lessons (10 to 20 minutes each)");
     for (const Lesson& l : lessons.shipped()) {
       ImGui::PushID(l.id.c_str());
       if (ImGui::Button("Start")) {

@@ -14,6 +14,10 @@ void draw_lesson(AppState& state, float step_height);
 void draw_welcome_window(AppState& state);
 /// The Lessons menu of the menu bar: every shipped lesson, and the welcome.
 void draw_lessons_menu(AppState& state);
+/// Where the open lesson's step hides `what` (lesson.h, LessonHidden) until its question is
+/// answered: draws one line saying so in its place and returns true; false (nothing drawn)
+/// when it is shown. The read-outs, the particle card and the plots call it first.
+bool draw_hidden_by_lesson(const AppState& state, LessonHidden what);
 /// Lesson text: paragraphs split by a blank line, *emphasis* in the accent colour, wrapped
 /// to the window.
 void draw_prose(const std::string& text);

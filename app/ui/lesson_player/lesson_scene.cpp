@@ -1,5 +1,7 @@
 #include "ui/lesson_player/lesson_scene.h"
 
+#include <cmath>
+
 namespace swarmlab {
 namespace {
 
@@ -58,6 +60,18 @@ std::string open_lesson_id(AppState& app, const std::string& id) {
   std::string error = app.lessons.open_id(id, &scene);
   if (error.empty()) show_lesson_scene(app, scene);
   return error;
+}
+
+void keep_lesson_run_going(AppState& app) {
+  const LessonStep* s = app.lessons.run_step();
+  if (!s || !app.run->finished() || !app.run->primary().failure().empty()) return;
+  if (s->run_loop) {
+    app.restart();
+    return;
+  }
+  const double dt = app.preset.dt, t = app.run->time();
+  if (s->run_until && t < *s->run_until - 0.5 * dt)
+    app.run->extend(long(std::ceil((*s->run_until - t) / dt)));
 }
 
 Marking answer_lesson_option(AppState& app, std::size_t option) {

@@ -22,4 +22,10 @@ std::string open_lesson_id(AppState& app, const std::string& id);
 /// Marks a picked option; a prediction plays the run.
 Marking answer_lesson_option(AppState& app, std::size_t option);
 
+/// Called each frame after the run advanced while playing: a step that sets how long its run
+/// lasts keeps it going, so that it never ends while the student reads. "loop" starts a run
+/// that has ended again from its first moment; "until" continues a run that ended before
+/// that time up to it.
+void keep_lesson_run_going(AppState& app);
+
 }  // namespace swarmlab

@@ -9,6 +9,7 @@
 
 #include "files/atomic_file.h"
 #include "lessons/lesson_file.h"
+#include "lessons/lesson_link.h"
 #include "swarm/measure/thermometry.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
@@ -74,6 +75,18 @@ std::unique_ptr<ProgressStore> make_file_progress_store() {
   return std::make_unique<FileProgressStore>();
 }
 
+std::string progress_note(const Lesson& lesson, const LessonProgress* p) {
+  if (!p) return {};
+  if (p->finished) return "done";
+  std::size_t tasks = 0, right = 0;
+  for (std::size_t i = 0; i < lesson.steps.size(); ++i)
+    if (lesson.steps[i].task) {
+      ++tasks;
+      right += p->solved.count(i);
+    }
+  return std::to_string(right) + "/" + std::to_string(tasks) + " tasks";
+}
+
 void LessonSession::load(const std::string& lesson_directory, std::unique_ptr<ProgressStore> store,
                          const PresetLookup& lookup) {
   lookup_ = lookup;
@@ -99,6 +112,15 @@ void LessonSession::load(const std::string& lesson_directory, std::unique_ptr<Pr
           for (const auto& [step, option] : p["predicted"].items())
             if (option.is_number_unsigned())
               lp.predicted[std::size_t(std::atol(step.c_str()))] = option.get<std::size_t>();
+        if (p.contains("answers") && p["answers"].is_object())
+          for (const auto& [step, a] : p["answers"].items()) {
+            if (!a.is_object() || !a.contains("answer") || !a["answer"].is_string()) continue;
+            StepAnswer& sa = lp.answers[std::size_t(std::atol(step.c_str()))];
+            sa.answer = a["answer"].get<std::string>();
+            if (a.contains("correct") && a["correct"].is_boolean()) sa.correct = a["correct"].get<bool>();
+            if (a.contains("tries") && a["tries"].is_number_unsigned()) sa.tries = a["tries"].get<std::size_t>();
+          }
+        lp.finished = p.value("finished", false) == true;
       }
   }
   // The welcome is shown once: on the first start, whether or not it is closed.
@@ -114,7 +136,13 @@ void LessonSession::save_progress() {
   for (const auto& [id, p] : progress_) {
     json predicted = json::object();
     for (const auto& [step, option] : p.predicted) predicted[std::to_string(step)] = option;
-    lessons[id] = {{"step", p.step}, {"solved", p.solved}, {"predicted", predicted}};
+    json answers = json::object();
+    for (const auto& [step, a] : p.answers)
+      answers[std::to_string(step)] = {{"answer", a.answer},
+                                       {"correct", a.correct ? json(*a.correct) : json(nullptr)},
+                                       {"tries", a.tries}};
+    lessons[id] = {{"step", p.step},       {"solved", p.solved},     {"predicted", predicted},
+                   {"answers", answers},   {"finished", p.finished}};
   }
   store_->save(json{{"version", 1}, {"welcomed", welcomed_}, {"lessons", lessons}}.dump());
 }
@@ -133,6 +161,10 @@ const LessonProgress* LessonSession::progress_of(const std::string& id) const {
 LessonScene LessonSession::open(const Lesson& lesson) {
   open_ = lesson;
   error.clear();
+  summary_ = false;
+  open_json_.clear();
+  open_is_shipped_ = false;
+  for (const Lesson& l : shipped_) open_is_shipped_ = open_is_shipped_ || l.id == lesson.id;
   const LessonProgress* p = progress_of(lesson.id);
   // The scene of the step resumed at is set even when it has no preset of its own, and even
   // when the same lesson was open.
@@ -144,6 +176,10 @@ std::string LessonSession::open_json(const std::string& text, LessonScene* scene
   const LessonParse parsed = parse_lesson(text, lookup_);
   if (!parsed.lesson) return parsed.error;
   *scene = open(*parsed.lesson);
+  // A lesson from a link or a file is shared as the JSON it came in, even when its id is a
+  // shipped one's.
+  open_is_shipped_ = false;
+  open_json_ = text;
   return {};
 }
 
@@ -160,10 +196,81 @@ void LessonSession::close() {
   open_.reset();
   scene_.reset();
   marking_.reset();
+  summary_ = false;
+}
+
+void LessonSession::finish() {
+  if (!open_) return;
+  progress_[open_->id].finished = true;
+  summary_ = true;
+  marking_.reset();
+  save_progress();
+}
+
+LessonScene LessonSession::restart() {
+  if (!open_) return {};
+  progress_[open_->id] = LessonProgress{};
+  summary_ = false;
+  scene_.reset();  // step 1's preset opens again, from its start
+  return go_to(0);
+}
+
+const Lesson* LessonSession::next_lesson() const {
+  if (!open_ || !open_is_shipped_) return nullptr;
+  for (std::size_t i = 0; i + 1 < shipped_.size(); ++i)
+    if (shipped_[i].id == open_->id) return &shipped_[i + 1];
+  return nullptr;
+}
+
+bool LessonSession::hides(LessonHidden what) const {
+  const LessonStep* s = current_step();
+  if (!s || summary_ || !s->hides(what)) return false;
+  if (!s->task) return true;
+  const LessonProgress* p = progress_of(open_->id);
+  return !(p && p->solved.count(step_));
+}
+
+const LessonStep* LessonSession::run_step() const {
+  if (!open_ || summary_) return nullptr;
+  for (std::size_t i = step_ + 1; i-- > 0;) {
+    const LessonStep& s = open_->steps[i];
+    if (s.run_until || s.run_loop) return &s;
+    if (s.preset) break;  // an earlier step's run belongs to another scene
+  }
+  return nullptr;
+}
+
+std::size_t LessonSession::task_count() const {
+  std::size_t n = 0;
+  if (open_)
+    for (const LessonStep& s : open_->steps) n += s.task ? 1 : 0;
+  return n;
+}
+
+std::size_t LessonSession::answered_count() const {
+  if (!open_) return 0;
+  const LessonProgress* p = progress_of(open_->id);
+  std::size_t n = 0;
+  if (p)
+    for (std::size_t i : p->solved) n += i < open_->steps.size() && open_->steps[i].task ? 1 : 0;
+  return n;
+}
+
+std::string LessonSession::share_fragment() const {
+  if (!open_) return {};
+  return lesson_link_fragment(open_is_shipped_ ? open_->id : std::string(), open_json_);
+}
+
+void LessonSession::record_answer(const std::string& answer, const std::optional<bool>& correct) {
+  StepAnswer& a = progress_[open_->id].answers[step_];
+  a.answer = answer;
+  a.correct = correct;
+  ++a.tries;
 }
 
 LessonScene LessonSession::go_to(std::size_t i) {
   if (!open_) return {};
+  summary_ = false;
   step_ = std::min(i, open_->steps.size() - 1);
   marking_.reset();
   typed.clear();
@@ -223,11 +330,17 @@ Marking LessonSession::answer_number(LiveRun& run, double value) {
     marking_ = Marking{std::nullopt, "This step asks for no number."};
     return *marking_;
   }
-  marking_ = mark_measurement(*s->task, value, reading(run));
-  if (marking_->correct && *marking_->correct) {
-    progress_[open_->id].solved.insert(step_);
-    save_progress();
+  ++answer_count_;
+  const bool repulsive = swarm::stiffness(run.system()) < 0;
+  marking_ = mark_measurement(*s->task, value, reading(run),
+                              quantity_symbol(s->task->quantity, repulsive));
+  if (std::isfinite(value)) {
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%.6g", value);
+    record_answer(shown, marking_->correct);
   }
+  if (marking_->correct && *marking_->correct) progress_[open_->id].solved.insert(step_);
+  save_progress();
   return *marking_;
 }
 
@@ -237,7 +350,9 @@ Marking LessonSession::answer_option(std::size_t option, bool* play) {
     marking_ = Marking{std::nullopt, "This step has no options to pick from."};
     return *marking_;
   }
+  ++answer_count_;
   marking_ = mark_option(*s->task, option);
+  if (option < s->task->options.size()) record_answer(s->task->options[option], marking_->correct);
   LessonProgress& p = progress_[open_->id];
   if (s->task->kind == LessonTask::Kind::predict && option < s->task->options.size()) {
     p.predicted[step_] = option;

@@ -5,6 +5,7 @@
 // play. The values a measure task is checked against are read from the running simulation
 // through the core. lesson_panel.cpp draws it.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -31,12 +32,25 @@ std::unique_ptr<ProgressStore> make_memory_progress_store(std::string initial = 
 /// $XDG_CONFIG_HOME/swarmlab/progress.json (or ~/.config/...), written atomically.
 std::unique_ptr<ProgressStore> make_file_progress_store();
 
+/// A student's last answer to one step's task, for the summary.
+struct StepAnswer {
+  std::string answer;            ///< the number typed or the option picked, as shown
+  std::optional<bool> correct;   ///< none for a prediction (recorded, not marked)
+  std::size_t tries = 0;         ///< answers given to this task so far
+};
+
 /// What a student did in one lesson.
 struct LessonProgress {
   std::size_t step = 0;                        ///< where they were
   std::set<std::size_t> solved;                ///< steps whose task they answered right
   std::map<std::size_t, std::size_t> predicted;  ///< step -> the option they predicted
+  std::map<std::size_t, StepAnswer> answers;   ///< step -> the last answer to its task
+  bool finished = false;                       ///< Finish was pressed on the last step
 };
+
+/// The Lessons menu's note on a lesson: "done" once finished, else the tasks answered right of
+/// the tasks it has ("2/5 tasks"; steps without a task do not count), "" before a start.
+std::string progress_note(const Lesson& lesson, const LessonProgress* progress);
 
 /// What the app is to show for a step (lesson_scene.h sets it): the preset to open when the
 /// step's scene changes, then the step's plot, selection and overlay.
@@ -72,6 +86,31 @@ class LessonSession {
   LessonScene go_to(std::size_t i);
   LessonScene next() { return go_to(step_ + 1); }
   LessonScene back() { return go_to(step_ > 0 ? step_ - 1 : 0); }
+  /// Finish on the last step: the lesson is recorded as finished and its summary shown.
+  void finish();
+  /// Whether the summary (each task, the answer, right or not) is shown in place of a step.
+  bool showing_summary() const { return open_ && summary_; }
+  /// The lesson from step 1 again, its answers forgotten: the scene of step 1 (its preset
+  /// opens again).
+  LessonScene restart();
+  /// The shipped lesson after the open one, none after the last (or for a lesson from a link).
+  const Lesson* next_lesson() const;
+  /// Whether the current step keeps `what` off the screen now: it hides it, and its task (if
+  /// any) is not yet answered (right, or a prediction made).
+  bool hides(LessonHidden what) const;
+  /// The step whose "run" (how long the run lasts) applies now: the current step's, else that of
+  /// the last step before it in the same scene (a step with a preset starts a new scene). None
+  /// when no step of the scene sets it, and while the summary shows.
+  const LessonStep* run_step() const;
+  /// How many of the open lesson's steps have a task, and how many of them are answered.
+  std::size_t task_count() const;
+  std::size_t answered_count() const;
+  /// The link fragment that opens the open lesson for a student (lesson_link.h): its id when it
+  /// is shipped, else its JSON as opened. "" with no lesson open.
+  std::string share_fragment() const;
+  /// Set by the browser: makes the page's link from a fragment, copies and shows it (the
+  /// lesson panel's Share button). Unset on the desktop, which has no page to link to.
+  std::function<void(const std::string& fragment)> share;
   /// The running simulation's value of what the current measure task asks for (NaN when the
   /// running system has none, e.g. a period with J <= 0).
   double reading(LiveRun& run) const;
@@ -80,6 +119,9 @@ class LessonSession {
   /// Marks a picked option (choice), or records a prediction and sets *play: the run goes on.
   Marking answer_option(std::size_t option, bool* play);
   const std::optional<Marking>& marking() const { return marking_; }
+  /// Answers given since the app started: the panel brings new feedback into view when it
+  /// changes.
+  std::size_t answer_count() const { return answer_count_; }
   /// The prediction made in the current step, if any (kept over visits).
   std::optional<std::size_t> prediction() const;
 
@@ -101,6 +143,11 @@ class LessonSession {
   std::size_t step_ = 0;
   std::optional<std::size_t> scene_;  ///< the step whose preset the lesson opened last
   std::optional<Marking> marking_;
+  bool summary_ = false;
+  std::size_t answer_count_ = 0;
+  bool open_is_shipped_ = false;  ///< the open lesson is a shipped one (shared by its id)
+  std::string open_json_;         ///< the JSON a lesson from a link or file was opened from
+  void record_answer(const std::string& answer, const std::optional<bool>& correct);
   std::map<std::string, LessonProgress> progress_;
   bool welcomed_ = false;
   std::unique_ptr<ProgressStore> store_ = make_memory_progress_store();

@@ -35,6 +35,8 @@ void draw_stopwatch(AppState& state) {
   // button moves while a finger is on it.
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("Stopwatch");
+  // Times in periods would give the period away where a lesson step hides the read-outs.
+  const double k_shown = state.lessons.hides(LessonHidden::readouts) ? 0 : k;
   help_marker(
       "Measures simulated time: pausing the simulation pauses it, and it runs as fast as the "
       "simulation. In periods 2\u03c0/\u03c9 = 2\u03c0/\u221a(J M) when J > 0; for J \u2264 0 "
@@ -54,7 +56,7 @@ void draw_stopwatch(AppState& state) {
   same_line_if_fits(target_width("Reset"));
   if (ImGui::Button("Reset##stopwatch", ImVec2(target_width("Reset"), 0))) w.reset();
   char text[96];
-  format_time(text, sizeof text, w.elapsed(), k);
+  format_time(text, sizeof text, w.elapsed(), k_shown);
   ImGui::Text("  %s", text);
   if (swarm::regime_of(k) != swarm::Regime::attractive)
     ImGui::TextDisabled("J \u2264 0: the motion has no period");
@@ -62,7 +64,7 @@ void draw_stopwatch(AppState& state) {
   for (std::size_t i = laps.size() > kLapsShown ? laps.size() - kLapsShown : 0; i < laps.size();
        ++i) {
     const double split = laps[i] - (i > 0 ? laps[i - 1] : 0.0);
-    format_time(text, sizeof text, split, k);
+    format_time(text, sizeof text, split, k_shown);
     ImGui::Text("  lap %zu: %s", i + 1, text);
   }
 }
@@ -93,11 +95,14 @@ void draw_period_meter(AppState& state) {
     case swarm::PeriodStatus::measured:
       ImGui::Text("measured  %.6g  (%d period%s timed)", *m.period(), m.periods_measured(),
                   m.periods_measured() == 1 ? "" : "s");
-      ImGui::Text("formula   %.6g  = 2\u03c0/\u221a(J M)", *m.formula_period());
-      ImGui::Text("difference %+.2e  (relative)", *m.relative_difference());
+      // The formula's value is a read-out: a lesson step that hides them hides it too.
+      if (!state.lessons.hides(LessonHidden::readouts)) {
+        ImGui::Text("formula   %.6g  = 2\u03c0/\u221a(J M)", *m.formula_period());
+        ImGui::Text("difference %+.2e  (relative)", *m.relative_difference());
+      }
       break;
   }
-  if (m.status() == swarm::PeriodStatus::measuring)
+  if (m.status() == swarm::PeriodStatus::measuring && !state.lessons.hides(LessonHidden::readouts))
     ImGui::TextDisabled("formula 2\u03c0/\u221a(J M) = %.6g", *m.formula_period());
   if (m.gaps() > 0)
     ImGui::TextColored(kNote, "%d jump(s) too long to time across (over a quarter period)",

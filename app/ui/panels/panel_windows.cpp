@@ -47,19 +47,29 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
                         LessonTabStep* lesson_tab_step) {
   AppState& s = state;
   const ScreenLayout& l = layout;
-  const float font = ImGui::GetFontSize();
   const ImGuiWindowFlags panel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                  ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
-  if (l.controls.shown()) {
+  if (l.controls.shown() && s.layout.controls) {
     place(l.controls);
     if (ImGui::Begin("Controls", &s.layout.controls, panel)) {
       touch_scroll(touch);
+      // The lesson at the top, its text box, task and buttons within 60% of the panel.
       if (s.lessons.open_lesson() &&
           ImGui::CollapsingHeader("Lesson", ImGuiTreeNodeFlags_DefaultOpen))
-        draw_lesson(s, std::min(16 * font, 0.45f * l.controls.height));
+        draw_lesson(s, 0.6f * l.controls.height);
       draw_controls(s);
     }
     record_panel(s, "Controls");
+    ImGui::End();
+  } else if (l.controls.shown()) {
+    // The controls are closed (presentation mode closes them) but a lesson is open: its column
+    // shows the lesson alone (app.cpp keeps the column while a lesson is open).
+    place(l.controls);
+    if (ImGui::Begin("Lesson", nullptr, panel)) {
+      touch_scroll(touch);
+      draw_lesson(s, ImGui::GetContentRegionAvail().y);
+    }
+    record_panel(s, "Lesson");
     ImGui::End();
   }
   if (l.plots.shown()) {
@@ -95,8 +105,7 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
         if (step.first && ImGui::BeginTabItem("Lesson", nullptr, lesson_flags)) {
           if (ImGui::BeginChild("Lesson")) {
             touch_scroll(touch);
-            draw_lesson(s, std::max(8 * font, ImGui::GetContentRegionAvail().y -
-                                                  3 * ImGui::GetFrameHeightWithSpacing()));
+            draw_lesson(s, ImGui::GetContentRegionAvail().y);
           }
           record_panel(s, "Lesson");
           ImGui::EndChild();

@@ -8,6 +8,7 @@
 
 #include "swarm/physics/particle_orbit.h"
 #include "swarm/physics/system.h"
+#include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {
@@ -46,6 +47,7 @@ void draw_particle_card(AppState& state) {
       s.particles[i], swarm::cm_position(s), swarm::cm_velocity(s), swarm::stiffness(s));
   const std::string title = "Particle " + std::to_string(i + 1) + "###particle_card";
   if (!ImGui::CollapsingHeader(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (draw_hidden_by_lesson(state, LessonHidden::card)) return;
   const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
   if (!ImGui::BeginTable("particle_card", 2, flags)) return;
   row("m", number("%.5g", o.m), "Its mass. Its spring to the centre of mass is k = J M m.");

@@ -11,6 +11,7 @@
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/wall.h"
+#include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/parallel_dom/parallel_dom.h"
 
@@ -94,6 +95,7 @@ void wall_rows(const swarm::WallEstimate& w) {
 
 void draw_readouts(AppState& state) {
   if (!ImGui::CollapsingHeader("Read-outs", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (draw_hidden_by_lesson(state, LessonHidden::readouts)) return;
   // The O(N) diagnostics below only run while the section is open.
   const swarm::System& s = state.run->system();
   const double M = swarm::total_mass(s);

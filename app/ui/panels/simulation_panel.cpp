@@ -137,7 +137,10 @@ void draw_transport_bar(AppState& state) {
   draw_time_buttons(state);
   const double t = state.run->time();
   const double k = swarm::stiffness(state.run->system());
-  ImGui::TextUnformatted(labels::clock_text(state.preset, k, t).c_str());
+  // The clock in periods (omega t / 2 pi) would give the period away where a lesson step hides
+  // the read-outs: then it shows t alone.
+  const double k_shown = state.lessons.hides(LessonHidden::readouts) ? 0 : k;
+  ImGui::TextUnformatted(labels::clock_text(state.preset, k_shown, t).c_str());
   item_tooltip(
         "Simulated time; for an isolated system also in periods of the common oscillation "
         "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "

@@ -10,6 +10,7 @@
 
 #include "swarm/physics/regime.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/fit_quality.h"
 #include "ui/plots/plot_widget.h"
@@ -294,7 +295,7 @@ void draw_plots_panel(AppState& state) {
     const float height =
         std::max(8 * ImGui::GetFontSize(),
                  available / float(d.plot_count(state)) - ImGui::GetStyle().ItemSpacing.y);
-    d.draw(state, height);
+    if (!draw_hidden_by_lesson(state, LessonHidden::plots)) d.draw(state, height);
     ImGui::EndTabItem();
   }
   state.plots.tab.reset();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "lessons/lesson_file.h"
+#include "lessons/lesson_link.h"
 
 namespace swarmlab {
 namespace {
@@ -86,6 +87,102 @@ TEST_CASE("lesson session: a lesson opens where the student left it") {
   CHECK(again.step() == 3);
   REQUIRE(resumed.preset_step);
   CHECK(resumed.location == "my-fig1-four-masses.json");
+}
+
+TEST_CASE("lesson session: a step hides what gives its answer away until it is answered") {
+  LessonSession session = loaded();
+  const LessonScene scene = session.open(shipped_lesson(session, "one-period"));
+  LiveRun run(*scene.preset_step->preset);
+  CHECK_FALSE(session.hides(LessonHidden::readouts));  // step 1 asks nothing
+  session.next();  // "How long is one turn?": the read-outs and the card show the period
+  CHECK(session.hides(LessonHidden::readouts));
+  CHECK(session.hides(LessonHidden::card));
+  CHECK_FALSE(session.hides(LessonHidden::plots));
+  session.answer_number(run, 1.0);  // wrong: still hidden
+  CHECK(session.hides(LessonHidden::readouts));
+  session.answer_number(run, session.reading(run));
+  CHECK_FALSE(session.hides(LessonHidden::readouts));
+  // The prediction step hides them until the prediction is made.
+  session.next();
+  CHECK(session.hides(LessonHidden::readouts));
+  bool play = false;
+  session.answer_option(2, &play);
+  CHECK_FALSE(session.hides(LessonHidden::readouts));
+}
+
+TEST_CASE("lesson session: Finish shows a summary of each answer; Restart starts afresh") {
+  LessonSession session = loaded();
+  const Lesson& lesson = shipped_lesson(session, "springs-to-cm");
+  session.open(lesson);
+  bool play = false;
+  session.answer_option(0, &play);  // step 1: wrong, then right
+  session.answer_option(1, &play);
+  session.go_to(1);
+  session.answer_option(1, &play);  // a prediction
+  session.go_to(lesson.steps.size() - 1);
+  CHECK(progress_note(lesson, session.progress_of(lesson.id)) == "2/5 tasks");
+  CHECK_FALSE(session.showing_summary());
+  session.finish();
+  CHECK(session.showing_summary());
+  const LessonProgress& p = *session.progress_of(lesson.id);
+  CHECK(p.finished);
+  // Finished lessons do not look unfinished in the menu (finding 15).
+  CHECK(progress_note(lesson, &p) == "done");
+  REQUIRE(p.answers.count(0));
+  CHECK(p.answers.at(0).answer == lesson.steps[0].task->options[1]);
+  CHECK(*p.answers.at(0).correct);
+  CHECK(p.answers.at(0).tries == 2);
+  REQUIRE(p.answers.count(1));
+  CHECK_FALSE(p.answers.at(1).correct);  // recorded, not marked
+  CHECK(session.answered_count() == 2);
+  CHECK(session.task_count() == 5);
+  // The next shipped lesson in order.
+  REQUIRE(session.next_lesson());
+  CHECK(session.next_lesson()->id == "repulsive-runaway");
+  // Restart: step 1, its preset again, nothing answered.
+  const LessonScene again = session.restart();
+  CHECK_FALSE(session.showing_summary());
+  CHECK(session.step() == 0);
+  CHECK(again.preset_step == again.step);
+  CHECK(session.progress_of(lesson.id)->answers.empty());
+  CHECK_FALSE(session.progress_of(lesson.id)->finished);
+}
+
+TEST_CASE("lesson session: answers and the finish are kept over visits") {
+  LessonSession first = loaded();
+  std::string saved;
+  {
+    auto store = make_memory_progress_store();
+    ProgressStore* raw = store.get();
+    first.load(SWARM_LESSON_DIR, std::move(store), shipped_preset_lookup(SWARM_PRESET_DIR));
+    const Lesson& lesson = shipped_lesson(first, "springs-to-cm");
+    first.open(lesson);
+    bool play = false;
+    first.answer_option(1, &play);
+    first.finish();
+    saved = raw->load();
+  }
+  LessonSession again = loaded(saved);
+  const LessonProgress* p = again.progress_of("springs-to-cm");
+  REQUIRE(p);
+  CHECK(p->finished);
+  REQUIRE(p->answers.count(0));
+  CHECK(*p->answers.at(0).correct);
+}
+
+TEST_CASE("lesson session: Share links a shipped lesson by id and a lesson from a link by its JSON") {
+  LessonSession session = loaded();
+  CHECK(session.share_fragment().empty());
+  session.open(shipped_lesson(session, "one-period"));
+  CHECK(session.share_fragment() == "#lesson=one-period");
+  CHECK(session.next_lesson() != nullptr);
+  const std::string json =
+      R"({"lesson": 1, "id": "mine", "title": "Mine", "summary": "A test.", "steps": [)"
+      R"({"text": "Hello.", "preset": "two-body-circular.json"}]})";
+  LessonScene scene;
+  REQUIRE(session.open_json(json, &scene).empty());
+  CHECK(session.share_fragment() == lesson_link_fragment("", json));
+  CHECK(session.next_lesson() == nullptr);  // not one of the shipped row
 }
 
 }  // namespace swarmlab
