@@ -7,6 +7,8 @@
 #include "lessons/device_words.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/lesson_player/lesson_scene.h"
+#include "ui/parallel_dom/item_tooltip.h"
+#include "ui/parallel_dom/parallel_dom.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -40,6 +42,11 @@ void keep_inside_viewport() {
 // [SECTION] prose ------------------------------------------------------------------------------
 
 void draw_prose(const std::string& text) {
+  // A screen reader reads it where it stands (the parallel DOM), without the emphasis marks.
+  std::string plain;
+  for (const char c : text)
+    if (c != '*') plain += c;
+  mirror_text(ItemRole::paragraph, plain);
   struct Piece {
     std::string text;
     bool emphasis;
@@ -119,6 +126,18 @@ void draw_feedback(const AppState& state, const Marking& m) {
   ImGui::PopStyleColor();
 }
 
+/// A heading in the lesson's title colour, also a heading for a screen reader.
+void heading(const char* text) {
+  mirror_text(ItemRole::heading, text);
+  ImGui::TextColored(colour_vec4(current_palette().lesson_title), "%s", text);
+}
+
+/// A short line in a colour, read as a paragraph.
+void coloured_line(const ImVec4& colour, const char* text) {
+  mirror_text(ItemRole::paragraph, text);
+  ImGui::TextColored(colour, "%s", text);
+}
+
 /// A button on the same line as the last item when it fits there, else on the next line: the
 /// row of buttons wraps on a phone rather than running off the panel.
 bool button_in_row(const char* label) {
@@ -162,6 +181,7 @@ bool draw_task(AppState& state, const LessonTask& task) {
       ImGui::PushID(int(i));
       const std::string label = "Pick " + std::string(1, char('A' + i)) + "##pick";
       if (ImGui::Button(label.c_str())) answer_lesson_option(state, i);
+      name_item(label.substr(0, 6) + ": " + device_words(task.options[i], input_kind(state)));
       ImGui::SameLine();
       draw_lesson_prose(state, task.options[i]);
       ImGui::PopID();
@@ -169,20 +189,22 @@ bool draw_task(AppState& state, const LessonTask& task) {
   } else {
     const std::optional<std::size_t> predicted = lessons.prediction();
     if (!predicted) {
+      mirror_text(ItemRole::paragraph, "The run waits for your prediction.");
       ImGui::TextDisabled("The run waits for your prediction.");
       for (std::size_t i = 0; i < task.options.size(); ++i) {
         ImGui::PushID(int(i));
         const std::string label = "Predict " + std::string(1, char('A' + i)) + "##predict";
         if (ImGui::Button(label.c_str())) answer_lesson_option(state, i);
+        name_item(label.substr(0, 9) + ": " + device_words(task.options[i], input_kind(state)));
         ImGui::SameLine();
         draw_lesson_prose(state, task.options[i]);
         ImGui::PopID();
       }
     } else {
-      ImGui::TextColored(colour_vec4(palette.feedback_note), "Your prediction:");
+      coloured_line(colour_vec4(palette.feedback_note), "Your prediction:");
       draw_lesson_prose(state, task.options[*predicted]);
       if (!task.outcome.empty()) {
-        ImGui::TextColored(colour_vec4(palette.feedback_note), "Now compare:");
+        coloured_line(colour_vec4(palette.feedback_note), "Now compare:");
         draw_lesson_prose(state, task.outcome);
       }
       return true;  // the outcome is already shown beside the prediction
@@ -209,6 +231,8 @@ void draw_summary(AppState& state, float box_height) {
   char line[96];
   std::snprintf(line, sizeof line, "Finished: %zu of %zu tasks answered right.",
                 lessons.answered_count(), lessons.task_count());
+  heading("Summary");
+  mirror_text(ItemRole::paragraph, line);
   ImGui::TextUnformatted(line);
   ImGui::BeginChild("summary", ImVec2(0, box_height), true);
   std::size_t number = 0;
@@ -217,7 +241,7 @@ void draw_summary(AppState& state, float box_height) {
     if (!step.task) continue;
     ImGui::PushID(int(i));
     std::snprintf(line, sizeof line, "Task %zu (step %zu)", ++number, i + 1);
-    ImGui::TextColored(colour_vec4(palette.lesson_title), "%s", line);
+    heading(line);
     draw_lesson_prose(state, step.task->prompt);
     const StepAnswer* a = nullptr;
     if (progress) {
@@ -225,6 +249,7 @@ void draw_summary(AppState& state, float box_height) {
       if (found != progress->answers.end()) a = &found->second;
     }
     if (!a) {
+      mirror_text(ItemRole::paragraph, "Not answered.");
       ImGui::TextDisabled("Not answered.");
     } else {
       const std::string verdict = !a->correct ? "recorded (a prediction is not marked)"
@@ -254,9 +279,12 @@ bool draw_hidden_by_lesson(const AppState& state, LessonHidden what) {
   const char* name = what == LessonHidden::readouts ? "The read-outs are"
                      : what == LessonHidden::card   ? "The particle's card is"
                                                     : "The plots are";
+  const std::string text = std::string(name) +
+                           " hidden until you answer the lesson's question: it would give the "
+                           "answer away.";
+  mirror_text(ItemRole::paragraph, text);
   ImGui::PushTextWrapPos(0);
-  ImGui::TextDisabled("%s hidden until you answer the lesson's question: it would give the "
-                      "answer away.", name);
+  ImGui::TextDisabled("%s", text.c_str());
   ImGui::PopTextWrapPos();
   return true;
 }
@@ -278,6 +306,7 @@ void draw_lesson(AppState& state, float height) {
   last_shown = shown, last_lesson = int(lesson_key);
   if (new_page) ImGui::SetScrollY(0);
 
+  mirror_text(ItemRole::heading, lesson->title);
   ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette.lesson_title));
   ImGui::PushTextWrapPos(0);
   ImGui::TextUnformatted(lesson->title.c_str());
@@ -287,6 +316,7 @@ void draw_lesson(AppState& state, float height) {
   if (!lessons.showing_summary()) {
     char progress[48];
     std::snprintf(progress, sizeof progress, "step %zu of %zu", step + 1, steps);
+    mirror_text(ItemRole::paragraph, "Step " + std::to_string(step + 1) + " of " + std::to_string(steps));
     ImGui::ProgressBar(float(step + 1) / float(steps), ImVec2(-1, 0), progress);
   }
   if (!lessons.error.empty()) {
@@ -332,8 +362,7 @@ void draw_lesson(AppState& state, float height) {
   }
   if (lessons.share) {
     if (button_in_row("Share lesson")) lessons.share(lessons.share_fragment());
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("A link that opens this lesson for a student: copied, and shown on the page");
+    item_tooltip("A link that opens this lesson for a student: copied, and shown on the page");
   }
   // What is not the text box, for the next frame's box height.
   chrome_height() = ImGui::GetCursorPosY() - top - box + 0.25f * font;
@@ -372,7 +401,7 @@ void draw_welcome_window(AppState& state) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     keep_inside_viewport();
     ImGui::PushTextWrapPos(0);
-    ImGui::TextColored(colour_vec4(current_palette().lesson_title), "Welcome to Swarm Lab");
+    heading("Welcome to Swarm Lab");
     draw_prose(
         "Particles that pull on each other like springs (F = J m\u2081 m\u2082 r), solved "
         "exactly. The *3D view*: drag to turn it, scroll or pinch to zoom, right-drag or "
@@ -382,7 +411,7 @@ void draw_welcome_window(AppState& state) {
         "the tabs below) the *Controls* (the scenario, the masses, the container, the method) "
         "and live *Plots* with the *Instruments*: a stopwatch and a period meter.");
     ImGui::Spacing();
-    ImGui::TextColored(colour_vec4(current_palette().lesson_title), "Three things to try");
+    heading("Three things to try");
     draw_prose("1. Press *Space* to pause and play; click a ball and watch all four close their "
                "orbits together.");
     draw_prose("2. Open *Scenario* and pick the repulsive fireball: the push turns into a gas "
@@ -390,13 +419,15 @@ void draw_welcome_window(AppState& state) {
     draw_prose("3. In *Controls \u2192 System*, change a mass and see the period in the "
                "read-outs change.");
     ImGui::Spacing();
-    ImGui::TextColored(colour_vec4(current_palette().lesson_title), "Lessons (10 to 20 minutes each)");
+    heading("Lessons (10 to 20 minutes each)");
     for (const Lesson& l : lessons.shipped()) {
       ImGui::PushID(l.id.c_str());
       if (ImGui::Button("Start")) {
         open_lesson(state, l);
         lessons.dismiss_welcome();
       }
+      name_item("Start: " + l.title);
+      describe_item(l.summary);
       ImGui::SameLine();
       ImGui::TextUnformatted(l.title.c_str());
       if (ImGui::IsItemHovered()) {

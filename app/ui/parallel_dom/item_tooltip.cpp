@@ -19,6 +19,10 @@ void item_tooltip(const char* format, ...) {
   parallel_dom().item_tooltip(ImGui::GetItemID(), text);
 }
 
+void describe_item(std::string_view description) {
+  parallel_dom().item_tooltip(ImGui::GetItemID(), description);
+}
+
 void name_item(std::string_view name) { parallel_dom().item_name(ImGui::GetItemID(), name); }
 
 }  // namespace swarmlab

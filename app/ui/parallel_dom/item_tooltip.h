@@ -12,6 +12,10 @@ namespace swarmlab {
 
 void item_tooltip(const char* format, ...) IM_FMTARGS(1);
 
+/// The description of the item just drawn, where its tooltip is drawn apart from it (the
+/// welcome shows a lesson's summary on hover over its title, beside its Start button).
+void describe_item(std::string_view description);
+
 /// The name of the item just drawn where it shows none (a field in a table cell, whose column
 /// header is its label on screen): "r x of particle 2".
 void name_item(std::string_view name);

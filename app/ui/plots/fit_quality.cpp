@@ -1,3 +1,4 @@
+#include "ui/parallel_dom/item_tooltip.h"
 #include "ui/plots/fit_quality.h"
 
 #include <imgui.h>
@@ -26,8 +27,7 @@ void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm:
 
   ImGui::Text("R\u00b2 = %.4f   Durbin-Watson = %.2f   (%zu stages)", fit.r_squared,
               judged.durbin_watson, fit.used.size());
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
+  item_tooltip(
         "R\u00b2: the share of the variance of ln y the line explains. Durbin-Watson: about 2 "
         "when the residuals scatter at random, near 0 when neighbours share their sign (a wave "
         "or a trend the power law does not follow).");

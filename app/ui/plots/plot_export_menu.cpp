@@ -1,3 +1,4 @@
+#include "ui/parallel_dom/item_tooltip.h"
 #include "ui/plots/plot_export_menu.h"
 
 #include <iterator>
@@ -52,7 +53,7 @@ void plot_export_buttons(const PlotSpec& spec, ImVec2 min, ImVec2 max) {
                                                          2 * style.FramePadding.x + style.ItemSpacing.x)
       ImGui::SameLine();
     if (ImGui::Button(kButtons[i].label)) request_plot_export(spec, kButtons[i].kind, min, max);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kButtons[i].tip);
+    item_tooltip("%s", kButtons[i].tip);
   }
 }
 

@@ -1,3 +1,4 @@
+#include "ui/parallel_dom/item_tooltip.h"
 #include "ui/time/timeline_strip.h"
 
 #include <imgui.h>
@@ -50,8 +51,7 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
   const ImVec2 clock_at = ImGui::GetCursorScreenPos();
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted(clock);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
+  item_tooltip(
         "The present time and the furthest time computed. Drag on the bar to go back to any "
         "moment: the same state to the last bit, recomputed from snapshots.");
   const float clock_width =
@@ -82,6 +82,7 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
   }
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("t = %.4g", double(scale.step_at(ImGui::GetIO().MousePos.x)) * dt);
+  name_item("Timeline: the present and the time reached; drag to go back to any moment");
 
   const Palette& colours = current_palette();
   const ImU32 track = colours.timeline_track.packed(), reached = colours.timeline_reached.packed(),
@@ -111,32 +112,30 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
     ImGui::ProgressBar(float(travel.progress(timeline.step())), ImVec2(12 * font, 0), label);
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) cancel_travel(state);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Esc: stop here");
+    item_tooltip("Esc: stop here");
   }
   ImGui::End();
 }
 
 void draw_time_buttons(AppState& state) {
   if (ImGui::Button("\u25c0|", ImVec2(target_width("\u25c0|"), 0))) step_back(state, false);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("B: one step back");
+  item_tooltip("B: one step back");
   same_line_if_fits(target_width("\u25c0\u25c0"));
   if (ImGui::Button("\u25c0\u25c0", ImVec2(target_width("\u25c0\u25c0"), 0)))
     step_back(state, true);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Left: back by 1/100 of a period");
+  item_tooltip("Left: back by 1/100 of a period");
   same_line_if_fits(target_width("\u25b6\u25b6"));
   if (ImGui::Button("\u25b6\u25b6", ImVec2(target_width("\u25b6\u25b6"), 0)))
     step_forward_coarse(state);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Right: on by 1/100 of a period");
+  item_tooltip("Right: on by 1/100 of a period");
   same_line_if_fits(target_width("\u25b6| stage"));
   if (ImGui::Button("\u25b6| stage", ImVec2(target_width("\u25b6| stage"), 0)))
     fast_forward_to_stage_end(state);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("N: fast-forward to the end of this stage, as fast as the machine allows");
+  item_tooltip("N: fast-forward to the end of this stage, as fast as the machine allows");
   same_line_if_fits(target_width("\u25b6| end"));
   if (ImGui::Button("\u25b6| end", ImVec2(target_width("\u25b6| end"), 0)))
     fast_forward_to_run_end(state);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("End: fast-forward to the end of the run (Esc cancels)");
+  item_tooltip("End: fast-forward to the end of the run (Esc cancels)");
 }
 
 }  // namespace swarmlab
