@@ -6,6 +6,10 @@
 # these themselves. Each insertion is checked: a different ImGui stops the configure.
 #   swarmlab_imgui_widgets_with_hooks(<imgui_dir> <out_var>): writes the patched copy into the
 #   build tree and sets out_var to its path.
+# (imgui.cpp, swarmlab_imgui_with_hooks below) An item scrolled out of its window is not drawn,
+# so its label never reaches the hooks; an item the parallel DOM has not yet named is drawn
+# once though out of sight (scissored away), so that a screen reader and Tab reach it too.
+
 # Puts `replacement` where `anchor` stands in src (the caller's), which must hold it `expected` times.
 function(_swarmlab_hook_edit anchor replacement expected)
   string(LENGTH "${src}" before)
@@ -67,5 +71,22 @@ function(swarmlab_imgui_widgets_with_hooks imgui_dir out_var)
   file(WRITE "${out}.tmp" "${src}")
   file(COPY_FILE "${out}.tmp" "${out}" ONLY_IF_DIFFERENT)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${imgui_dir}/imgui_widgets.cpp")
+  set(${out_var} "${out}" PARENT_SCOPE)
+endfunction()
+
+function(swarmlab_imgui_core_with_hooks imgui_dir out_var)
+  file(READ "${imgui_dir}/imgui.cpp" src)
+  set(out "${CMAKE_CURRENT_BINARY_DIR}/generated/imgui_with_hooks.cpp")
+  _swarmlab_hook_edit(
+    "#include \"imgui_internal.h\"\n"
+    "#include \"imgui_internal.h\"\nextern bool ParallelDomHook_Unnamed(ImGuiID id);  // Swarm Lab: app/ui/parallel_dom\n"
+    1)
+  _swarmlab_hook_edit(
+    "            if (!g.LogEnabled)\n                return true;\n    return false;\n}\n"
+    "            if (!g.LogEnabled && !(g.TestEngineHookItems && ParallelDomHook_Unnamed(id)))\n                return true;\n    return false;\n}\n"
+    1)
+  file(WRITE "${out}.tmp" "${src}")
+  file(COPY_FILE "${out}.tmp" "${out}" ONLY_IF_DIFFERENT)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${imgui_dir}/imgui.cpp")
   set(${out_var} "${out}" PARENT_SCOPE)
 endfunction()

@@ -29,3 +29,5 @@ const char* ImGuiTestEngine_FindItemDebugLabel(ImGuiContext*, ImGuiID) { return 
 void ParallelDomHook_ItemValue(ImGuiContext*, ImGuiID id, int kind, const char* value) {
   swarmlab::parallel_dom().item_value(id, static_cast<swarmlab::ValueKind>(kind), value ? value : "");
 }
+
+bool ParallelDomHook_Unnamed(ImGuiID id) { return swarmlab::parallel_dom().unnamed(id); }

@@ -87,6 +87,15 @@ void ParallelDom::item_tooltip(unsigned id, std::string_view tooltip) {
   if (id) known_[id].tooltip.assign(tooltip);
 }
 
+bool ParallelDom::unnamed(unsigned id) {
+  const auto it = known_.find(id);
+  if (it == known_.end()) return false;  // not an item this frame (ItemAdd registers it first)
+  Known& k = it->second;
+  if (!k.label.empty() || !k.tooltip.empty() || !k.name.empty() || k.drawn_for_name) return false;
+  k.drawn_for_name = true;
+  return true;
+}
+
 void ParallelDom::item_name(unsigned id, std::string_view name) {
   if (id) known_[id].name.assign(name);
 }

@@ -37,6 +37,9 @@ class ParallelDom {
                  bool openable, bool opened);
   /// The tooltip of the item last drawn (its description, or its name when the label is an icon).
   void item_tooltip(unsigned id, std::string_view tooltip);
+  /// Whether an item out of sight still needs drawing once for its name (ImGui's clipping asks;
+  /// imgui_hooks.cmake): true once for an item not yet named, then false.
+  bool unnamed(unsigned id);
   /// The name of an item that shows no label (item_tooltip.h, name_item).
   void item_name(unsigned id, std::string_view name);
   /// Text a screen reader reads in place (a lesson's heading, its step, a question, feedback).
@@ -62,6 +65,7 @@ class ParallelDom {
     ItemFacts facts;
     std::string label, value, tooltip, name;
     bool disabled = false;
+    bool drawn_for_name = false;  // drawn once out of sight to learn its name (unnamed())
     unsigned window = 0;
     std::uint64_t seen_frame = 0;
   };
