@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
                "Start in presentation mode: light theme, large text, the view and one plot");
   bool sound = false;
   app.add_flag("--sound", sound, "Start with a click at each wall hit (M turns it off)");
+  bool lesson_summary = false;
+  app.add_flag("--lesson-summary", lesson_summary,
+               "With a lesson file: open its summary, as after Finish (the screenshot test)");
 
   swarmlab::RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a preset headless and report the results");
@@ -79,7 +82,7 @@ int main(int argc, char** argv) {
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop(
-      {window_preset, frames, screenshot, select, presentation, plot_tab, sound});
+      {window_preset, frames, screenshot, select, presentation, plot_tab, sound, lesson_summary});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

@@ -83,6 +83,7 @@ int run_desktop(const DesktopOptions& options) {
       return 1;
     }
     f.app->state().lessons.dismiss_welcome();
+    if (options.lesson_summary) f.app->state().lessons.finish();
   }
   if (!f.app->error().empty()) {
     std::fprintf(stderr, "error: %s\n", f.app->error().c_str());

@@ -13,6 +13,7 @@ struct DesktopOptions {
   bool presentation = false;    ///< start in presentation mode (light theme, large, one plot)
   int plot_tab = 0;  ///< open this plot tab (numbered from 1, left to right) at the start; 0: the preset's
   bool sound = false;  ///< start with the wall clicks on
+  bool lesson_summary = false;  ///< with a lesson file: open its summary, as after Finish
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

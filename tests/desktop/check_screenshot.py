@@ -5,6 +5,8 @@ panel shows the pressure and temperature curves. Standard library only (PNG deco
 Usage: check_screenshot.py SHOT.png
        check_screenshot.py --presentation SHOT.png   (presentation mode: light, the view and
                                                       the plots, no controls)
+       check_screenshot.py --lesson SHOT.png         (a lesson open: its title and headings in
+                                                      the dark theme's lesson colour on the left)
 """
 import struct
 import sys
@@ -97,14 +99,29 @@ def presentation_checks(width, height, rows):
     ]
 
 
+def lesson_checks(width, height, rows):
+    """A lesson open at 1280x720: the lesson panel on the left shows its title (and, in the
+    summary, each task's heading) in the palette's lesson_title colour (255, 217, 115)."""
+    title = count(rows, 0, 360, 20, height, near((255, 217, 115), 30))
+    coloured = count(rows, 360, 860, 90, height - 60, saturated)
+    return [
+        ("window is 1280x720", width == 1280 and height == 720, f"{width}x{height}"),
+        ("the lesson's title on the left", title > 150,
+         f"{title} pixels in the lesson title colour (need > 150)"),
+        ("particles beside it", coloured > 200, f"{coloured} coloured pixels in the view (need > 200)"),
+    ]
+
+
 def main():
-    presentation = len(sys.argv) == 3 and sys.argv[1] == "--presentation"
-    if len(sys.argv) != 2 and not presentation:
+    mode = sys.argv[1] if len(sys.argv) == 3 else None
+    if len(sys.argv) not in (2, 3) or mode not in (None, "--presentation", "--lesson"):
         print(__doc__)
         return 2
     width, height, rows = read_png(sys.argv[-1])
-    if presentation:
+    if mode == "--presentation":
         return report(presentation_checks(width, height, rows))
+    if mode == "--lesson":
+        return report(lesson_checks(width, height, rows))
     # Layout at 1280x720 and UI scale 1: controls on the left (about 340 px), plots on the
     # right (about 400 px), the 3D view between them.
     view = (360, 860, 90, height - 60)

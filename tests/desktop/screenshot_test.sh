@@ -35,4 +35,19 @@ status=$?
 [ -s "$shown" ] || fail "no screenshot written at $shown"
 python3 "$here/check_screenshot.py" --presentation "$shown" ||
   fail "the presentation screenshot is missing something ($shown)"
-echo "PASS: the screenshots show particles, the container and the plots ($shot), and presentation mode ($shown)"
+# A lesson (its panel beside the view) and its summary, as after Finish.
+lessons="$(cd "$presets/../lessons" && pwd)"
+for page in step summary; do
+  lesson_shot="$out/desktop-lesson-$page.png"
+  extra=()
+  [ "$page" = summary ] && extra=(--lesson-summary)
+  echo "running: swarmlab 01-one-period.json ${extra[*]} --frames 30 --screenshot $lesson_shot"
+  rm -f "$lesson_shot"
+  DISPLAY=":$display" timeout 300 "$binary" "$lessons/01-one-period.json" "${extra[@]}" --frames 30 \
+    --screenshot "$lesson_shot"
+  status=$?
+  [ "$status" -eq 0 ] || fail "swarmlab with a lesson ($page) exited with status $status"
+  python3 "$here/check_screenshot.py" --lesson "$lesson_shot" ||
+    fail "the lesson screenshot ($page) shows no lesson ($lesson_shot)"
+done
+echo "PASS: the screenshots show particles, the container and the plots ($shot), presentation mode ($shown), a lesson's step and its summary"
