@@ -61,17 +61,24 @@ export function person(page, way) {
     throw new Error('could not scroll to ' + (await el.evaluate((e) => e.textContent || e.getAttribute('aria-label'))));
   }
 
-  /** Tab (or Shift+Tab) until the element has the focus, as a keyboard user walks. */
+  /** Tab (or Shift+Tab) until the element has the focus, as a keyboard user walks: counts the
+   *  focusable elements between the focus and the target, presses Tab that many times, looks. */
   async function tabTo(el) {
     const handle = await el.elementHandle();
-    for (let presses = 0; presses < 400; ++presses) {
-      const where = await page.evaluate((e) => {
-        if (document.activeElement === e) return 0;
-        if (!document.activeElement || document.activeElement === document.body || !document.activeElement.closest('#parallel-dom')) return 1;
-        return document.activeElement.compareDocumentPosition(e) & Node.DOCUMENT_POSITION_FOLLOWING ? 1 : -1;
+    let presses = 0;
+    for (let looks = 0; looks < 20; ++looks) {
+      const steps = await page.evaluate((e) => {
+        const all = [...document.querySelectorAll('#parallel-dom button, #parallel-dom input')];
+        const to = all.indexOf(e), from = all.indexOf(document.activeElement);
+        if (to < 0) return null;
+        if (from < 0) return to + 1;  // from outside the mirrored items: Tab enters at the first
+        return to - from;
       }, handle);
-      if (where === 0) return presses;
-      await page.keyboard.press(where > 0 ? 'Tab' : 'Shift+Tab');
+      if (steps === 0) return presses;
+      if (steps === null) throw new Error('the element is not in the parallel DOM');
+      const key = steps > 0 ? 'Tab' : 'Shift+Tab';
+      for (let i = 0; i < Math.abs(steps); ++i) await page.keyboard.press(key);
+      presses += Math.abs(steps);
     }
     throw new Error('Tab never reached the element');
   }

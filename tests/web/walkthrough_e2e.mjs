@@ -24,26 +24,40 @@ const lessonDir = join(root, 'assets/lessons');
 const lessons = readdirSync(lessonDir).filter((f) => f.endsWith('.json')).sort()
   .map((f) => JSON.parse(readFileSync(join(lessonDir, f), 'utf8')));
 
-// The physics a student would use for the right number (independent of the app's code).
-function physics(preset) {
-  const ps = preset.particles || [];
-  const M = ps.reduce((s, p) => s + p.m, 0);
+// The physics a student would use for the right number (independent of the app's code), from
+// the preset's particles; a generated swarm lists none, and then M is read off the read-outs.
+function physics(preset, M) {
+  const ps = Array.isArray(preset.particles) ? preset.particles : null;
   const J = preset.J;
-  let KE = 0, PE = 0;
-  ps.forEach((p) => { KE += 0.5 * p.m * p.v.reduce((s, v) => s + v * v, 0); });
-  for (let i = 0; i < ps.length; ++i)
-    for (let j = i + 1; j < ps.length; ++j) {
-      const d2 = [0, 1, 2].reduce((s, k) => s + (ps[i].r[k] - ps[j].r[k]) ** 2, 0);
-      PE += 0.5 * J * ps[i].m * ps[j].m * d2;  // F = -J m_i m_j r: U = J m_i m_j r^2 / 2
-    }
-  return { M, J, omega: Math.sqrt(Math.abs(J * M)), period: 2 * Math.PI / Math.sqrt(J * M), E: KE + PE };
+  if (ps) M = ps.reduce((s, p) => s + p.m, 0);
+  let E = null;
+  if (ps) {
+    let KE = 0, PE = 0;
+    ps.forEach((p) => { KE += 0.5 * p.m * p.v.reduce((s, v) => s + v * v, 0); });
+    for (let i = 0; i < ps.length; ++i)
+      for (let j = i + 1; j < ps.length; ++j) {
+        const d2 = [0, 1, 2].reduce((s, k) => s + (ps[i].r[k] - ps[j].r[k]) ** 2, 0);
+        PE += 0.5 * J * ps[i].m * ps[j].m * d2;  // F = -J m_i m_j r: U = J m_i m_j r^2 / 2
+      }
+    E = KE + PE;
+  }
+  return { M, J, omega: Math.sqrt(Math.abs(J * M)), period: 2 * Math.PI / Math.sqrt(J * M), E };
 }
 
-async function rightNumber(page, task) {
-  const app = await page.evaluate(() => ({ s: window.swarmlab.state(), preset: JSON.parse(window.swarmlab.preset()) }));
+// A read-out as a screen reader reads it ("P = 43.56 ± 14"): its first number.
+async function readout(me, symbol) {
+  const row = me.dom.locator('p', { hasText: new RegExp(`^${symbol} = `) }).first();
+  await row.waitFor({ state: 'attached', timeout: 20_000 });
+  return parseFloat((await row.textContent()).slice(symbol.length + 3));
+}
+
+async function rightNumber(page, me, task) {
   const q = task.quantity;
-  if (q === 'P' || q === 'T') return app.s[q];  // as the read-outs show it
-  return physics(app.preset)[q];
+  if (q === 'P' || q === 'T') return readout(me, q);  // as the read-outs show it
+  const preset = await page.evaluate(() => JSON.parse(window.swarmlab.preset()));
+  const M = Array.isArray(preset.particles) ? undefined : await readout(me, 'M');
+  const value = physics(preset, M)[q];
+  return value ?? readout(me, q);
 }
 
 async function walk(url, name) {
@@ -57,7 +71,7 @@ async function walk(url, name) {
   const shot = (file) => page.screenshot({ path: join(shots, `${name}-${file}.png`) });
   const said = (text) => me.dom.getByText(text, { exact: false }).first().waitFor({ state: 'attached', timeout: 20_000 });
 
-  await me.find('heading', /Welcome/).waitFor({ state: 'attached', timeout: 20_000 });
+  await me.find('heading', 'Welcome to Swarm Lab').waitFor({ state: 'attached', timeout: 20_000 });
   await shot('00-welcome');
   await me.press('button', `Start: ${lessons[0].title}`);
   for (const [l, lesson] of lessons.entries()) {
@@ -66,8 +80,8 @@ async function walk(url, name) {
       await said(`Step ${i + 1} of ${lesson.steps.length}`);
       await shot(`L${l + 1}-s${i + 1}`);
       const task = step.task;
-      if (task) await answer(page, me, task, `${name} L${l + 1} s${i + 1}`);
-      await me.press('button', i + 1 < lesson.steps.length ? 'Next' : 'Finish');
+      if (task) await answer(page, me, task, `${name} L${l + 1} s${i + 1}`, lesson);
+      await me.press('button', i + 1 < lesson.steps.length ? /^Next \u2192/ : 'Finish');
     }
     await said('Summary');
     await shot(`L${l + 1}-summary`);
@@ -76,32 +90,39 @@ async function walk(url, name) {
   check(`${name}: every lesson walked to its summary`, true);
 }
 
-async function answer(page, me, task, where) {
+async function answer(page, me, task, where, lesson) {
+  const letter = (i) => String.fromCharCode(65 + i);
   if (task.kind === 'predict') {
-    await me.press('radio', task.options[0]);
-    await me.press('button', 'Predict');
-    check(`${where}: a prediction is answered with the outcome`, await feedbackSays(me, task.outcome.slice(0, 30)));
+    await me.press('button', new RegExp(`^Predict ${letter(0)}: `));
+    check(`${where}: a prediction is recorded and compared`, await feedbackSays(me, 'Your prediction:'));
     return;
   }
   if (task.kind === 'choice') {
     const wrong = task.answer === 0 ? 1 : 0;
-    await me.press('radio', task.options[wrong]);
-    await me.press('button', 'Check');
-    check(`${where}: a wrong choice is marked wrong`, await feedbackSays(me, 'Not'));
-    await me.press('radio', task.options[task.answer]);
-    await me.press('button', 'Check');
-    check(`${where}: the right choice is marked right`, await feedbackSays(me, 'Right'));
+    await me.press('button', new RegExp(`^Pick ${letter(wrong)}: `));
+    check(`${where}: a wrong choice is marked wrong`, await feedbackSays(me, task.feedback ? task.feedback[wrong] : 'Not'));
+    await me.press('button', new RegExp(`^Pick ${letter(task.answer)}: `));
+    check(`${where}: the right choice is marked right`, await feedbackSays(me, task.feedback ? task.feedback[task.answer] : 'Right'));
     return;
   }
-  const right = await rightNumber(page, task);
-  await me.type(task.prompt, String(-3 * right || 1));
-  check(`${where}: a wrong number is marked wrong`, await feedbackSays(me, 'Not'));
-  await me.type(task.prompt, right.toPrecision(4));
-  check(`${where}: the right number is marked right (${right.toPrecision(4)})`, await feedbackSays(me, 'Right'));
+  if (task.quantity === 'P' || task.quantity === 'T') {
+    // As the step says: a running average over 0.5, read with the run paused (it would drift
+    // while the number is typed).
+    await me.type('average over', '0.5');
+    if (await me.find('button', /Pause/).count()) await me.press('button', /Pause/);
+  }
+  const right = await rightNumber(page, me, task);
+  await me.type('Your answer', String(Number((3 * right + 1).toPrecision(4))));
+  check(`${where}: a wrong number is marked wrong`, await feedbackSays(me, /^Not yet: /));
+  await me.type('Your answer', String(Number(right.toPrecision(5))));
+  check(`${where}: the right number is marked right (${right.toPrecision(5)})`, await feedbackSays(me, /^Right: /));
 }
 
+// Waits until a paragraph of the parallel DOM says it (feedback appears next to Check).
 async function feedbackSays(me, text) {
-  try { await me.find('paragraph', new RegExp(text.replace(/[.*+?^${}()|[\]\\]/g, '\\$&'))).waitFor({ state: 'attached', timeout: 15_000 }); return true; }
+  const plain = (t) => t.replace(/\*/g, '').split('{')[0].slice(0, 40);
+  const pattern = text instanceof RegExp ? text : new RegExp(plain(text).replace(/[.*+?^${}()|[\]\\]/g, '\\$&'));
+  try { await me.dom.locator('p', { hasText: pattern }).first().waitFor({ state: 'attached', timeout: 15_000 }); return true; }
   catch { return false; }
 }
 
