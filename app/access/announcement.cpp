@@ -43,13 +43,15 @@ std::string page_title(const Situation& s) {
 
 std::optional<std::string> Announcer::next(const Situation& now, double wall_seconds) {
   const bool event = !last_ || !same_events(now, *last_);
-  const bool lesson_said = !now.lesson.empty() && (!last_ || now.lesson != last_->lesson);
+  const bool new_turn = last_ && now.lesson_turn != last_->lesson_turn;
+  const bool lesson_said =
+      !now.lesson.empty() && (!last_ || now.lesson != last_->lesson || new_turn);
   const bool time_due = now.playing && wall_seconds - said_at_ >= kTimeInterval;
   last_ = now;
   if (!event && !lesson_said && !time_due) return std::nullopt;
   std::string text = describe(now);
   if (lesson_said) text = event ? now.lesson + " " + text : now.lesson;
-  if (text == said_) return std::nullopt;
+  if (text == said_ && !(lesson_said && new_turn)) return std::nullopt;
   said_ = text;
   said_at_ = wall_seconds;
   return text;

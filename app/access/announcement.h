@@ -22,6 +22,8 @@ struct Situation {
   /// What a lesson says now: the welcome, a step with its question, or the feedback on an
   /// answer (app/ui/classroom/classroom_outputs.cpp); "" outside a lesson.
   std::string lesson;
+  /// Counts the lesson's answers: the same feedback to a second try is said again.
+  std::size_t lesson_turn = 0;
 };
 
 /// "Four masses (paper Fig. 1). Playing, t = 12.5. P = 0.0312, T = 1.05. Particle 3 selected."
@@ -31,9 +33,9 @@ std::string describe(const Situation& s);
 std::string page_title(const Situation& s);
 
 /// Decides when to speak: at once when the preset, playing or paused, the selection or the
-/// error changes; a lesson's new words (a step, feedback) at once, before the rest; while
-/// playing, at most every kTimeInterval seconds of wall time for the time and P and T alone;
-/// never twice the same text.
+/// error changes; a lesson's new words (a step, feedback) at once, before the rest, and its
+/// feedback again on each new answer; while playing, at most every kTimeInterval seconds of wall
+/// time for the time and P and T alone; otherwise never twice the same text.
 class Announcer {
  public:
   static constexpr double kTimeInterval = 5;  ///< seconds of wall time

@@ -101,3 +101,17 @@ TEST_CASE("Announcer: a lesson's new words are said at once, before the rest") {
   s.lesson.clear();  // leaving a lesson says nothing by itself
   CHECK_FALSE(a.next(s, 0.4));
 }
+
+TEST_CASE("Announcer: the same feedback to a new answer is said again, once") {
+  Announcer a;
+  Situation s = four_masses();
+  s.lesson = "Not yet: the period is longer.";
+  s.lesson_turn = 1;
+  REQUIRE(a.next(s, 0.0));
+  CHECK_FALSE(a.next(s, 0.1));
+  s.lesson_turn = 2;  // the same wrong number typed again
+  const auto again = a.next(s, 0.2);
+  REQUIRE(again);
+  CHECK(*again == s.lesson);
+  CHECK_FALSE(a.next(s, 0.3));
+}

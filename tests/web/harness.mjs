@@ -87,9 +87,11 @@ export function watch(page, label) {
 // Opens url in a new page and waits for `frames` frames (or the page's own error). The app
 // treats a test like a person: a first visit shows the welcome. A page whose address does not
 // ask for a first visit (?welcome) starts as a returning student's, whose progress says the
-// welcome was seen (unless the browser already holds progress).
-export async function openApp(url, label, frames = 10) {
+// welcome was seen (unless the browser already holds progress). `init` runs in the page before
+// its own scripts (as page.addInitScript), e.g. to listen to the live region from the start.
+export async function openApp(url, label, frames = 10, init = null) {
   const page = await context.newPage();
+  if (init) await page.addInitScript(init);
   if (!/[?&]welcome/.test(url))
     await page.addInitScript(() => {
       try {

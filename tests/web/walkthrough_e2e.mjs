@@ -5,9 +5,11 @@
 // window.swarmlab is only read. Each task is answered once wrongly, then rightly, with the
 // right number from the physics (2 pi / sqrt(J M), sqrt(J M), sum of m, the energy of the
 // preset's initial state) or, for P and T, as the read-outs show them. A screenshot per step
-// goes to build/web-test/walkthrough/. The last line is "N passed, M failed".
+// goes to build/web-test/walkthrough/, with what the live region said (a screen reader's
+// transcript, checked: the welcome, every step, the feedback, P and T as the read-outs show
+// them). The last line is "N passed, M failed".
 //   node tests/web/walkthrough_e2e.mjs [device...]   (devices: phone, phone-landscape, tablet, laptop)
-import { readFileSync, readdirSync, mkdirSync } from 'node:fs';
+import { readFileSync, readdirSync, mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import * as harness from './harness.mjs';
 import { person } from './person.mjs';
@@ -65,7 +67,7 @@ async function walk(url, name) {
   await launchBrowser({ width: device.width, height: device.height, hasTouch: device.touch, isMobile: device.touch });
   const shots = join(outDir, 'walkthrough');
   mkdirSync(shots, { recursive: true });
-  const { page, started, error } = await openApp(url + '?welcome', `walk-${name}`);
+  const { page, started, error } = await openApp(url + '?welcome', `walk-${name}`, 10, listenToLiveRegion);
   if (!check(`${name}: the app starts`, started, error || '')) return;
   const me = person(page, device.touch ? 'touch' : 'keyboard');
   const shot = (file) => page.screenshot({ path: join(shots, `${name}-${file}.png`) });
@@ -88,6 +90,38 @@ async function walk(url, name) {
     if (l + 1 < lessons.length) await me.press('button', `Next lesson: ${lessons[l + 1].title}`);
   }
   check(`${name}: every lesson walked to its summary`, true);
+  await checkTranscript(page, name);
+}
+
+// Every text the live region (#announcer) takes, in order, as a screen reader hears it.
+function listenToLiveRegion() {
+  window.liveRegionSaid = [];
+  new MutationObserver((_, waiting) => {
+    const region = document.getElementById('announcer');
+    if (!region) return;
+    const listen = new MutationObserver(() => window.liveRegionSaid.push(region.textContent.trim()));
+    listen.observe(region, { childList: true, characterData: true, subtree: true });
+    waiting.disconnect();
+  }).observe(document, { childList: true, subtree: true });
+}
+
+const liveRegionSaid = (page) => page.evaluate(() => window.liveRegionSaid);
+
+async function checkTranscript(page, name) {
+  const said = await liveRegionSaid(page);
+  writeFileSync(join(outDir, 'walkthrough', `${name}-transcript.txt`), said.join('\n') + '\n');
+  const heard = (text) => said.some((s) => s.includes(text));
+  check(`${name}: the live region read the welcome`, heard('Welcome to Swarm Lab. Lessons:'));
+  const missed = [];
+  for (const lesson of lessons)
+    lesson.steps.forEach((_, i) => {
+      const place = `${lesson.title}, step ${i + 1} of ${lesson.steps.length}.`;
+      if (!heard(place)) missed.push(place);
+    });
+  check(`${name}: the live region read every step`, missed.length === 0, missed.slice(0, 3).join(' | '));
+  check(`${name}: the live region read feedback, right and wrong`, heard('Right: ') && heard('Not yet: '));
+  check(`${name}: the live region read every summary`,
+        lessons.every((l) => heard(`${l.title}: summary. Finished: `)));
 }
 
 async function answer(page, me, task, where, lesson) {
@@ -109,13 +143,29 @@ async function answer(page, me, task, where, lesson) {
     // As the step says: a running average over 0.5, read with the run paused (it would drift
     // while the number is typed).
     await me.type('average over', '0.5');
-    if (await me.find('button', /Pause/).count()) await me.press('button', /Pause/);
+    if (await me.find('button', /Pause/).count()) await pauseAndListen(page, me, where);
   }
   const right = await rightNumber(page, me, task);
+
   await me.type('Your answer', String(Number((3 * right + 1).toPrecision(4))));
   check(`${where}: a wrong number is marked wrong`, await feedbackSays(me, /^Not yet: /));
   await me.type('Your answer', String(Number(right.toPrecision(5))));
   check(`${where}: the right number is marked right (${right.toPrecision(5)})`, await feedbackSays(me, /^Right: /));
+}
+
+// Pauses: the live region then says P and T as the read-outs show them.
+async function pauseAndListen(page, me, where) {
+  const before = (await liveRegionSaid(page)).length;
+  await me.press('button', /Pause/);
+  const announced = await page.waitForFunction(
+    (n) => window.liveRegionSaid.slice(n).filter((s) => /Paused, .*P = /.test(s)).pop(), before, { timeout: 20_000 });
+  const text = await announced.jsonValue();
+  const number = (symbol) => parseFloat(text.split(`${symbol} = `)[1]);
+  for (const symbol of ['P', 'T']) {
+    const shown = await readout(me, symbol);
+    check(`${where}: the live region says ${symbol} as the read-out shows it (${number(symbol)}, ${shown})`,
+          Math.abs(number(symbol) - shown) <= 1e-3 * Math.abs(shown));
+  }
 }
 
 // Waits until a paragraph of the parallel DOM says it (feedback appears next to Check).

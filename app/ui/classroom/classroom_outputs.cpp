@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "ui/classroom/theme_style.h"
+#include "ui/lesson_player/lesson_panel.h"
+#include "ui/lesson_player/lesson_speech.h"
 
 #ifdef __EMSCRIPTEN__
 #include <emscripten.h>
@@ -13,9 +15,13 @@ namespace {
 
 #ifdef __EMSCRIPTEN__
 // The page's live region (web/shell.html, #announcer) and title.
+// The same words twice (feedback to a second try) end in a no-break space the second time:
+// a live region reads a change of its text only.
 EM_JS(void, web_announce, (const char* text), {
   var region = document.getElementById('announcer');
-  if (region) region.textContent = UTF8ToString(text);
+  if (!region) return;
+  var words = UTF8ToString(text);
+  region.textContent = region.textContent === words ? words + '\u00a0' : words;
 });
 EM_JS(void, web_set_title, (const char* text), { document.title = UTF8ToString(text); });
 // The Fullscreen API; a refusal (no gesture, not allowed) is remembered for the next frame.
@@ -58,6 +64,9 @@ Situation situation_of(AppState& state) {
   }
   s.selected = state.selected;
   if (state.status_is_error) s.error = state.status;
+  const LessonSpeech speech = lesson_speech(state.lessons, input_kind(state));
+  s.lesson = speech.words;
+  s.lesson_turn = speech.turn;
   return s;
 }
 

@@ -105,12 +105,6 @@ void draw_prose(const std::string& text) {
 
 namespace {
 
-/// The input the student used last, for words that fit it ({tap|click|press Space}).
-InputKind input_kind(const AppState& state) {
-  if (state.layout.touch) return InputKind::touch;
-  return ImGui::GetIO().NavVisible ? InputKind::keyboard : InputKind::mouse;
-}
-
 void draw_lesson_prose(const AppState& state, const std::string& text) {
   draw_prose(device_words(text, input_kind(state)));
 }
@@ -287,6 +281,11 @@ bool draw_hidden_by_lesson(const AppState& state, LessonHidden what) {
   ImGui::TextDisabled("%s", text.c_str());
   ImGui::PopTextWrapPos();
   return true;
+}
+
+InputKind input_kind(const AppState& state) {
+  if (state.layout.touch) return InputKind::touch;
+  return ImGui::GetIO().NavVisible ? InputKind::keyboard : InputKind::mouse;
 }
 
 void draw_lesson(AppState& state, float height) {

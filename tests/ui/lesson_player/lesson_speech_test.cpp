@@ -1,0 +1,91 @@
+#include "ui/lesson_player/lesson_speech.h"
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+#include "lessons/lesson_file.h"
+#include "ui/lesson_player/lesson_session.h"
+#include "ui/time/live_run.h"
+
+namespace swarmlab {
+namespace {
+
+LessonSession loaded() {
+  LessonSession session;
+  session.load(SWARM_LESSON_DIR, make_memory_progress_store(),
+               shipped_preset_lookup(SWARM_PRESET_DIR));
+  return session;
+}
+
+const Lesson& one_period(const LessonSession& session) {
+  for (const Lesson& l : session.shipped())
+    if (l.id == "one-period") return l;
+  FAIL("no shipped lesson one-period");
+  throw;
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("lesson speech: the welcome names every lesson") {
+  LessonSession session = loaded();
+  session.show_welcome = true;
+  const std::string words = lesson_speech(session, InputKind::keyboard).words;
+  CHECK(words.rfind("Welcome to Swarm Lab.", 0) == 0);
+  for (const Lesson& l : session.shipped()) CHECK(has(words, l.title));
+  session.open(one_period(session));  // from the Lessons menu, the welcome still open
+  CHECK(lesson_speech(session, InputKind::keyboard).words.rfind("One period", 0) == 0);
+  session.close();
+  session.show_welcome = false;
+  CHECK(lesson_speech(session, InputKind::keyboard).words.empty());  // no lesson: nothing
+}
+
+TEST_CASE("lesson speech: a step is read with its place, its text, its question and options") {
+  LessonSession session = loaded();
+  const Lesson& lesson = one_period(session);
+  session.open(lesson);
+  session.go_to(3);  // "{Tap|Click} each ball in turn ..."
+  const LessonStep& step = lesson.steps[3];
+  const std::string touch = lesson_speech(session, InputKind::touch).words;
+  CHECK(touch.rfind(lesson.title + ", step 4 of " + std::to_string(lesson.steps.size()) + ".",
+                    0) == 0);
+  CHECK(has(touch, "Tap each ball"));
+  CHECK(has(lesson_speech(session, InputKind::mouse).words, "Click each ball"));
+  CHECK_FALSE(has(touch, "*"));  // emphasis marks are not read
+  CHECK_FALSE(has(touch, "{"));
+  REQUIRE(step.task);
+  CHECK(has(touch, step.task->prompt.substr(0, 20)));
+
+  session.go_to(4);  // a choice: every option with its letter
+  const LessonStep& choice = lesson.steps[4];
+  REQUIRE(choice.task);
+  const std::string read = lesson_speech(session, InputKind::keyboard).words;
+  for (std::size_t k = 0; k < choice.task->options.size(); ++k)
+    CHECK(has(read, std::string("Pick ") + char('A' + k) + ": "));
+}
+
+TEST_CASE("lesson speech: an answer is followed by its feedback, a new try by a new turn") {
+  LessonSession session = loaded();
+  const LessonScene scene = session.open(one_period(session));
+  LiveRun run(*scene.preset_step->preset);
+  session.next();  // "How long is one turn?"
+  const LessonSpeech before = lesson_speech(session, InputKind::keyboard);
+  const Marking wrong = session.answer_number(run, 100.0);
+  const LessonSpeech first = lesson_speech(session, InputKind::keyboard);
+  CHECK(first.words == wrong.feedback);
+  CHECK(first.turn != before.turn);
+  session.answer_number(run, 100.0);  // the same wrong number again: the same words, a new turn
+  const LessonSpeech second = lesson_speech(session, InputKind::keyboard);
+  CHECK(second.words == first.words);
+  CHECK(second.turn != first.turn);
+
+  session.go_to(session.open_lesson()->steps.size() - 1);
+  session.finish();
+  CHECK(has(lesson_speech(session, InputKind::keyboard).words, "summary. Finished: "));
+}
+
+}  // namespace swarmlab
