@@ -25,6 +25,8 @@
     root = document.createElement('div');
     root.id = 'parallel-dom';
     document.body.appendChild(root);
+    // Where overflow: clip is missing, the box could still be scrolled by a focus: undo it.
+    root.addEventListener('scroll', function () { root.scrollTop = 0; root.scrollLeft = 0; });
     // Tab belongs to the page (it walks the mirrored items), not to the canvas's app.
     document.addEventListener('keydown', function (e) { if (e.key === 'Tab') e.stopPropagation(); });
   }

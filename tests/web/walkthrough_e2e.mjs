@@ -140,18 +140,36 @@ async function answer(page, me, task, where, lesson) {
     return;
   }
   if (task.quantity === 'P' || task.quantity === 'T') {
-    // As the step says: a running average over 0.5, read with the run paused (it would drift
-    // while the number is typed).
-    await me.type('average over', '0.5');
+    // As the step says: a running average over the task's window, read with the run paused (it
+    // would drift while the number is typed).
+    await openTab(me, 'Plots');
+    await me.type('average over', String(task.window ?? 0.5));
+    await openTab(me, 'Read-outs');
     if (await me.find('button', /Pause/).count()) await pauseAndListen(page, me, where);
   }
+  await openTab(me, 'Read-outs');
   const right = await rightNumber(page, me, task);
+  await openTab(me, 'Lesson');
 
   await me.type('Your answer', String(Number((3 * right + 1).toPrecision(4))));
   check(`${where}: a wrong number is marked wrong`, await feedbackSays(me, /^Not yet: /));
   await me.type('Your answer', String(Number(right.toPrecision(5))));
   check(`${where}: the right number is marked right (${right.toPrecision(5)})`, await feedbackSays(me, /^Right: /));
 }
+
+// On a phone or tablet the panels are tabs of a drawer below the view: the person opens the
+// one that holds what the step asks for. A wide layout shows them all and has no such tab.
+async function openTab(me, name) {
+  const tab = me.find('tab', name);
+  if (!(await tab.count()) || (await tab.getAttribute('aria-selected')) === 'true') return;
+  if (process.env.DEBUG_TABS) { console.log('tab', name, JSON.stringify(await tab.evaluate((e) => { const r = e.getBoundingClientRect(); return [r.x, r.y, r.width, r.height, e.dataset.clipped]; }))); await me.dom.page().screenshot({ path: `/tmp/tab-${name}-${Date.now()}.png` }); }
+  await me.press('tab', name);
+  await me.dom.locator('[role=tab][aria-selected=true]', { hasText: name }).first()
+    .waitFor({ state: 'attached', timeout: 15_000 })
+    .catch(async () => { throw new Error(`the tab ${name} did not open (${await tabStates(me)})`); });
+}
+const tabStates = (me) => me.dom.locator('[role=tab]').evaluateAll(
+  (tabs) => tabs.map((t) => `${t.getAttribute('aria-label') || t.textContent}:${t.getAttribute('aria-selected')}`).join(' '));
 
 // Pauses: the live region then says P and T as the read-outs show them.
 async function pauseAndListen(page, me, where) {
@@ -180,7 +198,10 @@ const wanted = process.argv.slice(2).length ? process.argv.slice(2) : Object.key
 await runSuite('walkthrough', 1_200_000, async (url) => {
   for (const name of wanted) {
     try { await walk(url, name); }
-    catch (e) { check(`${name} walkthrough`, false, String(e && e.stack || e).split('\n').slice(0, 3).join(' / ')); }
+    catch (e) {
+      check(`${name} walkthrough`, false, String(e && e.stack || e).split('\n').slice(0, 3).join(' / '));
+      await harness.context?.pages().at(-1)?.screenshot({ path: join(outDir, 'walkthrough', `${name}-failed.png`) }).catch(() => {});
+    }
     await closeBrowser();
   }
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
