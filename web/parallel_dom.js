@@ -176,7 +176,7 @@
       var key = keyOf(item, seenText);
       var el = elements.get(key);
       if (el && el.swarmlabKind !== kindOf(item)) { el.remove(); el = null; }  // its role changed
-      if (!el) { el = make(item); elements.set(key, el); }
+      if (!el) { el = make(item); el.swarmlabKey = key; elements.set(key, el); }
       alive.add(key);
       update(el, item);
       var section = regionFor(item.region);
@@ -190,7 +190,12 @@
       if (alive.has(key)) return;
       elements.delete(key);
       if (el === document.activeElement) {
-        var next = el.nextElementSibling || el.previousElementSibling;
+        // The focus stays where it was in the reading order: on the next item one can focus
+        // (a pressed Predict button gives way to the feedback; Tab goes on from there).
+        var all = Array.prototype.slice.call(root.querySelectorAll('button, input'));
+        var at = all.indexOf(el), next = null;
+        for (var i = at + 1; i < all.length && !next; ++i) if (alive.has(all[i].swarmlabKey)) next = all[i];
+        for (var j = at - 1; j >= 0 && !next; --j) if (alive.has(all[j].swarmlabKey)) next = all[j];
         if (next) next.focus(); else document.getElementById('canvas').focus();
       }
       el.remove();

@@ -62,23 +62,29 @@ export function person(page, way) {
   }
 
   /** Tab (or Shift+Tab) until the element has the focus, as a keyboard user walks: counts the
-   *  focusable elements between the focus and the target, presses Tab that many times, looks. */
+   *  focusable elements between the focus and the target, presses Tab up to that many times,
+   *  looks again. */
   async function tabTo(el) {
     const handle = await el.elementHandle();
     let presses = 0;
-    for (let looks = 0; looks < 20; ++looks) {
+    for (let looks = 0; looks < 80; ++looks) {
       const steps = await page.evaluate((e) => {
         const all = [...document.querySelectorAll('#parallel-dom button, #parallel-dom input')];
         const to = all.indexOf(e), from = all.indexOf(document.activeElement);
         if (to < 0) return null;
-        if (from < 0) return to + 1;  // from outside the mirrored items: Tab enters at the first
-        return to - from;
+        if (from < 0) return 1;  // from outside the mirrored items: one Tab in, then count
+        // The shorter way: past the last item Tab comes round to the first.
+        const ahead = to - from, n = all.length;
+        return ahead > n / 2 ? ahead - n : ahead < -n / 2 ? ahead + n : ahead;
       }, handle);
       if (steps === 0) return presses;
       if (steps === null) throw new Error('the element is not in the parallel DOM');
+      // In batches, looking again between them: the list changes as panels scroll to the
+      // focus (a list scrolled out of its panel leaves the page until it is back in view).
       const key = steps > 0 ? 'Tab' : 'Shift+Tab';
-      for (let i = 0; i < Math.abs(steps); ++i) await page.keyboard.press(key);
-      presses += Math.abs(steps);
+      const batch = Math.min(Math.abs(steps), 12);
+      for (let i = 0; i < batch; ++i) await page.keyboard.press(key);
+      presses += batch;
     }
     throw new Error('Tab never reached the element');
   }
