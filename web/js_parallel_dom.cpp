@@ -58,8 +58,11 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_dom_items() {
 /// Presses the item (a click, Enter or Space on its element).
 EMSCRIPTEN_KEEPALIVE void swarmlab_dom_activate(unsigned id) { swarmlab::parallel_dom().request_activate(id); }
 
-/// Puts ImGui's keyboard focus (its focus ring) on the item and scrolls it into view.
-EMSCRIPTEN_KEEPALIVE void swarmlab_dom_focus(unsigned id) { swarmlab::parallel_dom().request_focus(id); }
+/// Puts ImGui's keyboard focus on the item and scrolls it into view; ring: with its focus ring
+/// (the page's last input was a key).
+EMSCRIPTEN_KEEPALIVE void swarmlab_dom_focus(unsigned id, int ring) {
+  swarmlab::parallel_dom().request_focus(id, ring != 0);
+}
 
 /// Types text into the field and commits it, with Enter when `enter` is 1.
 EMSCRIPTEN_KEEPALIVE void swarmlab_dom_type(unsigned id, const char* text, int enter) {

@@ -18,7 +18,11 @@
 
   function call(name, types, args) { Module.ccall(name, null, types, args); }
   function activate(id) { call('swarmlab_dom_activate', ['number'], [id]); }
-  function focusItem(id) { call('swarmlab_dom_focus', ['number'], [id]); }
+  // Whether the page's last input was a key (Tab, a screen reader's keys) rather than a finger
+  // or a mouse: only then does a focus show ImGui's focus ring, and does the focus of an item
+  // that goes away move on to the next one.
+  var byKeyboard = false;
+  function focusItem(id) { call('swarmlab_dom_focus', ['number', 'number'], [id, byKeyboard ? 1 : 0]); }
   function type(id, text, enter) { call('swarmlab_dom_type', ['number', 'string', 'number'], [id, text, enter ? 1 : 0]); }
 
   function makeRoot() {
@@ -29,6 +33,12 @@
     root.addEventListener('scroll', function () { root.scrollTop = 0; root.scrollLeft = 0; });
     // Tab belongs to the page (it walks the mirrored items), not to the canvas's app.
     document.addEventListener('keydown', function (e) { if (e.key === 'Tab') e.stopPropagation(); });
+    // Typing into a field (a phone's keyboard too) is not walking the page by keys.
+    window.addEventListener('keydown', function (e) {
+      if (e.key === 'Tab' || !e.target || e.target.tagName !== 'INPUT') byKeyboard = true;
+    }, true);
+    window.addEventListener('pointerdown', function () { byKeyboard = false; }, true);
+    window.addEventListener('touchstart', function () { byKeyboard = false; }, true);
   }
 
   function regionFor(title) {
@@ -196,7 +206,7 @@
         var at = all.indexOf(el), next = null;
         for (var i = at + 1; i < all.length && !next; ++i) if (alive.has(all[i].swarmlabKey)) next = all[i];
         for (var j = at - 1; j >= 0 && !next; --j) if (alive.has(all[j].swarmlabKey)) next = all[j];
-        if (next) next.focus(); else document.getElementById('canvas').focus();
+        if (next && byKeyboard) next.focus(); else document.getElementById('canvas').focus();
       }
       el.remove();
     });

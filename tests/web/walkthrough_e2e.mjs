@@ -1,6 +1,7 @@
 // A class finishes every lesson on any device (issue 21): from the first visit's welcome
 // through every shipped lesson to its summary, on a phone (390x844 and 844x390) and a tablet
-// (820x1180) by touch alone, and on a 1366x768 laptop by keyboard alone. Everything is found
+// (820x1180) by touch alone, and on a 1366x768 laptop by keyboard alone; the phone held
+// sideways and the tablet in the light theme (chosen from the View menu), the others dark. Everything is found
 // through the parallel DOM by role and name and pressed with real input (tests/web/person.mjs);
 // window.swarmlab is only read. Each task is answered once wrongly, then rightly, with the
 // right number from the physics (2 pi / sqrt(J M), sqrt(J M), sum of m, the energy of the
@@ -18,8 +19,8 @@ const { root, outDir, check, openApp, launchBrowser, runSuite, closeBrowser, pag
 
 const DEVICES = {
   phone: { width: 390, height: 844, touch: true },
-  'phone-landscape': { width: 844, height: 390, touch: true },
-  tablet: { width: 820, height: 1180, touch: true },
+  'phone-landscape': { width: 844, height: 390, touch: true, theme: 'light' },
+  tablet: { width: 820, height: 1180, touch: true, theme: 'light' },
   laptop: { width: 1366, height: 768, touch: false },
 };
 const lessonDir = join(root, 'assets/lessons');
@@ -74,6 +75,12 @@ async function walk(url, name) {
   const said = (text) => me.dom.getByText(text, { exact: false }).first().waitFor({ state: 'attached', timeout: 20_000 });
 
   await me.find('heading', 'Welcome to Swarm Lab').waitFor({ state: 'attached', timeout: 20_000 });
+  if (device.theme === 'light') {
+    // As a teacher at a bright projector would: View > Light theme.
+    await me.press('menuitem', 'View');
+    await me.press('menuitem', 'Light theme');
+    await me.find('menuitemcheckbox', 'Light theme').waitFor({ state: 'detached', timeout: 20_000 });
+  }
   await shot('00-welcome');
   await me.press('button', `Start: ${lessons[0].title}`);
   for (const [l, lesson] of lessons.entries()) {

@@ -223,7 +223,8 @@ void draw_summary(AppState& state, float box_height) {
   const Palette& palette = current_palette();
   const LessonProgress* progress = lessons.progress_of(lesson.id);
   char line[96];
-  std::snprintf(line, sizeof line, "Finished: %zu of %zu tasks answered right.",
+  std::snprintf(line, sizeof line,
+                "Finished: %zu of %zu tasks done (answered right, or predicted).",
                 lessons.answered_count(), lessons.task_count());
   heading("Summary");
   mirror_text(ItemRole::paragraph, line);

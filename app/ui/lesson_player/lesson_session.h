@@ -42,7 +42,7 @@ struct StepAnswer {
 /// What a student did in one lesson.
 struct LessonProgress {
   std::size_t step = 0;                        ///< where they were
-  std::set<std::size_t> solved;                ///< steps whose task they answered right
+  std::set<std::size_t> solved;                ///< steps whose task they answered right (a prediction: once made)
   std::map<std::size_t, std::size_t> predicted;  ///< step -> the option they predicted
   std::map<std::size_t, StepAnswer> answers;   ///< step -> the last answer to its task
   bool finished = false;                       ///< Finish was pressed on the last step

@@ -58,7 +58,7 @@ LessonSpeech lesson_speech(const LessonSession& lessons, InputKind input) {
   if (lessons.showing_summary()) {
     speech.words = lesson->title + ": summary. Finished: " +
                    std::to_string(lessons.answered_count()) + " of " +
-                   std::to_string(lessons.task_count()) + " tasks answered right.";
+                   std::to_string(lessons.task_count()) + " tasks done (answered right, or predicted).";
     return speech;
   }
   if (lessons.marking())

@@ -244,7 +244,10 @@ void ParallelDom::end_frame() {
 }
 
 void ParallelDom::request_activate(unsigned id) { activate_ = id; }
-void ParallelDom::request_focus(unsigned id) { focus_ = id; }
+void ParallelDom::request_focus(unsigned id, bool ring) {
+  focus_ = id;
+  focus_ring_ = ring;
+}
 void ParallelDom::request_text(unsigned id, std::string text, bool enter) {
   typing_ = Typing{id, std::move(text), enter, 1, 0};
 }
@@ -257,8 +260,10 @@ void ParallelDom::apply_requests() {
       if (ImGuiWindow* w = ImGui::FindWindowByID(it->second.window)) {
         ImGui::FocusWindow(w);
         ImGui::SetFocusID(focus_, w);
-        g.NavDisableHighlight = false;  // ImGui draws its focus ring on the item
-        g.NavDisableMouseHover = true;
+        if (focus_ring_) {
+          g.NavDisableHighlight = false;  // ImGui draws its focus ring on the item
+          g.NavDisableMouseHover = true;
+        }
         for (const Drawn& d : drawn_)
           if (d.id == focus_) ImGui::ScrollToBringRectIntoView(w, ImRect(d.x0, d.y0, d.x1, d.y1));
       }

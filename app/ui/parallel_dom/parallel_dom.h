@@ -55,7 +55,9 @@ class ParallelDom {
 
   // What the page asks, applied before the next frame.
   void request_activate(unsigned id);
-  void request_focus(unsigned id);
+  /// ring: draw ImGui's focus ring (the focus came from the keyboard; a finger's or a mouse's
+  /// focus moves no ring).
+  void request_focus(unsigned id, bool ring);
   /// Types `text` into the field `id` (replacing what it holds) and commits it: with Enter
   /// (as a person pressing Enter: a lesson's answer is checked) or by leaving the field.
   void request_text(unsigned id, std::string text, bool enter);
@@ -96,6 +98,7 @@ class ParallelDom {
   unsigned editing_id_ = 0, nav_id_ = 0;
   std::string editing_text_;
   unsigned activate_ = 0, focus_ = 0;
+  bool focus_ring_ = false;
   Typing typing_;
 };
 
