@@ -20,8 +20,9 @@
   function activate(id) { call('swarmlab_dom_activate', ['number'], [id]); }
   // Whether the page's last input was a key (Tab, a screen reader's keys) rather than a finger
   // or a mouse: only then does a focus show ImGui's focus ring, and does the focus of an item
-  // that goes away move on to the next one.
-  var byKeyboard = false;
+  // that goes away move on to the next one. True until a pointer is used: a screen reader in
+  // browse mode moves the focus without sending the page its keys.
+  var byKeyboard = true;
   function focusItem(id) { call('swarmlab_dom_focus', ['number', 'number'], [id, byKeyboard ? 1 : 0]); }
   function type(id, text, enter) { call('swarmlab_dom_type', ['number', 'string', 'number'], [id, text, enter ? 1 : 0]); }
 
@@ -38,7 +39,6 @@
       if (e.key === 'Tab' || !e.target || e.target.tagName !== 'INPUT') byKeyboard = true;
     }, true);
     window.addEventListener('pointerdown', function () { byKeyboard = false; }, true);
-    window.addEventListener('touchstart', function () { byKeyboard = false; }, true);
   }
 
   function regionFor(title) {

@@ -45,7 +45,7 @@ std::optional<std::string> Announcer::next(const Situation& now, double wall_sec
   const bool event = !last_ || !same_events(now, *last_);
   const bool new_turn = last_ && now.lesson_turn != last_->lesson_turn;
   const bool lesson_said =
-      !now.lesson.empty() && (!last_ || now.lesson != last_->lesson || new_turn);
+      !now.lesson.empty() && (!last_ || now.lesson_place != last_->lesson_place || new_turn);
   const bool time_due = now.playing && wall_seconds - said_at_ >= kTimeInterval;
   last_ = now;
   if (!event && !lesson_said && !time_due) return std::nullopt;

@@ -22,7 +22,10 @@ struct Situation {
   /// What a lesson says now: the welcome, a step with its question, or the feedback on an
   /// answer (app/ui/classroom/classroom_outputs.cpp); "" outside a lesson.
   std::string lesson;
-  /// Counts the lesson's answers: the same feedback to a second try is said again.
+  /// Where the lesson is ("welcome", "<id>/<step>", "<id>/summary") and how many answers it
+  /// has had: its words are said when either changes (the same feedback to a second try is said
+  /// again), not when only their wording for the device does.
+  std::string lesson_place;
   std::size_t lesson_turn = 0;
 };
 

@@ -88,17 +88,20 @@ TEST_CASE("Announcer: a lesson's new words are said at once, before the rest") {
   Announcer a;
   Situation s = four_masses();
   REQUIRE(a.next(s, 0.0));
-  s.lesson = "Lesson step 2 of 7. Press Play. Question: How long is one turn?";
+  s.lesson = "One period, step 2 of 7. Press Play. How long is one turn?";
+  s.lesson_place = "one-period/1";
   const auto step = a.next(s, 0.1);
   REQUIRE(step);
   CHECK(*step == s.lesson);  // only the lesson changed: only it is said
   CHECK_FALSE(a.next(s, 0.2));
   s.lesson = "Right: the period is 2 pi / sqrt(J M).";
-  s.playing = false;  // a new step may change the scene too: said after the lesson's words
+  s.lesson_turn = 1;
+  s.playing = false;  // an answer may change the scene too: said after the lesson's words
   const auto feedback = a.next(s, 0.3);
   REQUIRE(feedback);
   CHECK(feedback->rfind(s.lesson + " Four masses (paper Fig. 1). Paused", 0) == 0);
   s.lesson.clear();  // leaving a lesson says nothing by itself
+  s.lesson_place.clear();
   CHECK_FALSE(a.next(s, 0.4));
 }
 
@@ -106,6 +109,7 @@ TEST_CASE("Announcer: the same feedback to a new answer is said again, once") {
   Announcer a;
   Situation s = four_masses();
   s.lesson = "Not yet: the period is longer.";
+  s.lesson_place = "one-period/1";
   s.lesson_turn = 1;
   REQUIRE(a.next(s, 0.0));
   CHECK_FALSE(a.next(s, 0.1));
@@ -114,4 +118,16 @@ TEST_CASE("Announcer: the same feedback to a new answer is said again, once") {
   REQUIRE(again);
   CHECK(*again == s.lesson);
   CHECK_FALSE(a.next(s, 0.3));
+}
+
+TEST_CASE("Announcer: a step is not said again when only its words for the device change") {
+  Announcer a;
+  Situation s = four_masses();
+  s.lesson = "One period, step 4 of 7. Press Space to pause.";
+  s.lesson_place = "one-period/3";
+  REQUIRE(a.next(s, 0.0));
+  s.lesson = "One period, step 4 of 7. Click the pause button to pause.";  // the mouse took over
+  CHECK_FALSE(a.next(s, 0.1));
+  s.lesson_place = "one-period/4";  // the next step is said
+  REQUIRE(a.next(s, 0.2));
 }

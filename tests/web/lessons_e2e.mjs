@@ -13,6 +13,7 @@
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import * as harness from './harness.mjs';
+import { person } from './person.mjs';
 
 const { root, check, sleep, base64url, openApp, screenshot, launchBrowser, runSuite, pageErrors,
         consoleErrors } = harness;
@@ -208,9 +209,8 @@ async function main(url) {
         `t = ${st5.t}, max seen ${await page.evaluate(() => window.__lessonMaxT)}, playing ${st5.playing}`);
   await api(page, 'set', { speed: 1 });
 
-  // 5e. Enter checks an answer, both Enter keys: on a page of its own at a phone's size, click
-  // the lesson panel's title, Tab to the answer field, type, Enter (the compact layout's Lesson
-  // tab holds one field).
+  // 5e. Enter checks an answer, both Enter keys: on a page of its own at a phone's size, Tab to
+  // the answer field (found by its name in the parallel DOM), type, Enter.
   const keys = await openApp(url, 'enter-key', 10);
   await keys.page.setViewportSize({ width: 390, height: 844 });
   await api(keys.page, 'openLesson', 'one-period');
@@ -220,10 +220,11 @@ async function main(url) {
   const lessonPanel = (await api(keys.page, 'state')).panels.find((p) => p.name === 'Lesson');
   check('the compact layout shows the Lesson tab', !!lessonPanel);
   if (lessonPanel) {
+    const me = person(keys.page, 'keyboard');
     for (const [key, typed, right] of [['Enter', '4.44', true], ['NumpadEnter', '9', false]]) {
-      // Held as long as a person holds a key or a button (about 60 ms), not within one frame.
-      await keys.page.mouse.click(lessonPanel.x + 12, lessonPanel.y + 12, { delay: 60 });
-      await keys.page.keyboard.press('Tab', { delay: 60 });
+      // Held as long as a person holds a key (about 60 ms), not within one frame.
+      await me.tabTo(me.find('textbox', 'Your answer'));
+      await keys.page.keyboard.press('Control+A');
       await keys.page.keyboard.type(typed, { delay: 60 });
       await keys.page.keyboard.press(key, { delay: 60 });
       await keys.page.waitForFunction(() => (window.swarmlab.lessonState().task || {}).answered, null, { timeout: 5_000, polling: 50 }).catch(() => {});

@@ -65,20 +65,22 @@ export function person(page, way) {
    *  focusable elements between the focus and the target, presses Tab up to that many times,
    *  looks again. */
   async function tabTo(el) {
-    const handle = await el.elementHandle();
     let presses = 0;
     for (let looks = 0; looks < 80; ++looks) {
-      const steps = await page.evaluate((e) => {
+      // The locator finds the element anew at each look (an item scrolled out of its panel
+      // and back is a new element).
+      const steps = await el.evaluate((e) => {
         const all = [...document.querySelectorAll('#parallel-dom button, #parallel-dom input')];
         const to = all.indexOf(e), from = all.indexOf(document.activeElement);
         if (to < 0) return null;
-        if (from < 0) return 1;  // from outside the mirrored items: one Tab in, then count
+        // From outside the mirrored items: Tab enters at the first, Shift+Tab at the last.
+        if (from < 0) return to < all.length / 2 ? 1 : -1;
         // The shorter way: past the last item Tab comes round to the first.
         const ahead = to - from, n = all.length;
         return ahead > n / 2 ? ahead - n : ahead < -n / 2 ? ahead + n : ahead;
       }, handle);
       if (steps === 0) return presses;
-      if (steps === null) throw new Error('the element is not in the parallel DOM');
+      if (steps === null) throw new Error('the element is not among the focusable items');
       // In batches, looking again between them: the list changes as panels scroll to the
       // focus (a list scrolled out of its panel leaves the page until it is back in view).
       const key = steps > 0 ? 'Tab' : 'Shift+Tab';

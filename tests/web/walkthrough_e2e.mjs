@@ -28,11 +28,13 @@ const lessons = readdirSync(lessonDir).filter((f) => f.endsWith('.json')).sort()
   .map((f) => JSON.parse(readFileSync(join(lessonDir, f), 'utf8')));
 
 // The physics a student would use for the right number (independent of the app's code), from
-// the preset's particles; a generated swarm lists none, and then M is read off the read-outs.
+// the preset's particles, or for a generated swarm of equal masses its count times its mass
+// (README, "Preset reference"; default 1). Random masses would leave M to the read-outs.
 function physics(preset, M) {
   const ps = Array.isArray(preset.particles) ? preset.particles : null;
   const J = preset.J;
   if (ps) M = ps.reduce((s, p) => s + p.m, 0);
+  else if (typeof (preset.particles.mass ?? 1) === 'number') M = preset.particles.count * (preset.particles.mass ?? 1);
   let E = null;
   if (ps) {
     let KE = 0, PE = 0;
@@ -58,7 +60,8 @@ async function rightNumber(page, me, task) {
   const q = task.quantity;
   if (q === 'P' || q === 'T') return readout(me, q);  // as the read-outs show it
   const preset = await page.evaluate(() => JSON.parse(window.swarmlab.preset()));
-  const M = Array.isArray(preset.particles) ? undefined : await readout(me, 'M');
+  const generated = !Array.isArray(preset.particles) && typeof (preset.particles.mass ?? 1) !== 'number';
+  const M = generated ? await readout(me, 'M') : undefined;
   const value = physics(preset, M)[q];
   return value ?? readout(me, q);
 }
@@ -79,7 +82,7 @@ async function walk(url, name) {
     // As a teacher at a bright projector would: View > Light theme.
     await me.press('menuitem', 'View');
     await me.press('menuitem', 'Light theme');
-    await me.find('menuitemcheckbox', 'Light theme').waitFor({ state: 'detached', timeout: 20_000 });
+    await page.waitForFunction(() => window.swarmlab.state().theme === 'light', null, { timeout: 20_000 });
   }
   await shot('00-welcome');
   await me.press('button', `Start: ${lessons[0].title}`);
@@ -152,7 +155,9 @@ async function answer(page, me, task, where, lesson) {
     await openTab(me, 'Plots');
     await me.type('average over', String(task.window ?? 0.5));
     await openTab(me, 'Read-outs');
-    if (await me.find('button', /Pause/).count()) await pauseAndListen(page, me, where);
+    // Paused on the step before: play a moment, as the step asks to watch them change.
+    if (!(await me.find('button', /Pause/).count())) await me.press('button', /Play/);
+    await pauseAndListen(page, me, where);
   }
   await openTab(me, 'Read-outs');
   const right = await rightNumber(page, me, task);
@@ -169,7 +174,6 @@ async function answer(page, me, task, where, lesson) {
 async function openTab(me, name) {
   const tab = me.find('tab', name);
   if (!(await tab.count()) || (await tab.getAttribute('aria-selected')) === 'true') return;
-  if (process.env.DEBUG_TABS) { console.log('tab', name, JSON.stringify(await tab.evaluate((e) => { const r = e.getBoundingClientRect(); return [r.x, r.y, r.width, r.height, e.dataset.clipped]; }))); await me.dom.page().screenshot({ path: `/tmp/tab-${name}-${Date.now()}.png` }); }
   await me.press('tab', name);
   await me.dom.locator('[role=tab][aria-selected=true]', { hasText: name }).first()
     .waitFor({ state: 'attached', timeout: 15_000 })
@@ -202,7 +206,7 @@ async function feedbackSays(me, text) {
 }
 
 const wanted = process.argv.slice(2).length ? process.argv.slice(2) : Object.keys(DEVICES);
-await runSuite('walkthrough', 1_200_000, async (url) => {
+await runSuite('walkthrough', 1_450_000, async (url) => {
   for (const name of wanted) {
     try { await walk(url, name); }
     catch (e) {

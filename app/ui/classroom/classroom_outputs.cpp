@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "ui/classroom/theme_style.h"
-#include "ui/lesson_player/lesson_panel.h"
+#include "ui/input/input_kind.h"
 #include "ui/lesson_player/lesson_speech.h"
 
 #ifdef __EMSCRIPTEN__
@@ -66,6 +66,7 @@ Situation situation_of(AppState& state) {
   if (state.status_is_error) s.error = state.status;
   const LessonSpeech speech = lesson_speech(state.lessons, input_kind(state));
   s.lesson = speech.words;
+  s.lesson_place = speech.place;
   s.lesson_turn = speech.turn;
   return s;
 }

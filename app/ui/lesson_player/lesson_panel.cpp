@@ -5,6 +5,7 @@
 #include "ui/lesson_player/lesson_panel.h"
 
 #include "lessons/device_words.h"
+#include "ui/input/input_kind.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/parallel_dom/item_tooltip.h"
@@ -222,13 +223,11 @@ void draw_summary(AppState& state, float box_height) {
   const Lesson& lesson = *lessons.open_lesson();
   const Palette& palette = current_palette();
   const LessonProgress* progress = lessons.progress_of(lesson.id);
-  char line[96];
-  std::snprintf(line, sizeof line,
-                "Finished: %zu of %zu tasks done (answered right, or predicted).",
-                lessons.answered_count(), lessons.task_count());
+  const std::string finished = lessons.finished_line();
   heading("Summary");
-  mirror_text(ItemRole::paragraph, line);
-  ImGui::TextUnformatted(line);
+  mirror_text(ItemRole::paragraph, finished);
+  ImGui::TextUnformatted(finished.c_str());
+  char line[96];
   ImGui::BeginChild("summary", ImVec2(0, box_height), true);
   std::size_t number = 0;
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
@@ -282,11 +281,6 @@ bool draw_hidden_by_lesson(const AppState& state, LessonHidden what) {
   ImGui::TextDisabled("%s", text.c_str());
   ImGui::PopTextWrapPos();
   return true;
-}
-
-InputKind input_kind(const AppState& state) {
-  if (state.layout.touch) return InputKind::touch;
-  return ImGui::GetIO().NavVisible ? InputKind::keyboard : InputKind::mouse;
 }
 
 void draw_lesson(AppState& state, float height) {

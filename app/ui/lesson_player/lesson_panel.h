@@ -2,7 +2,6 @@
 // The lesson panel (the open lesson's step, its task, feedback, back and next) and the
 // welcome window (what is on the screen, three things to try, the lessons).
 
-#include "lessons/device_words.h"
 #include "ui/app_state.h"
 
 namespace swarmlab {
@@ -22,7 +21,5 @@ bool draw_hidden_by_lesson(const AppState& state, LessonHidden what);
 /// Lesson text: paragraphs split by a blank line, *emphasis* in the accent colour, wrapped
 /// to the window.
 void draw_prose(const std::string& text);
-/// The input the student used last, for lesson words that fit it ({tap|click|press Space}).
-InputKind input_kind(const AppState& state);
 
 }  // namespace swarmlab

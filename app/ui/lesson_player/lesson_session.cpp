@@ -256,6 +256,11 @@ std::size_t LessonSession::answered_count() const {
   return n;
 }
 
+std::string LessonSession::finished_line() const {
+  return "Finished: " + std::to_string(answered_count()) + " of " +
+         std::to_string(task_count()) + " tasks done (answered right, or predicted).";
+}
+
 std::string LessonSession::share_fragment() const {
   if (!open_) return {};
   return lesson_link_fragment(open_is_shipped_ ? open_->id : std::string(), open_json_);

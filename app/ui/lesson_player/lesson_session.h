@@ -42,7 +42,8 @@ struct StepAnswer {
 /// What a student did in one lesson.
 struct LessonProgress {
   std::size_t step = 0;                        ///< where they were
-  std::set<std::size_t> solved;                ///< steps whose task they answered right (a prediction: once made)
+  /// Steps whose task they answered right (a prediction: once made).
+  std::set<std::size_t> solved;
   std::map<std::size_t, std::size_t> predicted;  ///< step -> the option they predicted
   std::map<std::size_t, StepAnswer> answers;   ///< step -> the last answer to its task
   bool finished = false;                       ///< Finish was pressed on the last step
@@ -105,6 +106,8 @@ class LessonSession {
   /// How many of the open lesson's steps have a task, and how many of them are answered.
   std::size_t task_count() const;
   std::size_t answered_count() const;
+  /// "Finished: 4 of 5 tasks done (answered right, or predicted)." for the summary.
+  std::string finished_line() const;
   /// The link fragment that opens the open lesson for a student (lesson_link.h): its id when it
   /// is shipped, else its JSON as opened. "" with no lesson open.
   std::string share_fragment() const;

@@ -38,6 +38,9 @@ bool input_vec3(const char* id, swarm::Vec3& v, const char* quantity, std::size_
 }
 
 constexpr std::size_t kTableLimit = 20;
+/// Rows a particle table submits whether in view or not (a preset may list far more than the
+/// table lets one add).
+constexpr std::size_t kRowsAlwaysSubmitted = 64;
 constexpr double kMinJ = 1e-6, kMaxJ = 100;  // slider range of |J|; any value can be typed
 
 using ParticleList = std::vector<swarm::Particle>;
@@ -93,7 +96,7 @@ void draw_table(AppState& state, ParticleList& list) {
     ImGui::TableSetupColumn("r (x, y, z)", ImGuiTableColumnFlags_WidthStretch, 2.5f);
     ImGui::TableSetupColumn("v (x, y, z)", ImGuiTableColumnFlags_WidthStretch, 2.5f);
     ImGui::TableHeadersRow();
-    for (std::size_t i = 0; i < list.size(); ++i) {
+    const auto row = [&](std::size_t i) {
       ImGui::PushID(int(i));
       ImGui::TableNextRow();
       // The selected particle's row stands out, as its card does among the instruments.
@@ -113,6 +116,17 @@ void draw_table(AppState& state, ParticleList& list) {
       ImGui::TableNextColumn();
       changed |= input_vec3("##v", list[i].v, "v", i + 1);
       ImGui::PopID();
+    };
+    // A short table submits every row, so that Tab and a screen reader reach each one (the
+    // parallel DOM mirrors what is submitted); a long one (a 12,000-particle preset from a
+    // link) only the rows in view, or it would cost seconds a frame.
+    if (list.size() <= kRowsAlwaysSubmitted) {
+      for (std::size_t i = 0; i < list.size(); ++i) row(i);
+    } else {
+      ImGuiListClipper clipper;
+      clipper.Begin(int(list.size()));
+      while (clipper.Step())
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) row(std::size_t(i));
     }
     ImGui::EndTable();
   }

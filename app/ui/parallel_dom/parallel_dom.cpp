@@ -260,10 +260,9 @@ void ParallelDom::apply_requests() {
       if (ImGuiWindow* w = ImGui::FindWindowByID(it->second.window)) {
         ImGui::FocusWindow(w);
         ImGui::SetFocusID(focus_, w);
-        if (focus_ring_) {
-          g.NavDisableHighlight = false;  // ImGui draws its focus ring on the item
-          g.NavDisableMouseHover = true;
-        }
+        // ImGui draws its focus ring on the item for a keyboard's focus, none for a pointer's.
+        g.NavDisableHighlight = !focus_ring_;
+        if (focus_ring_) g.NavDisableMouseHover = true;
         for (const Drawn& d : drawn_)
           if (d.id == focus_) ImGui::ScrollToBringRectIntoView(w, ImRect(d.x0, d.y0, d.x1, d.y1));
       }

@@ -19,10 +19,11 @@ LessonSession loaded() {
 }
 
 const Lesson& one_period(const LessonSession& session) {
+  const Lesson* found = nullptr;
   for (const Lesson& l : session.shipped())
-    if (l.id == "one-period") return l;
-  FAIL("no shipped lesson one-period");
-  throw;
+    if (l.id == "one-period") found = &l;
+  REQUIRE(found);
+  return *found;
 }
 
 bool has(const std::string& text, const std::string& part) {
@@ -51,8 +52,8 @@ TEST_CASE("lesson speech: a step is read with its place, its text, its question 
   session.go_to(3);  // "{Tap|Click} each ball in turn ..."
   const LessonStep& step = lesson.steps[3];
   const std::string touch = lesson_speech(session, InputKind::touch).words;
-  CHECK(touch.rfind(lesson.title + ", step 4 of " + std::to_string(lesson.steps.size()) + ".",
-                    0) == 0);
+  CHECK(touch.rfind(lesson.title + ", step 4 of " + std::to_string(lesson.steps.size()) + ".", 0) ==
+        0);
   CHECK(has(touch, "Tap each ball"));
   CHECK(has(lesson_speech(session, InputKind::mouse).words, "Click each ball"));
   CHECK_FALSE(has(touch, "*"));  // emphasis marks are not read
@@ -83,9 +84,32 @@ TEST_CASE("lesson speech: an answer is followed by its feedback, a new try by a 
   CHECK(second.words == first.words);
   CHECK(second.turn != first.turn);
 
+  CHECK(first.place == second.place);
+
   session.go_to(session.open_lesson()->steps.size() - 1);
   session.finish();
-  CHECK(has(lesson_speech(session, InputKind::keyboard).words, "summary. Finished: "));
+  const LessonSpeech summary = lesson_speech(session, InputKind::keyboard);
+  CHECK(has(summary.words, "summary. " + session.finished_line()));
+  CHECK(summary.place == "one-period/summary");
+}
+
+TEST_CASE(
+    "lesson speech: a step whose prediction was made reads it and the outcome, not the options") {
+  LessonSession session = loaded();
+  const Lesson& lesson = one_period(session);
+  session.open(lesson);
+  session.go_to(2);  // predict: four masses
+  const LessonTask& task = *lesson.steps[2].task;
+  REQUIRE(task.kind == LessonTask::Kind::predict);
+  CHECK(has(lesson_speech(session, InputKind::mouse).words, "Predict A: "));
+  bool play = false;
+  session.answer_option(1, &play);
+  session.next();
+  session.back();  // back on the step: the panel shows the prediction, so does the speech
+  const std::string words = lesson_speech(session, InputKind::mouse).words;
+  CHECK(has(words, "Your prediction: " + task.options[1].substr(0, 15)));
+  CHECK_FALSE(has(words, "Predict A: "));
+  if (!task.outcome.empty()) CHECK(has(words, "Now compare: "));
 }
 
 }  // namespace swarmlab
