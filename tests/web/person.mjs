@@ -78,7 +78,7 @@ export function person(page, way) {
         // The shorter way: past the last item Tab comes round to the first.
         const ahead = to - from, n = all.length;
         return ahead > n / 2 ? ahead - n : ahead < -n / 2 ? ahead + n : ahead;
-      }, handle);
+      });
       if (steps === 0) return presses;
       if (steps === null) throw new Error('the element is not among the focusable items');
       // In batches, looking again between them: the list changes as panels scroll to the
