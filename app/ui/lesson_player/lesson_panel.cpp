@@ -226,7 +226,9 @@ void draw_summary(AppState& state, float box_height) {
   const std::string finished = lessons.finished_line();
   heading("Summary");
   mirror_text(ItemRole::paragraph, finished);
+  ImGui::PushTextWrapPos(0);  // a narrow panel wraps it rather than cut it off
   ImGui::TextUnformatted(finished.c_str());
+  ImGui::PopTextWrapPos();
   char line[96];
   ImGui::BeginChild("summary", ImVec2(0, box_height), true);
   std::size_t number = 0;
