@@ -85,6 +85,7 @@ async function walk(url, name) {
     await page.waitForFunction(() => window.swarmlab.state().theme === 'light', null, { timeout: 20_000 });
   }
   await shot('00-welcome');
+  const domText = [];  // lesson 1 as the parallel DOM reads it, step by step
   await me.press('button', `Start: ${lessons[0].title}`);
   for (const [l, lesson] of lessons.entries()) {
     await said(lesson.title);
@@ -93,6 +94,7 @@ async function walk(url, name) {
       await shot(`L${l + 1}-s${i + 1}`);
       const task = step.task;
       if (task) await answer(page, me, task, `${name} L${l + 1} s${i + 1}`, lesson);
+      if (l === 0) domText.push(`-- step ${i + 1}`, ...(await lessonText(me)));
       await me.press('button', i + 1 < lesson.steps.length ? /^Next \u2192/ : 'Finish');
     }
     await said('Summary');
@@ -101,6 +103,32 @@ async function walk(url, name) {
   }
   check(`${name}: every lesson walked to its summary`, true);
   await checkTranscript(page, name);
+  checkLessonText(domText, name);
+}
+
+// The headings and paragraphs of the region that holds the lesson, in reading order.
+function lessonText(me) {
+  return me.dom.locator('p', { hasText: /^Step \d+ of \d+$/ }).first().evaluate((step) =>
+    [...step.closest('.pdom-region').querySelectorAll('h2, p')].map((e) => e.textContent));
+}
+
+// Lesson 1 read through the parallel DOM: each step's text, its question and the feedback on
+// the answer given, with the device's words and without emphasis marks.
+function checkLessonText(domText, name) {
+  writeFileSync(join(outDir, 'walkthrough', `${name}-lesson1-dom.txt`), domText.join('\n') + '\n');
+  const plain = (t) => t.replace(/\*/g, '').split(/[{\n]/)[0].slice(0, 30);
+  const missing = [];
+  lessons[0].steps.forEach((step, i) => {
+    const at = domText.indexOf(`-- step ${i + 1}`);
+    const end = domText.indexOf(`-- step ${i + 2}`);
+    const lines = domText.slice(at, end < 0 ? undefined : end).join('\n');
+    if (!lines.includes(plain(step.text))) missing.push(`step ${i + 1} text`);
+    if (step.task && !lines.includes(plain(step.task.prompt))) missing.push(`step ${i + 1} question`);
+    if (step.task?.kind === 'measure' && !/Right: /.test(lines)) missing.push(`step ${i + 1} feedback`);
+    if (step.task?.kind === 'predict' && !lines.includes('Your prediction:')) missing.push(`step ${i + 1} prediction`);
+  });
+  check(`${name}: lesson 1 reads in the parallel DOM with every step, question and feedback`,
+        missing.length === 0, missing.join(', '));
 }
 
 // Every text the live region (#announcer) takes, in order, as a screen reader hears it.
