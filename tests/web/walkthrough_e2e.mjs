@@ -234,7 +234,7 @@ async function feedbackSays(me, text) {
 }
 
 const wanted = process.argv.slice(2).length ? process.argv.slice(2) : Object.keys(DEVICES);
-await runSuite('walkthrough', 1_450_000, async (url) => {
+await runSuite('walkthrough', 1_750_000, async (url) => {
   for (const name of wanted) {
     try { await walk(url, name); }
     catch (e) {
