@@ -198,8 +198,11 @@ TEST_CASE("lesson springs-to-cm, step 1: the stiffest and weakest springs") {
 // Lesson 2, step 5: the centre of mass moves at a steady velocity (no net force), and lesson 8,
 // step 4, says the same of hard spheres, whose collisions share momentum between pairs.
 TEST_CASE("lesson springs-to-cm, step 5; walls-that-work, step 4: the CM moves uniformly") {
-  for (const auto& [id, step] : {std::pair<const char*, std::size_t>{"springs-to-cm", 1},
-                                 {"walls-that-work", 4}}) {
+  // Named variables, not a structured binding: clang (emcc) cannot capture one in INFO's lambda.
+  for (const auto& scene : {std::pair<const char*, std::size_t>{"springs-to-cm", 1},
+                            {"walls-that-work", 4}}) {
+    const char* id = scene.first;
+    const std::size_t step = scene.second;
     INFO(id << " step " << step);
     const swarm::Preset p = scene_of(id, step);
     swarm::Run run = run_of(p);
