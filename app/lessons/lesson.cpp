@@ -453,6 +453,13 @@ Marking mark_measurement(const LessonTask& task, double answer, double expected,
   return m;
 }
 
+std::string without_emphasis(std::string_view text) {
+  std::string plain;
+  for (const char c : text)
+    if (c != '*') plain += c;
+  return plain;
+}
+
 Marking mark_option(const LessonTask& task, std::size_t option) {
   Marking m;
   if (option >= task.options.size()) {

@@ -105,6 +105,10 @@ std::string_view name_of(LessonHidden hidden);
 /// "Ω" (the growth rate) for a repulsive one, as the read-outs and the lessons write it.
 std::string quantity_symbol(Quantity quantity, bool repulsive);
 
+/// Lesson text as it is read aloud or mirrored for a screen reader: without its *emphasis*
+/// marks.
+std::string without_emphasis(std::string_view text);
+
 /// A student's answer, marked.
 struct Marking {
   std::optional<bool> correct;  ///< none for a prediction: it is recorded, not marked

@@ -345,3 +345,9 @@ TEST_CASE("every shipped lesson validates") {
   }
   for (const std::string& name : stand_ins) MESSAGE("stand-in for the not yet shipped " << name);
 }
+
+TEST_CASE("lesson text without its emphasis marks reads as written") {
+  CHECK(without_emphasis("Open *Controls → System*, then *Play*.") ==
+        "Open Controls → System, then Play.");
+  CHECK(without_emphasis("no marks") == "no marks");
+}

@@ -5,8 +5,8 @@
 #include "ui/lesson_player/lesson_panel.h"
 
 #include "lessons/device_words.h"
-#include "ui/input/input_kind.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/input_kind.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/parallel_dom/item_tooltip.h"
 #include "ui/parallel_dom/parallel_dom.h"
@@ -43,11 +43,8 @@ void keep_inside_viewport() {
 // [SECTION] prose ------------------------------------------------------------------------------
 
 void draw_prose(const std::string& text) {
-  // A screen reader reads it where it stands (the parallel DOM), without the emphasis marks.
-  std::string plain;
-  for (const char c : text)
-    if (c != '*') plain += c;
-  mirror_text(ItemRole::paragraph, plain);
+  // A screen reader reads it where it stands (the parallel DOM).
+  mirror_text(ItemRole::paragraph, without_emphasis(text));
   struct Piece {
     std::string text;
     bool emphasis;
@@ -221,7 +218,6 @@ float& chrome_height() {
 void draw_summary(AppState& state, float box_height) {
   LessonSession& lessons = state.lessons;
   const Lesson& lesson = *lessons.open_lesson();
-  const Palette& palette = current_palette();
   const LessonProgress* progress = lessons.progress_of(lesson.id);
   const std::string finished = lessons.finished_line();
   heading("Summary");

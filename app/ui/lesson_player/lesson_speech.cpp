@@ -8,8 +8,7 @@ namespace {
 /// The text as it is read: device words chosen, emphasis marks dropped, paragraphs joined.
 std::string plain(const std::string& text, InputKind input) {
   std::string out;
-  for (const char c : device_words(text, input)) {
-    if (c == '*') continue;
+  for (const char c : without_emphasis(device_words(text, input))) {
     if (c == '\n') {
       if (!out.empty() && out.back() != ' ') out += ' ';
       continue;
