@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "ui/classroom/theme_style.h"
-#include "ui/input/input_kind.h"
+#include "ui/lesson_player/input_kind.h"
 #include "ui/lesson_player/lesson_speech.h"
 
 #ifdef __EMSCRIPTEN__

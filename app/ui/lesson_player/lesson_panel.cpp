@@ -6,7 +6,7 @@
 
 #include "lessons/device_words.h"
 #include "ui/classroom/theme_style.h"
-#include "ui/input/input_kind.h"
+#include "ui/lesson_player/input_kind.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/parallel_dom/item_tooltip.h"
 #include "ui/parallel_dom/parallel_dom.h"

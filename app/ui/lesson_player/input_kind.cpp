@@ -1,4 +1,4 @@
-#include "ui/input/input_kind.h"
+#include "ui/lesson_player/input_kind.h"
 
 #include <imgui.h>
 
