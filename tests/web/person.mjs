@@ -55,8 +55,10 @@ export function person(page, way) {
       const span = Math.max(40, Math.min(r.bottom - r.top - 20, 240));
       if (way === 'touch') await swipe(x, down ? r.bottom - 10 : r.top + 10, down ? -span : span);
       else { await page.mouse.move(x, (r.top + r.bottom) / 2); await page.mouse.wheel(0, down ? span : -span); }
+      // A swipe that did not scroll (on a starved machine its first move can come late enough
+      // to count as a finger held still) is swiped again, as a person would.
       await page.waitForFunction(([e, y]) => e.dataset.clipped !== 'true' || e.getBoundingClientRect().y !== y,
-                                 [await el.elementHandle(), b.y], { timeout: 10_000 });
+                                 [await el.elementHandle(), b.y], { timeout: 10_000 }).catch(() => {});
     }
     throw new Error('could not scroll to ' + (await el.evaluate((e) => e.textContent || e.getAttribute('aria-label'))));
   }
