@@ -42,6 +42,11 @@ int main(int argc, char** argv) {
   app.add_flag("--lesson-summary", lesson_summary,
                "With a lesson file: open its summary, as after Finish (the screenshot test)");
 
+  std::string items;
+  app.add_option("--items", items,
+                 "After every frame, write its items (role, name, rectangle) to this JSON "
+                 "file: how the window tests find what to press");
+
   swarmlab::RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Run a preset headless and report the results");
   run_cmd->add_option("preset", run.preset_path, "Preset file (JSON)")->required();
@@ -82,7 +87,8 @@ int main(int argc, char** argv) {
   if (*report_cmd) return swarmlab::report_command(report);
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop(
-      {window_preset, frames, screenshot, select, presentation, plot_tab, sound, lesson_summary});
+      {window_preset, frames, screenshot, select, presentation, plot_tab, sound, lesson_summary,
+       items});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

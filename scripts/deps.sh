@@ -5,7 +5,7 @@ set -euo pipefail
 
 declare -A groups=(
   [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin"
-  [desktop]="libimgui-dev libsdl2-dev libstb-dev fonts-dejavu-core xvfb xauth"
+  [desktop]="dpkg-dev libsdl2-dev libstb-dev fonts-dejavu-core xvfb xauth xdotool"
   [web]="emscripten nodejs npm chromium"
   [fuzz]="clang libclang-rt-14-dev"
 )

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Prepares everything the browser (wasm) build of Swarm Lab needs, cached under build/web-deps:
 #   build/web-deps/sdl2-prefix   SDL2 2.26.x built for wasm from Debian's own source package
-#   build/web-deps/imgui         Dear ImGui 1.86 sources (imgui*.cpp, backends/) from Debian's source package
+#   build/web-deps/imgui         Dear ImGui 1.86 sources: a link to build/imgui-src (scripts/imgui-sources.sh)
 #   build/web-deps/include       symlinks nlohmann -> /usr/include/nlohmann, doctest -> /usr/include/doctest
 #                                (never put /usr/include itself on the wasm include path)
 # Idempotent: a second run only checks stamp files and takes about a second.
 # Needs root (or sudo) the first time, for apt-get (emscripten, nodejs, npm, deb-src sources).
-# Usage: scripts/web-deps.sh [--force]   (--force rebuilds SDL2 and re-extracts ImGui)
+# Usage: scripts/web-deps.sh [--force]   (--force rebuilds SDL2)
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -65,15 +65,12 @@ if [ ${#need[@]} -gt 0 ]; then
 fi
 say "emcc: $(emcc --version 2>/dev/null | head -1)"
 
-# 2. deb-src entries (a separate file, the original is left alone).
-srclist=/etc/apt/sources.list.d/debian-src.sources
-if [ ! -f "$srclist" ]; then
-  say "enabling deb-src in $srclist"
-  [ -f /etc/apt/sources.list.d/debian.sources ] || die "/etc/apt/sources.list.d/debian.sources not found"
-  sed 's/^Types:.*/Types: deb-src/' /etc/apt/sources.list.d/debian.sources | $sudo tee "$srclist" >/dev/null
-  apt_updated=0
-  apt_update
-fi
+# 2. ImGui 1.86's sources, shared with the desktop build (this also turns on the deb-src
+# entries that the SDL2 source package below needs).
+"$root/scripts/imgui-sources.sh"
+ln -sfn "$root/build/imgui-src" "$deps/imgui"
+imgui_ver=$(sed -n 's/^#define IMGUI_VERSION *"\(.*\)"/\1/p' "$deps/imgui/imgui.h")
+say "ImGui $imgui_ver ready at ${deps#"$root"/}/imgui"
 
 # 3. Fetch the Debian source packages (cached in build/web-deps/dl).
 mkdir -p "$dl" "$src"
@@ -86,7 +83,6 @@ fetch() { # $1 = source package name
   fi
 }
 fetch libsdl2
-fetch imgui
 
 unpack() { # $1 = source package name, $2 = destination dir; unpacks with Debian's patches applied
   local dsc; dsc=$(ls "$dl/$1"_*.dsc | sort -V | tail -1)
@@ -95,15 +91,7 @@ unpack() { # $1 = source package name, $2 = destination dir; unpacks with Debian
   dpkg-source --no-check -x "$dsc" "$2" >/dev/null 2>&1 || die "dpkg-source -x $dsc failed"
 }
 
-# 4. ImGui 1.86 sources.
-unpack imgui "$src/imgui"
-[ -f "$src/imgui/imgui.cpp" ] && [ -f "$src/imgui/backends/imgui_impl_sdl.cpp" ] \
-  && [ -f "$src/imgui/backends/imgui_impl_opengl3.cpp" ] || die "ImGui sources incomplete in $src/imgui"
-ln -sfn "$src/imgui" "$deps/imgui"
-imgui_ver=$(sed -n 's/^#define IMGUI_VERSION *"\(.*\)"/\1/p' "$src/imgui/imgui.h")
-say "ImGui $imgui_ver ready at ${deps#"$root"/}/imgui"
-
-# 5. SDL2 for wasm.
+# 4. SDL2 for wasm.
 unpack libsdl2 "$src/sdl2"
 rm -rf "$deps/sdl2-build" "$prefix"
 say "configuring SDL2 for wasm (emcmake cmake)"

@@ -3,9 +3,9 @@
 
 #include <emscripten.h>
 
-#include <nlohmann/json.hpp>
 #include <string>
 
+#include "ui/parallel_dom/items_json.h"
 #include "ui/parallel_dom/parallel_dom.h"
 #include "web_app.h"
 
@@ -13,45 +13,14 @@ namespace {
 
 std::string items_text;  // valid until the next call
 
-nlohmann::json item_json(const swarmlab::MirroredItem& m) {
-  nlohmann::json j = {{"id", m.id},
-                      {"role", swarmlab::role_name(m.role)},
-                      {"name", m.name},
-                      {"region", m.region},
-                      {"x", m.x},
-                      {"y", m.y},
-                      {"width", m.width},
-                      {"height", m.height}};
-  if (m.role == swarmlab::ItemRole::number || m.role == swarmlab::ItemRole::slider) j["numeric"] = true;
-  if (!m.description.empty()) j["description"] = m.description;
-  if (!m.value.empty()) j["value"] = m.value;
-  if (m.checked) j["checked"] = true;
-  if (m.expanded) j["expanded"] = true;
-  if (m.openable) j["openable"] = true;
-  if (m.has_popup) j["popup"] = true;
-  if (m.disabled) j["disabled"] = true;
-  if (m.clipped) j["clipped"] = true;
-  return j;
-}
-
 }  // namespace
 
 extern "C" {
 
-/// {"items": [...], "editing": id, "text": "...", "nav": id, "touch": bool}: the items of the
-/// last frame in reading order (web/README.md, "Parallel DOM"), the text field being edited
-/// (0 when none) with its text, the item ImGui's keyboard focus is on.
+/// The items of the last frame as JSON (app/ui/parallel_dom/items_json.h).
 EMSCRIPTEN_KEEPALIVE const char* swarmlab_dom_items() {
-  const swarmlab::ParallelDom& dom = swarmlab::parallel_dom();
-  nlohmann::json items = nlohmann::json::array();
-  for (const swarmlab::MirroredItem& m : dom.items()) items.push_back(item_json(m));
   swarmlab::App* app = swarmlab::web_app();
-  items_text = nlohmann::json{{"items", std::move(items)},
-                              {"editing", dom.editing_id()},
-                              {"text", dom.editing_text()},
-                              {"nav", dom.nav_id()},
-                              {"touch", app && app->state().layout.touch}}
-                   .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  items_text = swarmlab::items_json(swarmlab::parallel_dom(), app && app->state().layout.touch);
   return items_text.c_str();
 }
 

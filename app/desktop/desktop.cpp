@@ -15,6 +15,8 @@
 #include "ui/classroom/presentation.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/main_loop.h"
+#include "ui/parallel_dom/items_json.h"
+#include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/preset_store.h"
 
 namespace swarmlab {
@@ -43,15 +45,26 @@ void take_screenshot(Frontend& f) {
   screenshot_error = save_screenshot(screenshot_path, width, height);
 }
 
+/// The mirrored items after each frame, numbered, written whole (renamed into place) so a
+/// reader never sees half a frame's items; a test that sees an item at the same place in two
+/// frames knows it has stopped moving (as Playwright does before a click).
+void write_items(const std::string& path, long long frame, bool touch) {
+  const std::string text =
+      "{\"frame\": " + std::to_string(frame) + ", \"dom\": " + items_json(parallel_dom(), touch) + "}";
+  if (const std::string e = write_file_atomically(path, text); !e.empty())
+    std::fprintf(stderr, "error: %s\n", e.c_str());
+}
+
 }  // namespace
 
 int run_desktop(const DesktopOptions& options) {
   // A screenshot that cannot be written is refused before the window opens, not after the run.
-  if (!options.screenshot_path.empty())
-    if (const std::string e = check_output_path(options.screenshot_path); !e.empty()) {
-      std::fprintf(stderr, "error: %s\n", e.c_str());
-      return 1;
-    }
+  for (const std::string* path : {&options.screenshot_path, &options.items_path})
+    if (!path->empty())
+      if (const std::string e = check_output_path(*path); !e.empty()) {
+        std::fprintf(stderr, "error: %s\n", e.c_str());
+        return 1;
+      }
   std::string error;
   Frontend f;
   f.window = open_window("Swarm Lab", 1280, 720, error);
@@ -117,6 +130,8 @@ int run_desktop(const DesktopOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();
     run_frame(f, last && !screenshot_path.empty() ? take_screenshot : nullptr);
+    if (!options.items_path.empty())
+      write_items(options.items_path, frame, f.app->state().layout.touch);
     if (frame > kWarmUp) {
       timed_ms +=
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

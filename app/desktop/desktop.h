@@ -14,6 +14,9 @@ struct DesktopOptions {
   int plot_tab = 0;  ///< open this plot tab (numbered from 1, left to right) at the start; 0: the preset's
   bool sound = false;  ///< start with the wall clicks on
   bool lesson_summary = false;  ///< with a lesson file: open its summary, as after Finish
+  /// After every frame, write its number and its items here as JSON (the parallel DOM's
+  /// items_json: role, name, rectangle), so a test finds what to press by role and name.
+  std::string items_path;
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

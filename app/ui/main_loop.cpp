@@ -73,6 +73,20 @@ void apply_touch(App& app) {
   io.MouseDown[0] = t.pointer && t.down;  // the App scrolls the panel under a dragging finger
 }
 
+/// ImGui's SDL backend, with the modifiers a key event carries: the backend reads them from
+/// SDL's state when the event is handled, by which time a quick Ctrl+A (both keys down and up
+/// between two frames) has let Ctrl go, and the A would be typed as text.
+void process_event(SDL_Event& event) {
+  ImGui_ImplSDL2_ProcessEvent(&event);
+  if (event.type != SDL_KEYDOWN && event.type != SDL_KEYUP) return;
+  ImGuiIO& io = ImGui::GetIO();
+  const Uint16 mod = event.key.keysym.mod;
+  io.KeyShift = (mod & KMOD_SHIFT) != 0;
+  io.KeyCtrl = (mod & KMOD_CTRL) != 0;
+  io.KeyAlt = (mod & KMOD_ALT) != 0;
+  io.KeySuper = (mod & KMOD_GUI) != 0;
+}
+
 }  // namespace
 
 bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
@@ -81,7 +95,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   // pressed, and Enter in a lesson's answer field did nothing. Such a release is held back to
   // the next frame.
   static std::vector<SDL_Event> held_key_ups;
-  for (SDL_Event& up : held_key_ups) ImGui_ImplSDL2_ProcessEvent(&up);
+  for (SDL_Event& up : held_key_ups) process_event(up);
   held_key_ups.clear();
   std::vector<SDL_Scancode> pressed_this_frame;
   SDL_Event event;
@@ -102,7 +116,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
     if ((event.type == SDL_MOUSEMOTION && event.motion.which != SDL_TOUCH_MOUSEID) ||
         (event.type == SDL_MOUSEBUTTONDOWN && event.button.which != SDL_TOUCH_MOUSEID))
       f.app->state().layout.touch = false;
-    ImGui_ImplSDL2_ProcessEvent(&event);
+    process_event(event);
     // Closing asks first when there are unsaved edits (save_dialog.h).
     if (event.type == SDL_QUIT) f.app->request_close();
     if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&

@@ -90,3 +90,17 @@ function(swarmlab_imgui_core_with_hooks imgui_dir out_var)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${imgui_dir}/imgui.cpp")
   set(${out_var} "${out}" PARENT_SCOPE)
 endfunction()
+
+# swarmlab_imgui_with_hooks(<imgui_dir>): the static library swarmlab_imgui, ImGui 1.86 with
+# its SDL2 and OpenGL3 backends and the hooks above, for the desktop and the page alike (each
+# adds its GL flavour and SDL2).
+function(swarmlab_imgui_with_hooks imgui_dir)
+  swarmlab_imgui_widgets_with_hooks("${imgui_dir}" imgui_widgets)
+  swarmlab_imgui_core_with_hooks("${imgui_dir}" imgui_core)
+  add_library(swarmlab_imgui STATIC
+    ${imgui_core} ${imgui_dir}/imgui_draw.cpp ${imgui_dir}/imgui_tables.cpp
+    ${imgui_widgets} ${imgui_dir}/misc/cpp/imgui_stdlib.cpp
+    ${imgui_dir}/backends/imgui_impl_sdl.cpp ${imgui_dir}/backends/imgui_impl_opengl3.cpp)
+  target_include_directories(swarmlab_imgui SYSTEM PUBLIC ${imgui_dir} ${imgui_dir}/backends ${imgui_dir}/misc/cpp)
+  target_compile_definitions(swarmlab_imgui PUBLIC IMGUI_ENABLE_TEST_ENGINE)
+endfunction()

@@ -1,13 +1,11 @@
 // Dear ImGui's item hooks (IMGUI_ENABLE_TEST_ENGINE, as imgui_test_engine uses them) feeding
 // the parallel DOM, and the value hook that imgui_hooks.cmake adds to the widgets whose state
-// the stock hooks do not report. Linked where ImGui is built from source with the hooks (the
-// page); imgui_item_hooks_none.cpp stands in for Debian's packaged libimgui.
+// the stock hooks do not report. ImGui is built from Debian's sources with the hooks on the
+// desktop and in the page alike (imgui_hooks.cmake).
 #include <imgui.h>
 #include <imgui_internal.h>
 
 #include "ui/parallel_dom/parallel_dom.h"
-
-bool swarmlab::ParallelDom::hooks_compiled() { return true; }
 
 void ImGuiTestEngineHook_ItemAdd(ImGuiContext* ctx, const ImRect& bb, ImGuiID id) {
   swarmlab::parallel_dom().item_added(*ctx, id, bb.Min.x, bb.Min.y, bb.Max.x, bb.Max.y);

@@ -41,7 +41,7 @@ void ParallelDom::begin_frame() {
   ++frame_;
   sequence_ = 0;
   drawn_.clear();
-  if (hooks_compiled() && GImGui) GImGui->TestEngineHookItems = true;
+  if (GImGui) GImGui->TestEngineHookItems = true;
 }
 
 void ParallelDom::item_added(ImGuiContext& g, unsigned id, float x0, float y0, float x1, float y1) {

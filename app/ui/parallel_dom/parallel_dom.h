@@ -20,10 +20,6 @@ namespace swarmlab {
 
 class ParallelDom {
  public:
-  /// Whether ImGui calls the hooks (the ImGui the page builds; Debian's packaged libimgui
-  /// for the desktop has them compiled out, and the desktop needs no DOM).
-  static bool hooks_compiled();
-
   // Around one frame (app/ui/main_loop.cpp): the requests are applied before NewFrame, the
   // items collected while the frame is drawn and published after it.
   void apply_requests();
