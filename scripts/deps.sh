@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Swarm Lab needs, only those still missing, so a second run
-# costs a second. Usage: scripts/deps.sh [native] [desktop] [web] [fuzz]
+# costs a second. Usage: scripts/deps.sh [native] [desktop] [web] [webtest] [fuzz]
 set -euo pipefail
 
+# Each group holds everything its own build or run needs, so that any one script works on a
+# fresh machine with only the groups it asks for (scripts/fresh-check.sh checks that).
 declare -A groups=(
   [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin"
   [desktop]="dpkg-dev libsdl2-dev libstb-dev fonts-dejavu-core xvfb xauth xdotool"
-  [web]="emscripten nodejs npm chromium"
-  [fuzz]="clang libclang-rt-14-dev"
+  [web]="emscripten nodejs npm cmake make python3 dpkg-dev libeigen3-dev nlohmann-json3-dev doctest-dev libstb-dev"
+  [webtest]="chromium"
+  [fuzz]="clang libclang-rt-14-dev libeigen3-dev nlohmann-json3-dev nodejs"
 )
 
 wanted=()

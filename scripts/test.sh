@@ -1,32 +1,75 @@
 #!/usr/bin/env bash
-# The whole test suite: installs what is missing, builds natively and with Emscripten, runs
-# the doctest suite natively and under node, the CLI as a process, the desktop window under
-# Xvfb, the browser app in headless Chromium and a minute of fuzzing the preset parser.
-set -euo pipefail
+# The test suite, in two tiers (README, "Tests"):
+#   scripts/test.sh          everything, as CI runs it (.ci/run): builds natively and with
+#                            Emscripten, then the doctest suite natively and under node, the CLI
+#                            as a process, the desktop window under Xvfb, native == wasm, the
+#                            browser suites and the walkthroughs in headless Chromium, and a
+#                            minute of fuzzing. About 35 minutes on a fresh clone of a 2-core
+#                            machine.
+#   scripts/test.sh --quick  before a commit: the doctest suite, the CLI tests and one browser
+#                            smoke test, under 3 minutes once built.
+# Installs what is missing first. Each stage runs through ctest's labels (unit, cli, desktop,
+# wasm, web, walkthrough, fuzz, smoke) where it can; a failed test stage does not stop the later
+# ones. Ends with a table of the stages and their times; exits non-zero if any stage failed.
+set -uo pipefail
 cd "$(dirname "$0")/.."
-scripts/deps.sh native desktop web
+
+quick=0
+case "${1:-}" in
+  --quick) quick=1 ;;
+  "") ;;
+  *) echo "test.sh: unknown option $1 (--quick, or nothing for the whole suite)" >&2; exit 2 ;;
+esac
+
+stages=()
+failed=0
+t_all=$(date +%s)
+# stage NAME COMMAND...: runs it, times it, records ok or FAILED.
+stage() {
+  local name=$1 t0 result
+  shift
+  echo "== $name"
+  t0=$(date +%s)
+  if "$@"; then result=ok; else result=FAILED; failed=1; fi
+  stages+=("$(printf '%-58s %6ss  %s' "$name" "$(( $(date +%s) - t0 ))" "$result")")
+  [ "$result" = ok ]
+}
+table() {
+  echo
+  echo "== stages ($([ $quick -eq 1 ] && echo quick || echo full))"
+  printf '%s\n' "${stages[@]}"
+  printf '%-58s %6ss  %s\n' "total" "$(( $(date +%s) - t_all ))" "$([ $failed -eq 0 ] && echo ok || echo FAILED)"
+}
+trap table EXIT
+# A build that fails leaves nothing to test: stop there.
+build() { stage "$@" || exit 1; }
+
 export NODE_PATH=/usr/share/nodejs
+native_ctest() { (cd build && ctest --output-on-failure "$@"); }
 
-echo "== native build"
-scripts/build.sh
-echo "== native tests (ctest)"
-(cd build && ctest --output-on-failure)
-
-echo "== core and its tests compiled with emcc, run under node"
-scripts/web-deps.sh
-if [ ! -f build-wasm/CMakeCache.txt ]; then
-  emcmake cmake -S . -B build-wasm -DCMAKE_BUILD_TYPE=Release >/dev/null
+if [ $quick -eq 1 ]; then
+  build "native build" scripts/build.sh
+  stage "doctest suite and CLI tests (ctest -L 'unit|cli')" native_ctest -L 'unit|cli' -j2
+  stage "browser smoke test (ctest -L smoke)" native_ctest -L smoke
+  exit $failed
 fi
-cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab
-(cd build-wasm && ctest --output-on-failure)
 
-echo "== the same presets natively and in wasm reach the same final state"
-python3 tests/wasm/same_final_state.py build/app/swarmlab build-wasm/app/swarmlab.js \
+build "packages (scripts/deps.sh)" scripts/deps.sh native desktop web webtest fuzz
+build "native build" scripts/build.sh
+stage "doctest, CLI, desktop window (ctest -L 'unit|cli|desktop')" native_ctest -L 'unit|cli|desktop' -j2
+
+wasm_build() {
+  scripts/web-deps.sh &&
+    { [ -f build-wasm/CMakeCache.txt ] || emcmake cmake -S . -B build-wasm -DCMAKE_BUILD_TYPE=Release >/dev/null; } &&
+    cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab swarmlab_web
+}
+build "wasm build: core, tests, CLI for node, the page" wasm_build
+stage "doctest suite under node (ctest in build-wasm)" bash -c 'cd build-wasm && ctest --output-on-failure'
+stage "native and wasm reach the same final state" python3 tests/wasm/same_final_state.py \
+  build/app/swarmlab build-wasm/app/swarmlab.js \
   tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
   assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
-
-echo "== the browser app in headless Chromium (build/web, playwright-core)"
-tests/web/run.sh
-
-echo "== fuzzing: preset parsing, validation and the resource estimate (libFuzzer, a minute) and share-link decoding (node, 20 s)"
-scripts/fuzz.sh 60
+stage "browser suites (ctest -L web)" native_ctest -L web
+stage "walkthroughs: every lesson on four devices (ctest -L walkthrough)" native_ctest -L walkthrough
+stage "fuzzing, a minute (ctest -L fuzz)" native_ctest -L fuzz
+exit $failed

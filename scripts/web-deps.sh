@@ -26,6 +26,7 @@ mkdir -p "$deps"
 if command -v flock >/dev/null; then exec 9>"$deps/.lock"; flock 9; fi
 
 [ "${1:-}" = "--force" ] && rm -f "$stamp"
+"$root/scripts/deps.sh" web  # emscripten, node, and the headers the wasm build includes
 
 mk_includes() {
   mkdir -p "$deps/include"
@@ -48,21 +49,6 @@ if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null; then sudo="sudo"; fi
 apt_updated=0
 apt_update() { [ $apt_updated -eq 1 ] || { say "apt-get update"; $sudo apt-get update -qq; apt_updated=1; }; }
 
-# 1. Tools: emscripten, node, npm (a working node/npm from elsewhere counts), plus cmake/make/dpkg-dev.
-need=()
-command -v emcc >/dev/null || need+=(emscripten)
-command -v node >/dev/null || need+=(nodejs)
-command -v npm >/dev/null || need+=(npm)
-command -v cmake >/dev/null || need+=(cmake)
-command -v make >/dev/null || need+=(make)
-command -v dpkg-source >/dev/null || need+=(dpkg-dev)
-[ -d /usr/include/nlohmann ] || need+=(nlohmann-json3-dev)
-[ -d /usr/include/doctest ] || need+=(doctest-dev)
-if [ ${#need[@]} -gt 0 ]; then
-  apt_update
-  say "installing ${need[*]}"
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >&2
-fi
 say "emcc: $(emcc --version 2>/dev/null | head -1)"
 
 # 2. ImGui 1.86's sources, shared with the desktop build (this also turns on the deb-src

@@ -3,6 +3,8 @@
 # seconds when nothing changed; --no-build skips it), installs playwright-core from npm into
 # tests/web/node_modules if needed, then runs e2e.mjs and every *_e2e.mjs suite beside it
 # (each its own Chromium, sharing harness.mjs) in Debian's headless Chromium.
+#   tests/web/run.sh [--no-build] [SUITE...]   SUITE: e2e, time, touch, ... (default: all)
+#   tests/web/run.sh --prepare                 only build and install (ctest's web fixture)
 # Each suite ends with "N passed, M failed"; the exit code is non-zero if any suite failed.
 # Screenshots and console logs: build/web-test/.
 set -euo pipefail
@@ -10,14 +12,22 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 
 build=1
+prepare_only=0
+suites=()
 for arg in "$@"; do
   case $arg in
     --no-build) build=0 ;;
-    *) echo "run.sh: unknown option $arg" >&2; exit 2 ;;
+    --prepare) prepare_only=1 ;;
+    -*) echo "run.sh: unknown option $arg" >&2; exit 2 ;;
+    *) name=$(basename "${arg%.mjs}"); name=${name%_e2e}
+       suite="$here/${name}_e2e.mjs"; [ "$name" = e2e ] && suite="$here/e2e.mjs"
+       [ -f "$suite" ] || { echo "run.sh: no suite $arg (no $suite)" >&2; exit 2; }
+       suites+=("$suite") ;;
   esac
 done
+[ ${#suites[@]} -gt 0 ] || suites=("$here/e2e.mjs" "$here"/*_e2e.mjs)
 
-command -v node >/dev/null && command -v npm >/dev/null || { echo "run.sh: node and npm are needed (apt-get install nodejs npm)" >&2; exit 1; }
+"$root/scripts/deps.sh" web webtest
 [ -x "${CHROMIUM:-/usr/bin/chromium}" ] || { echo "run.sh: ${CHROMIUM:-/usr/bin/chromium} is missing (apt-get install chromium)" >&2; exit 1; }
 
 if [ $build -eq 1 ]; then
@@ -36,10 +46,12 @@ if [ ! -f "$here/node_modules/playwright-core/package.json" ] || [ "$here/packag
   touch "$stamp"
 fi
 
+[ $prepare_only -eq 1 ] && exit 0
+
 cd "$root"
+export NODE_PATH=/usr/share/nodejs
 status=0
-for suite in "$here/e2e.mjs" "$here"/*_e2e.mjs; do
-  [ -f "$suite" ] || continue
+for suite in "${suites[@]}"; do
   echo "== $(basename "$suite")"
   limit=150
   # The walkthroughs go through every lesson on four devices: about 16 minutes, 22 with both
