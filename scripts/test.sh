@@ -70,6 +70,6 @@ stage "native and wasm reach the same final state" python3 tests/wasm/same_final
   tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
   assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
 stage "browser suites (ctest -L web)" native_ctest -L web
-stage "walkthroughs: every lesson on four devices (ctest -L walkthrough)" native_ctest -L walkthrough
+stage "walkthroughs: every lesson on four devices (ctest -L walkthrough)" native_ctest -L walkthrough -j2
 stage "fuzzing, a minute (ctest -L fuzz)" native_ctest -L fuzz
 exit $failed

@@ -236,7 +236,9 @@ async function feedbackSays(me, text) {
 }
 
 const wanted = process.argv.slice(2).length ? process.argv.slice(2) : Object.keys(DEVICES);
-await runSuite('walkthrough', 1_750_000, async (url) => {
+// One device per process lets ctest walk two at once (tests/CMakeLists.txt); each keeps its own log.
+const suiteName = process.argv.slice(2).length ? `walkthrough-${wanted.join('-')}` : 'walkthrough';
+await runSuite(suiteName, 1_750_000, async (url) => {
   for (const name of wanted) {
     try { await walk(url, name); }
     catch (e) {
