@@ -74,7 +74,8 @@ json lesson_state(swarmlab::AppState& app) {
           {"summary", lessons.showing_summary()},
           {"hidden", {{"readouts", lessons.hides(swarmlab::LessonHidden::readouts)},
                       {"card", lessons.hides(swarmlab::LessonHidden::card)},
-                      {"plots", lessons.hides(swarmlab::LessonHidden::plots)}}}};
+                      {"plots", lessons.hides(swarmlab::LessonHidden::plots)}}},
+          {"loops", app.lesson_loops}};
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "ui/parallel_dom/parallel_dom.h"
 #include "web_app.h"
 
 namespace {
@@ -37,6 +38,10 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["touch"] = s.layout.touch;
   j["fingers"] = app.touch().fingers();
   j["ui_scale"] = s.layout.ui_scale;
+  // The canvas size the last frame was laid out for, and whether the next lays out the same.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  j["display"] = {{"width", display.x}, {"height", display.y}};
+  j["layout_settled"] = s.layout.settled;
   const swarmlab::ViewRect& v = s.layout.view;
   j["view"] = rect_json(v.x, v.y, v.width, v.height);
   j["panels"] = nlohmann::json::array();
@@ -73,6 +78,15 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["fast_forward"] = s.travel.active() && s.travel.kind != swarmlab::TimeTravel::Kind::seek
                           ? nlohmann::json{{"progress", s.travel.progress(s.run->step())}}
                           : nlohmann::json(nullptr);
+  // The last fast-forward as its bar showed it, kept after it ends (time_travel.h).
+  const swarmlab::FastForwardRecord& ff = s.last_fast_forward;
+  const bool to_run_end = ff.kind == swarmlab::TimeTravel::Kind::to_run_end;
+  j["last_fast_forward"] = nullptr;
+  if (ff.kind != swarmlab::TimeTravel::Kind::none)
+    j["last_fast_forward"] = {{"kind", to_run_end ? "run_end" : "stage_end"},
+                              {"frames", ff.frames},
+                              {"progress", ff.progress},
+                              {"reached", ff.reached}};
   // The instruments: P and T as the read-outs show them (null without a container or before
   // the first sample; T also before the first wall hit), the stopwatch, the measured period.
   const swarmlab::Instruments& in = s.instruments;
@@ -94,6 +108,11 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   if (nav && imgui->NavLayer == ImGuiNavLayer_Menu) j["keyboard_focus"] = "menu";
   else if (nav) j["keyboard_focus"] = std::string(nav->RootWindow->Name).substr(0, std::string(nav->RootWindow->Name).find("##"));
   else j["keyboard_focus"] = nullptr;
+  // The item the keyboard is on (its name as the parallel DOM gives it), or null.
+  j["keyboard_item"] = nullptr;
+  const unsigned nav_id = swarmlab::parallel_dom().nav_id();
+  for (const swarmlab::MirroredItem& item : swarmlab::parallel_dom().items())
+    if (nav_id != 0 && item.id == nav_id) j["keyboard_item"] = item.name;
   return j;
 }
 

@@ -224,6 +224,9 @@ void App::layout_windows() {
   // Rows of 44 px targets over the view need little space between them: the view keeps room.
   if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.2f * font));
   draw_view_strips(s, l);
+  s.layout.settled = in.transport_height == s.layout.transport_height &&
+                     in.readouts_height == s.layout.readouts_height &&
+                     s.layout.pending_ui_scale == s.layout.ui_scale;
   if (roomy) ImGui::PopStyleVar();
   // The windows over the view get a square close button a finger can hit.
   if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(pad_y, pad_y));

@@ -63,6 +63,9 @@ struct Layout {
   /// Measured on the last frame: the transport bar's and the read-outs strip's height.
   float transport_height = 0, readouts_height = 0;
   float bottom_strip_height = 0;  ///< reserved under the view for strips of other features
+  /// This frame was laid out with the heights it measured, at the scale asked for: the next
+  /// lays out the same (state().layout_settled, what a test waits for after a resize).
+  bool settled = false;
   bool touch = false;             ///< the last pointer was a finger: larger targets
   /// The timeline's bar as last drawn: a finger drags it as it lands (touch_gestures.h).
   ViewRect drag_at_once{0, 0, 0, 0};
@@ -139,6 +142,7 @@ struct AppState {
   double step_debt = 0;    ///< fractional steps carried to the next frame
   bool step_once = false;  ///< single step requested while paused
   TimeTravel travel;       ///< a seek or fast-forward under way (time_travel.h)
+  FastForwardRecord last_fast_forward;  ///< kept after it ends (time_travel.h)
   /// Frames run with a fixed wall-clock step and no time budget (--frames, screenshots), so
   /// that the picture does not depend on the machine's speed.
   bool fixed_frame_time = false;
@@ -161,6 +165,8 @@ struct AppState {
   Instruments instruments;
   /// The shipped lessons, the open one and the student's progress (lesson_session.h).
   LessonSession lessons;
+  /// Times a lesson step's run started again at its end ("loop"), kept for lessonState().
+  int lesson_loops = 0;
 
   /// Opens a valid preset: it becomes origin, preset and draft; the run restarts.
   void open(const swarm::Preset& p, std::string location);

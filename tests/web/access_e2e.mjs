@@ -4,7 +4,7 @@
 // and off. Run through tests/web/run.sh; the last line is "N passed, M failed".
 import * as harness from './harness.mjs';
 
-const { check, sleep, openApp, launchBrowser, runSuite, screenshot, pageErrors, consoleErrors,
+const { check, openApp, launchBrowser, runSuite, screenshot, clockStands, pageErrors, consoleErrors,
         DEFAULT_PRESET } = harness;
 
 async function main(url) {
@@ -17,25 +17,23 @@ async function main(url) {
   const api = (expr, arg) => page.evaluate(expr, arg);
   const appState = () => api(() => window.swarmlab.state());
   const spoken = () => api(() => document.getElementById('announcer').textContent);
-  // ImGui 1.86 reads keys once a frame: a key is held for a few frames, as a hand does.
-  const framesPass = async (n) => {
-    const start = await api(() => window.swarmlab.frames());
-    await page.waitForFunction((target) => window.swarmlab.frames() >= target, start + n, { timeout: 15000 });
+  // Waits until fn(state(), arg) holds in the page (what an action should change), or 15 s pass;
+  // returns whether it held. fn runs in the page: what it needs from here comes in arg.
+  const until = (fn, arg = null) => page.waitForFunction(`(${fn})(window.swarmlab.state(), ${JSON.stringify(arg)})`, null,
+                                                         { timeout: 15_000 }).then(() => true, () => false);
+  const untilPage = (fn, arg = null) => page.waitForFunction(fn, arg, { timeout: 15_000 }).then(() => true, () => false);
+  // A key or chord as a person presses it (the app takes a press between two frames as one),
+  // then a wait for what it should change: the next key comes only after the app has seen it.
+  const press = async (chord, effect = null, arg = null) => {
+    await page.keyboard.press(chord);
+    return effect ? until(effect, arg) : true;
   };
-  const tap = async (key) => { await page.keyboard.down(key); await framesPass(3); await page.keyboard.up(key); await framesPass(3); };
   // F6 moves the keyboard to the next region as in desktop apps (Shift+F6 back); pressed until
   // `wanted` has the keyboard focus, at most once round all regions. Returns where it went.
-  const press = async (chord) => {
-    const keys = chord.split('+');
-    const key = keys.pop();
-    for (const m of keys) await page.keyboard.down(m);
-    await tap(key);
-    for (const m of keys.reverse()) await page.keyboard.up(m);
-  };
   const focusRegion = async (wanted, chord = 'F6') => {
     const visited = [];
     for (let k = 0; k < 10; ++k) {
-      await press(chord);
+      await press(chord, (s, before) => s.keyboard_focus !== before, (await appState()).keyboard_focus);
       const focus = (await appState()).keyboard_focus;
       visited.push(focus);
       if (wanted.includes(focus)) break;
@@ -74,55 +72,62 @@ async function main(url) {
   const ctrlF6 = await focusRegion([null], 'Control+F6');
   check('Ctrl+F6 moves on as F6 does', ctrlF6.length === 1 && ctrlF6[0] === null, `keyboard focus: ${ctrlF6.map(String).join(' > ')}`);
   await focusRegion(['Transport'], 'Shift+F6');
-  // Ctrl+Tab is the browser's (its tabs): the app's keyboard focus stays where it is.
+  // Ctrl+Tab is the browser's (its tabs): the app's keyboard focus stays where it is, so the F6
+  // after it goes on from the transport bar to the 3D view.
   await press('Control+Tab');
-  check('Ctrl+Tab does not move the app\'s keyboard focus', (await appState()).keyboard_focus === 'Transport',
-        `keyboard focus: ${(await appState()).keyboard_focus}`);
-  await tap('Space');
-  await framesPass(3);
+  const afterCtrlTab = await focusRegion([null]);
+  check('Ctrl+Tab does not move the app\'s keyboard focus', afterCtrlTab.map(String).join(' > ') === 'null',
+        `Ctrl+Tab, then F6: ${afterCtrlTab.map(String).join(' > ')}`);
+  await focusRegion(['Transport'], 'Shift+F6');
+  const item = (await appState()).keyboard_item;
+  await press('Space', (st) => st.playing === false);
+  // Once: a second toggle (the shortcut as well as the button) would have it play again.
+  const stands = await clockStands(page);
   let s = await appState();
-  check('Space on the focused Pause button pauses (once: the Space shortcut stands aside)', s.playing === false,
-        `playing ${s.playing}`);
+  check('Space on the focused Pause button pauses (once: the Space shortcut stands aside)', s.playing === false && stands.ok,
+        `on "${item}": playing ${s.playing}, ${stands.detail}`);
+  await untilPage(() => /Paused, t = /.test(document.getElementById('announcer').textContent));
   check('the live region says paused', /Paused, t = /.test(await spoken()), await spoken());
+  await untilPage(() => document.title.endsWith(', paused'));
   check('the title says paused', (await page.title()).endsWith(', paused'), await page.title());
-  await tap('Space');
+  await press('Space', (st) => st.playing === true);
   s = await appState();
   check('Space again plays', s.playing === true, `playing ${s.playing}`);
 
-  // A preset change through the menu bar: F6 to it, Space opens Scenario, Down moves in its
-  // list, Space opens the preset focused.
+  // A preset change through the menu bar: F6 to it, Space opens Scenario (the keyboard on its
+  // first entry), Down moves in its list, Space opens the preset focused.
   const shipped = await api(() => window.swarmlab.shipped());
   const before = (await appState()).name;
   const menuFocus = (await focusRegion(['menu'])).pop();
-  await tap('Space');
-  await framesPass(3);
-  await tap('ArrowDown');
-  await tap('Space');
-  await framesPass(5);
+  const menuTitle = (await appState()).keyboard_item;
+  await press('Space', (st, t) => st.windows.some((w) => /^##Menu/.test(w.name)) && st.keyboard_item && st.keyboard_item !== t, menuTitle);
+  const entry = (await appState()).keyboard_item;
+  await press('ArrowDown', (st, e) => st.keyboard_item && st.keyboard_item !== e, entry);
+  const next = (await appState()).keyboard_item;
+  await press('Space', (st, b) => st.name !== b, before);
   s = await appState();
   check('F6 to the menu bar, Space, Down, Space opens another shipped preset',
-        s.name !== before && shipped.some((p) => p.name === s.name),
-        `focus: ${menuFocus}; "${before}" -> "${s.name}"`);
-  await framesPass(3);
+        s.name !== before && shipped.some((p) => p.name === s.name) && s.name === next,
+        `focus: ${menuFocus} "${menuTitle}", then "${entry}", "${next}"; "${before}" -> "${s.name}"`);
+  await untilPage((name) => document.getElementById('announcer').textContent.includes(name), s.name);
   check('the live region says the new preset\'s name', (await spoken()).includes(s.name), await spoken());
+  await untilPage((name) => document.title.includes(name), s.name);
   check('the title follows the preset', (await page.title()).includes(s.name), await page.title());
 
-  // 3. The light theme and presentation mode through swarmlab.set(): the pixels change.
+  // 3. The light theme and presentation mode through swarmlab.set(): the pixels change (on
+  // the app's next frame: the screenshot is taken again until they have).
+  const bright = (img) => parseInt(img.topColor.slice(1), 16) >= 0xddd;
   const dark = await screenshot(page, 'access-dark-1280x720.png', {});
   await api(() => window.swarmlab.set({ theme: 'light' }));
-  await framesPass(4);
-  const light = await screenshot(page, 'access-light-1280x720.png', {});
-  const bright = (img) => parseInt(img.topColor.slice(1), 16) >= 0xddd;
+  const light = await screenshot(page, 'access-light-1280x720.png', {}, bright);
   check('set({theme: "light"}) turns the page light', !bright(dark) && bright(light) && (await appState()).theme === 'light',
         `most common colour ${dark.topColor} -> ${light.topColor}`);
   await api(() => window.swarmlab.set({ presentation: true, theme: 'dark' }));  // table order: presentation wins
-  await framesPass(6);
   s = await appState();
-  const shown = await screenshot(page, 'access-presentation-1280x720.png', {});
+  const shown = await screenshot(page, 'access-presentation-1280x720.png', {}, bright);
   check('set({presentation: true}): light theme, a light screen', s.presentation === true && s.theme === 'light' && bright(shown),
         `theme ${s.theme}, most common colour ${shown.topColor} ${(100 * shown.topShare).toFixed(0)}%`);
   await api(() => window.swarmlab.set({ presentation: false }));
-  await framesPass(4);
   s = await appState();
   check('set({presentation: false}) gives the dark theme back', s.presentation === false && s.theme === 'dark', `theme ${s.theme}`);
 
@@ -138,22 +143,26 @@ async function main(url) {
   // 4. Sound: off until turned on; on after a gesture makes a running AudioContext; off again.
   check('sound is off at the start', (await appState()).sound === false);
   await page.mouse.click(640, 600);  // a gesture, as the user's click on the toggle would be
+  const audioState = () => api(() => ({ sound: window.swarmlab.state().sound, context: Module.swarmlabAudio ? Module.swarmlabAudio.state : null }));
   await api(() => window.swarmlab.set({ sound: true }));
-  await framesPass(5);
-  let audio = await api(() => ({ sound: window.swarmlab.state().sound, context: Module.swarmlabAudio ? Module.swarmlabAudio.state : null }));
+  await untilPage(() => Module.swarmlabAudio && Module.swarmlabAudio.state === 'running');
+  let audio = await audioState();
   check('set({sound: true}) after a gesture: sound on, the AudioContext runs', audio.sound === true && audio.context === 'running',
         JSON.stringify(audio));
   await api(() => window.swarmlab.set({ sound: false }));
-  await framesPass(3);
-  audio = await api(() => ({ sound: window.swarmlab.state().sound, context: Module.swarmlabAudio ? Module.swarmlabAudio.state : null }));
+  await untilPage(() => Module.swarmlabAudio && Module.swarmlabAudio.state !== 'running');
+  audio = await audioState();
   check('set({sound: false}): sound off, the AudioContext suspended', audio.sound === false && audio.context !== 'running',
         JSON.stringify(audio));
 
-  // 5. Fullscreen from the key: granted or refused by the browser, never an error.
-  await tap('F11');
-  await framesPass(5);
+  // 5. Fullscreen from the key: this Chromium grants it after a key press (a browser that
+  // refuses has the app say so in the scenario panel); never an error.
+  await page.keyboard.press('F11');
+  await until((st) => st.fullscreen === true);
   s = await appState();
-  check('F11 asks for fullscreen without an error', typeof s.fullscreen === 'boolean', `fullscreen ${s.fullscreen}`);
+  const inPage = await api(() => document.fullscreenElement !== null);
+  check('F11 asks for fullscreen: granted, and state().fullscreen says so', s.fullscreen === true && inPage,
+        `state().fullscreen ${s.fullscreen}, document.fullscreenElement ${inPage ? 'set' : 'null'}`);
 
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));

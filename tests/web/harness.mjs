@@ -1,7 +1,8 @@
 // What every browser suite in tests/web/ shares: the served build/web, one headless Chromium
 // with a persistent profile, pages that report their errors, screenshots measured by colour,
-// clicks held for a few frames, the CLI's validation message, and the "N passed, M failed"
-// line. A suite calls runSuite(name, overallMs, main) with main(url) doing its checks.
+// clicks, the CLI's validation message, and the "N passed, M failed" line. Every wait is on a
+// condition (the state an action should produce), never on a frame count or a sleep. A suite
+// calls runSuite(name, overallMs, main) with main(url) doing its checks.
 import { chromium } from 'playwright-core';
 import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, rmSync, existsSync, writeFileSync, readFileSync } from 'node:fs';
@@ -64,7 +65,7 @@ export async function startServer() {
   server = spawn('python3', ['-m', 'http.server', '--bind', '127.0.0.1', '--directory', webDir, String(port)],
                  { stdio: ['ignore', 'ignore', 'ignore'] });
   const url = `http://127.0.0.1:${port}/`;
-  const deadline = Date.now() + 10_000;
+  const deadline = Date.now() + 30_000;  // a loaded machine starts python slowly
   while (Date.now() < deadline) {
     if (server.exitCode !== null) throw new Error('http.server exited with ' + server.exitCode);
     try { if ((await fetch(url)).ok) return url; } catch { /* not up yet */ }
@@ -84,12 +85,13 @@ export function watch(page, label) {
   });
 }
 
-// Opens url in a new page and waits for `frames` frames (or the page's own error). The app
-// treats a test like a person: a first visit shows the welcome. A page whose address does not
-// ask for a first visit (?welcome) starts as a returning student's, whose progress says the
-// welcome was seen (unless the browser already holds progress). `init` runs in the page before
-// its own scripts (as page.addInitScript), e.g. to listen to the live region from the start.
-export async function openApp(url, label, frames = 10, init = null) {
+// Opens url in a new page and waits until the app has drawn its first frame (or the page
+// reports its error). The app treats a test like a person: a first visit shows the welcome. A
+// page whose address does not ask for a first visit (?welcome) starts as a returning
+// student's, whose progress says the welcome was seen (unless the browser already holds
+// progress). `init` runs in the page before its own scripts (as page.addInitScript), e.g. to
+// listen to the live region from the start.
+export async function openApp(url, label, init = null) {
   const page = await context.newPage();
   if (init) await page.addInitScript(init);
   if (!/[?&]welcome/.test(url))
@@ -103,8 +105,8 @@ export async function openApp(url, label, frames = 10, init = null) {
   await page.goto(url, { waitUntil: 'load' });
   let started = true;
   try {
-    await page.waitForFunction((n) => window.swarmlabError || (window.swarmlab && window.swarmlab.frames() >= n),
-                               frames, { timeout: 30_000, polling: 50 });
+    await page.waitForFunction(() => window.swarmlabError || (window.swarmlab && window.swarmlab.firstFrameMs !== null),
+                               null, { timeout: 30_000 });
   } catch { started = false; }
   const error = await page.evaluate(() => window.swarmlabError || null);
   return { page, started: started && !error, error };
@@ -118,14 +120,34 @@ export const state = (page) => page.evaluate(() => {
            noticeKind: notice.className, hash: location.hash };
 });
 
-// Over at least ms and at least three frames: a busy machine may draw only a few a second.
-export async function clockAdvances(page, ms = 500) {
-  const t1 = await page.evaluate(() => window.swarmlab.time());
+// The app keeps drawing: `n` more frames within limitMs (a loaded machine may draw only a
+// few a second). A measurement: it reports how long they took.
+export async function keepsDrawing(page, n = 3, limitMs = 20_000) {
   const f1 = await page.evaluate(() => window.swarmlab.frames());
-  await sleep(ms);
-  await page.waitForFunction((target) => window.swarmlab.frames() >= target, f1 + 3, { timeout: 30_000 });
+  const start = Date.now();
+  const ok = await page.waitForFunction((target) => window.swarmlab.frames() >= target, f1 + n, { timeout: limitMs })
+    .then(() => true, () => false);
+  const ms = Date.now() - start;
+  return { ok, ms, detail: ok ? `${n} frames in ${ms} ms` : `fewer than ${n} frames in ${ms} ms` };
+}
+
+// The simulated clock moves on: time() passes its value now within 30 s, however slowly a
+// loaded machine draws.
+export async function clockAdvances(page) {
+  const t1 = await page.evaluate(() => window.swarmlab.time());
+  const start = Date.now();
+  const ok = await page.waitForFunction((t) => window.swarmlab.time() > t, t1, { timeout: 30_000 })
+    .then(() => true, () => false);
   const t2 = await page.evaluate(() => window.swarmlab.time());
-  return { ok: t2 > t1, detail: `t ${t1.toFixed(3)} -> ${t2.toFixed(3)}` };
+  return { ok, detail: `t ${t1.toFixed(3)} -> ${t2.toFixed(3)} in ${Date.now() - start} ms` };
+}
+
+// The simulated clock stands still while the app keeps drawing (three frames).
+export async function clockStands(page) {
+  const t1 = await page.evaluate(() => window.swarmlab.time());
+  const drawn = await keepsDrawing(page);
+  const t2 = await page.evaluate(() => window.swarmlab.time());
+  return { ok: drawn.ok && t2 === t1, detail: `t ${t1.toFixed(3)} -> ${t2.toFixed(3)} over ${drawn.detail}` };
 }
 
 // Decodes a PNG in a blank page and measures it: distinct colours (quantised to 4 bits per
@@ -178,27 +200,27 @@ export const VIEW_RECTS = { viewRight: [580, 40, 870, 600], viewLower: [362, 360
 export const PLOT_RECTS = { plots: [890, 100, 1270, 710] };
 export const vividIn = (img, names) => names.reduce((sum, n) => sum + img.vivid[n], 0);
 
-export async function screenshot(page, file, rects) {
+// A screenshot of the page, measured. With `until`, taken again until until(measures) holds
+// (what a change of the state should draw: the app draws it on its next frame) or 20 s pass.
+export async function screenshot(page, file, rects, until = null) {
   await page.evaluate(() => { document.getElementById('notice').hidden = true; });
-  await sleep(150); // a frame or two without the message
-  const png = await page.screenshot({ path: join(outDir, file) });
-  const img = await analysePng(png, rects);
+  const deadline = Date.now() + 20_000;
+  let png, img;
+  do {
+    png = await page.screenshot({ path: join(outDir, file) });
+    img = await analysePng(png, rects);
+  } while (until && !until(img) && Date.now() < deadline);
   console.log(`      ${file} ${img.width}x${img.height}: ${img.distinct} colours, most common ${img.topColor} ` +
               `${(100 * img.topShare).toFixed(1)}%, vivid pixels ${JSON.stringify(img.vivid)} -> build/web-test/${file}`);
   return img;
 }
 
-// Clicks a button of the scenario panel where the app drew it, holding the mouse for a few
-// frames as a hand does (ImGui 1.86 reads the button state once a frame).
+// Clicks a button of the scenario panel where the app drew it, as a person's click (the app
+// takes a press and release between two frames as a click).
 export async function clickButton(page, label) {
   const r = await page.evaluate((l) => window.swarmlab.buttonRect(l), label);
   if (!r) return false;
-  await page.mouse.move(r.x + r.width / 2, r.y + r.height / 2);
-  await sleep(80);
-  await page.mouse.down();
-  await sleep(120);
-  await page.mouse.up();
-  await sleep(120);
+  await page.mouse.click(r.x + r.width / 2, r.y + r.height / 2);
   return true;
 }
 

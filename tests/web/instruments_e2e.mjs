@@ -5,23 +5,20 @@
 // select() refuses an index out of range with an Error naming it. Run by tests/web/run.sh.
 import * as harness from './harness.mjs';
 
-const { check, sleep, shipped, openApp, launchBrowser, runSuite, pageErrors, consoleErrors,
+const { check, shipped, openApp, launchBrowser, runSuite, pageErrors, consoleErrors,
         screenshot } = harness;
 
 const api = (page, body, arg) => page.evaluate(body, arg);
 const appState = (page) => api(page, () => window.swarmlab.state());
 
-// Waits (counting frames, not milliseconds) until pick(state) is not null; returns it or null.
-async function waitFor(page, pick, frames) {
-  const f0 = await api(page, () => window.swarmlab.frames());
-  for (;;) {
-    const s = await appState(page);
-    const v = pick(s);
-    if (v !== null && v !== undefined) return v;
-    const f = await api(page, () => window.swarmlab.frames());
-    if (f - f0 > frames) return null;
-    await sleep(100);
-  }
+// Waits until pick(state(), arg) is neither null nor undefined (what the run should come to),
+// or timeoutMs pass; returns it or null. pick runs in the page: what it needs comes in arg.
+async function waitFor(page, pick, timeoutMs, arg = null) {
+  const expr = `(${pick})(window.swarmlab.state(), ${JSON.stringify(arg)})`;
+  try {
+    await page.waitForFunction(`(() => { const v = ${expr}; return v !== null && v !== undefined; })()`, null, { timeout: timeoutMs });
+  } catch { return null; }
+  return page.evaluate(expr);
 }
 
 async function main(url) {
@@ -48,7 +45,7 @@ async function main(url) {
     await api(page, (k) => window.swarmlab.select(k), i);
     const s = await appState(page);
     check(`select(${i}) selects particle ${i}`, s.selected === i, `selected ${s.selected}`);
-    const measured = await waitFor(page, (x) => (x.selected === i ? x.measured_period : null), 3000);
+    const measured = await waitFor(page, (x, k) => (x.selected === k ? x.measured_period : null), 60_000, i);
     const diff = measured === null ? NaN : Math.abs(measured - formula) / formula;
     check(`particle ${i} (m = ${fig1.particles[i].m}): measured period within 0.5% of 2 pi / sqrt(J M)`,
           diff < 0.005, `measured ${measured}, formula ${formula.toFixed(6)}, difference ${(100 * diff).toFixed(4)}%`);
@@ -58,13 +55,15 @@ async function main(url) {
   // The stopwatch runs on the simulated clock, and stops.
   const started1 = await api(page, () => window.swarmlab.stopwatch('start'));
   check('stopwatch("start") starts it', started1.running === true, JSON.stringify(started1));
-  const elapsed = await waitFor(page, (x) => (x.stopwatch.elapsed > 0.5 ? x.stopwatch.elapsed : null), 2000);
+  const elapsed = await waitFor(page, (x) => (x.stopwatch.elapsed > 0.5 ? x.stopwatch.elapsed : null), 30_000);
   check('the stopwatch counts simulated time', elapsed !== null, `elapsed ${elapsed}`);
   const stopped = await api(page, () => window.swarmlab.stopwatch('stop'));
-  await sleep(500);
+  // The run goes on for half a time unit: a running stopwatch would count it.
+  const tStop = await api(page, () => window.swarmlab.time());
+  const ranOn = await waitFor(page, (x, t) => (x.t > t + 0.5 ? x.t : null), 30_000, tStop);
   const later = (await appState(page)).stopwatch;
-  check('stopped, it holds its reading', !later.running && later.elapsed === stopped.elapsed,
-        `${stopped.elapsed} -> ${later.elapsed}`);
+  check('stopped, it holds its reading while the run goes on', ranOn !== null && !later.running && later.elapsed === stopped.elapsed,
+        `${stopped.elapsed} -> ${later.elapsed} while t ${tStop.toFixed(3)} -> ${ranOn === null ? 'stuck' : ranOn.toFixed(3)}`);
   const reset = await api(page, () => window.swarmlab.stopwatch('reset'));
   check('reset sets it to zero', reset.elapsed === 0 && !reset.running, JSON.stringify(reset));
   const badAction = await api(page, () => { try { window.swarmlab.stopwatch('go'); return null; } catch (e) { return e.message; } });
@@ -82,7 +81,7 @@ async function main(url) {
 
   // P and T in a container preset.
   await api(page, (p) => window.swarmlab.load(p), shipped('fig4-equilibration.json'));
-  const P = await waitFor(page, (x) => (typeof x.P === 'number' && typeof x.T === 'number' ? x : null), 3000);
+  const P = await waitFor(page, (x) => (typeof x.P === 'number' && typeof x.T === 'number' ? x : null), 60_000);
   check('P and T are numbers in a container preset', P !== null && P.P > 0 && P.T > 0,
         P ? `P = ${P.P}, T = ${P.T}` : 'still null');
 

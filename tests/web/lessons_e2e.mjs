@@ -15,7 +15,7 @@ import { join } from 'node:path';
 import * as harness from './harness.mjs';
 import { person } from './person.mjs';
 
-const { root, check, sleep, base64url, openApp, screenshot, launchBrowser, runSuite, pageErrors,
+const { root, check, base64url, openApp, screenshot, clockAdvances, launchBrowser, runSuite, pageErrors,
         consoleErrors } = harness;
 
 const lessonDir = join(root, 'assets/lessons');
@@ -26,18 +26,28 @@ const lessonById = Object.fromEntries(lessonFiles.map((f) => {
 }));
 
 const api = (page, fn, ...args) => page.evaluate(({ fn, args }) => window.swarmlab[fn](...args), { fn, args });
-const frames = (page) => page.evaluate(() => window.swarmlab.frames());
-async function waitFrames(page, n) {
-  const start = await frames(page);
-  await page.waitForFunction((target) => window.swarmlab.frames() >= target, start + n, { timeout: 30_000, polling: 50 });
+// Waits until fn(arg) holds in the page (what an action should produce), or timeoutMs pass;
+// returns whether it held.
+const until = (page, fn, arg = null, timeoutMs = 20_000) =>
+  page.waitForFunction(fn, arg, { timeout: timeoutMs }).then(() => true, () => false);
+// Resizes the page and waits until the app has laid the canvas out at that size and the layout
+// holds (state().display, layout_settled).
+async function resize(page, width, height) {
+  await page.setViewportSize({ width, height });
+  return until(page, ([w, h]) => {
+    const s = window.swarmlab.state();
+    return s.display.width === w && s.display.height === h && s.layout_settled;
+  }, [width, height]);
 }
+// Until the app has drawn `text` (the parallel DOM mirrors what the last frame drew).
+const drawn = (page, text) => until(page, (t) => (document.getElementById('parallel-dom') || {}).textContent?.includes(t), text);
 
 // Answers the open step's task the way a student who measured well would; returns the marking.
 async function answerWell(page, lesson, st) {
   const task = st.task;
   if (task.kind === 'measure') {
-    // P and T need wall hits first: wait (counting frames) until the instruments read a value.
-    for (let i = 0; i < 200 && (await api(page, 'lessonState')).task.reading === null; ++i) await waitFrames(page, 2);
+    // P and T need wall hits first: wait until the instruments read a value.
+    await until(page, () => window.swarmlab.lessonState().task.reading !== null, null, 60_000);
     // Read and answer in one evaluation, so no frame passes between them.
     return page.evaluate(() => {
       const reading = window.swarmlab.lessonState().task.reading;
@@ -50,18 +60,17 @@ async function answerWell(page, lesson, st) {
 
 async function main(url) {
   await launchBrowser({ width: 1280, height: 720 });
-  const first = await openApp(url + '?welcome', 'first-visit', 10);
+  const first = await openApp(url + '?welcome', 'first-visit');
   if (!check('the app starts', first.started, first.error || '')) return;
   const page = first.page;
 
   // 1. The welcome: on the first visit, once.
   check('the welcome shows on the first visit', await api(page, 'welcomeShown'));
+  await resize(page, 1280, 720);
   await screenshot(page, 'lessons-welcome-1280x720.png');
-  await page.setViewportSize({ width: 390, height: 844 });
-  await waitFrames(page, 6);
+  await resize(page, 390, 844);
   await screenshot(page, 'lessons-welcome-390x844.png');
-  await page.setViewportSize({ width: 1280, height: 720 });
-  await waitFrames(page, 4);
+  await resize(page, 1280, 720);
 
   // 2. The shipped lessons. A lesson whose presets are not shipped yet is left out of the list
   // (as a broken preset is); the suite says which.
@@ -89,7 +98,7 @@ async function main(url) {
       }
       if (st.task) {
         if (!wrongChecked && st.task.kind === 'measure') {
-          await waitFrames(page, 2);
+          await until(page, () => window.swarmlab.lessonState().task.reading !== null, null, 60_000);
           const wrong = await page.evaluate(() => {
             const reading = window.swarmlab.lessonState().task.reading;
             return reading === null ? null : window.swarmlab.lessonAnswer(reading * 1.5);
@@ -100,13 +109,11 @@ async function main(url) {
           }
         }
         if (!screenshotTaken && id === 'one-period' && st.task.kind === 'measure') {
-          await waitFrames(page, 4);
+          await drawn(page, `Step ${st.step + 1} of ${st.steps}`);
           await screenshot(page, 'lessons-panel-1280x720.png');
-          await page.setViewportSize({ width: 390, height: 844 });
-          await waitFrames(page, 6);
+          await resize(page, 390, 844);
           await screenshot(page, 'lessons-panel-390x844.png');
-          await page.setViewportSize({ width: 1280, height: 720 });
-          await waitFrames(page, 4);
+          await resize(page, 1280, 720);
           screenshotTaken = true;
         }
         const { reading, marking } = await answerWell(page, lesson, st);
@@ -120,7 +127,6 @@ async function main(url) {
       const next = await api(page, 'lessonNext');
       if (next.step !== st.step + 1) { problems.push(`next from ${st.step} gave ${next.step}`); break; }
       st = next;
-      await waitFrames(page, 2);
     }
     check(`${id}: walked to its end, every task answered as the app measures`, problems.length === 0 && st.step === st.steps - 1,
           problems.join('; '));
@@ -198,41 +204,40 @@ async function main(url) {
   await api(page, 'openLesson', 'gas-at-the-wall');
   await api(page, 'lessonRestart');
   await api(page, 'set', { speed: 4 });
-  await page.evaluate(() => { window.__lessonMaxT = 0; });
-  await page.waitForFunction(() => {
-    const s = window.swarmlab.state();
-    window.__lessonMaxT = Math.max(window.__lessonMaxT, s.t);
-    return window.__lessonMaxT > 3 && s.t < 2 && s.playing;
-  }, null, { timeout: 90_000, polling: 50 }).catch(() => {});
+  // The app counts the times a step's run started again at its end (lessonState().loops).
+  const loops = (await api(page, 'lessonState')).loops;
+  await until(page, (n) => window.swarmlab.lessonState().loops > n, loops, 90_000);
+  const looped = (await api(page, 'lessonState')).loops;
+  const goesOn = await clockAdvances(page);
   st5 = await api(page, 'state');
-  check('lesson 5: Fig. 4 starts again when it ends, and plays on', st5.playing && st5.t < 3,
-        `t = ${st5.t}, max seen ${await page.evaluate(() => window.__lessonMaxT)}, playing ${st5.playing}`);
+  check('lesson 5: Fig. 4 starts again when it ends, and plays on', looped > loops && st5.playing && goesOn.ok,
+        `loops ${loops} -> ${looped}, playing ${st5.playing}, ${goesOn.detail}`);
   await api(page, 'set', { speed: 1 });
 
   // 5e. Enter checks an answer, both Enter keys: on a page of its own at a phone's size, Tab to
   // the answer field (found by its name in the parallel DOM), type, Enter.
-  const keys = await openApp(url, 'enter-key', 10);
-  await keys.page.setViewportSize({ width: 390, height: 844 });
+  const keys = await openApp(url, 'enter-key');
   await api(keys.page, 'openLesson', 'one-period');
   await api(keys.page, 'lessonRestart');
   await api(keys.page, 'lessonNext');
-  await waitFrames(keys.page, 6);
+  await resize(keys.page, 390, 844);
   const lessonPanel = (await api(keys.page, 'state')).panels.find((p) => p.name === 'Lesson');
   check('the compact layout shows the Lesson tab', !!lessonPanel);
   if (lessonPanel) {
     const me = person(keys.page, 'keyboard');
     for (const [key, typed, right] of [['Enter', '4.44', true], ['NumpadEnter', '9', false]]) {
-      // Held as long as a person holds a key (about 60 ms), not within one frame.
       await me.tabTo(me.find('textbox', 'Your answer'));
       await keys.page.keyboard.press('Control+A');
-      await keys.page.keyboard.type(typed, { delay: 60 });
-      await keys.page.keyboard.press(key, { delay: 60 });
-      await keys.page.waitForFunction(() => (window.swarmlab.lessonState().task || {}).answered, null, { timeout: 5_000, polling: 50 }).catch(() => {});
+      await keys.page.keyboard.type(typed);
+      await keys.page.keyboard.press(key);
+      await until(keys.page, () => (window.swarmlab.lessonState().task || {}).answered);
       const answered = (await api(keys.page, 'lessonState')).task.answered;
       check(`${key} in the answer field checks it`, answered && answered.correct === right, JSON.stringify(answered));
+      await drawn(keys.page, answered ? answered.feedback : '');
       await api(keys.page, 'lessonBack');
       await api(keys.page, 'lessonNext');  // a fresh step: no marking, an empty field
-      await waitFrames(keys.page, 2);
+      // The page shows the fresh step (its feedback gone) before the next key.
+      await until(keys.page, (f) => !document.getElementById('parallel-dom').textContent.includes(f), answered ? answered.feedback : '');
     }
   }
   await keys.page.close();
@@ -243,37 +248,38 @@ async function main(url) {
   for (const theme of ['dark', 'light']) {
     await api(page, 'set', { theme });
     for (const [w, h] of [[390, 844], [820, 1180], [1366, 768]]) {
-      await page.setViewportSize({ width: w, height: h });
       await api(page, 'openLesson', 'gas-at-the-wall');
       await api(page, 'lessonRestart');
       await api(page, 'lessonNext');
-      await api(page, 'lessonAnswer', 2);  // a wrong option: feedback beside the options
-      await waitFrames(page, 6);
+      const { feedback } = await api(page, 'lessonAnswer', 2);  // a wrong option: feedback beside the options
+      await resize(page, w, h);
       const shown = (await api(page, 'state')).panels.map((p) => p.name);
       check(`${w}x${h} ${theme}: the lesson is on screen`, shown.includes('Lesson') || shown.includes('Controls'), shown.join(', '));
+      await drawn(page, feedback);
       await screenshot(page, `lessons-step-${w}x${h}-${theme}.png`);
       const done = await api(page, 'lessonFinish');
       check(`${w}x${h} ${theme}: Finish shows the summary`, done.summary === true);
-      await waitFrames(page, 6);
+      await drawn(page, 'Summary');
       await screenshot(page, `lessons-summary-${w}x${h}-${theme}.png`);
     }
   }
   await api(page, 'set', { theme: 'dark' });
-  await page.setViewportSize({ width: 1920, height: 1080 });
   await api(page, 'lessonRestart');
   await api(page, 'set', { presentation: true });
-  await waitFrames(page, 8);
+  await resize(page, 1920, 1080);
+  await until(page, () => window.swarmlab.state().panels.some((p) => p.name === 'Lesson'));
   const presenting = (await api(page, 'state')).panels.map((p) => p.name);
   check('presentation mode at 1920x1080 shows the lesson', presenting.includes('Lesson'), presenting.join(', '));
+  await drawn(page, 'Step 1 of');
   await screenshot(page, 'lessons-presentation-1920x1080.png');
   await api(page, 'set', { presentation: false });
-  await page.setViewportSize({ width: 1280, height: 720 });
+  await resize(page, 1280, 720);
   await api(page, 'openLesson', 'one-period');
   await api(page, 'lessonRestart');
   for (let i = 0; i < lessonById['one-period'].steps.length - 2; ++i) await api(page, 'lessonNext');
 
   // 6. The second visit: no welcome, and the lesson progress is still there.
-  const second = await openApp(url + '?welcome', 'second-visit', 10);
+  const second = await openApp(url + '?welcome', 'second-visit');
   check('the welcome does not show on the second visit', second.started && !(await api(second.page, 'welcomeShown')));
   await api(second.page, 'openLesson', 'one-period');
   const resumed = await api(second.page, 'lessonState');

@@ -14,33 +14,26 @@ import * as harness from './harness.mjs';
 
 import { join } from 'node:path';
 
-const { check, openApp, launchBrowser, runSuite, outDir, pageErrors, consoleErrors } = harness;
+const { check, openApp, launchBrowser, runSuite, keepsDrawing, outDir, pageErrors, consoleErrors } = harness;
 
 const api = (page, fn, arg) => page.evaluate(fn, arg);
 const appState = (page) => api(page, () => window.swarmlab.state());
-async function frames(page, n) {
-  const f0 = await api(page, () => window.swarmlab.frames());
-  await page.waitForFunction((t) => window.swarmlab.frames() >= t, f0 + n, { timeout: 20_000, polling: 20 });
-}
 
 const inside = (r, W, H) => r.x >= -0.5 && r.y >= -0.5 && r.x + r.width <= W + 0.5 && r.y + r.height <= H + 0.5;
 const overlap = (a, b) => a.x + 0.5 < b.x + b.width && b.x + 0.5 < a.x + a.width &&
                           a.y + 0.5 < b.y + b.height && b.y + 0.5 < a.y + a.height;
 const within = (p, r) => p.x >= r.x && p.x < r.x + r.width && p.y >= r.y && p.y < r.y + r.height;
 
-// Fingers through the DevTools protocol, one move a frame as a hand moves. The first move
-// follows the touch at once: a finger resting on a panel for a third of a second presses
-// (a slider), and this machine may draw only a few frames a second.
-async function fingers(page, cdp, paths, steps = 5) {
+// Fingers through the DevTools protocol along straight paths, an event every 16 ms of the
+// hand's own time (the app judges gestures by the events' times, however many of them a
+// frame takes in). The caller waits for what the gesture should do.
+async function fingers(cdp, paths, steps = 5) {
   const at = (k) => paths.map(([x0, y0, x1, y1], id) => ({ x: x0 + (x1 - x0) * k / steps, y: y0 + (y1 - y0) * k / steps, id }));
   const stamp = handClock();
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(0), timestamp: stamp() });
-  for (let k = 1; k <= steps; ++k) {
+  for (let k = 1; k <= steps; ++k)
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(k), timestamp: stamp() });
-    await frames(page, 1);
-  }
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [], timestamp: stamp() });
-  await frames(page, 3);
 }
 
 // The times a hand's touch events carry (CDP's timestamp becomes the event's timeStamp): one
@@ -61,6 +54,9 @@ async function until(page, fn, arg = null) {
   } catch { /* the check after it reports what was seen */ }
   return appState(page);
 }
+// Until the app has laid the canvas out at W x H and the layout holds (the heights it measured
+// are the ones it used).
+const settledAt = (page, W, H) => until(page, (st, a) => st.display.width === a.W && st.display.height === a.H && st.layout_settled, { W, H });
 
 // Where the app drew what a person presses, found by name from what it reports: a menu's title
 // in the bar, a floating window or its close button, the timeline's bar, a panel. The one place
@@ -101,9 +97,10 @@ async function welcomeOnPhone(url, context) {
   harness.watch(first, 'welcome');
   await first.setViewportSize({ width: 390, height: 844 });
   await first.goto(url + '?welcome', { waitUntil: 'load' });
-  await first.waitForFunction(() => window.swarmlab && window.swarmlab.frames() > 0 && window.swarmlab.welcomeShown(),
+  await first.waitForFunction(() => window.swarmlab && window.swarmlab.firstFrameMs !== null && window.swarmlab.welcomeShown(),
                               null, { timeout: 30_000 }).catch(() => {});
   const page = first;
+  await settledAt(page, 390, 844);
   let s = await until(page, (st) => st.windows && st.windows.some((w) => w.name === 'Welcome'));
   if (!check('390x844 first visit: the welcome floats over the view', await api(page, () => window.swarmlab.welcomeShown()) &&
              !!(await findTarget(page, 'window', 'Welcome')), JSON.stringify(s.windows))) return;
@@ -234,8 +231,7 @@ async function timelineByMouse(page) {
 
 async function gestures(page, context) {
   await api(page, () => window.swarmlab.set({ playing: false }));
-  await frames(page, 3);
-  let s = await appState(page);
+  let s = await settledAt(page, 1024, 768);
   check('state() has the camera, layout, UI scale, view and panels',
         typeof s.camera?.distance === 'number' && typeof s.camera.yaw === 'number' && typeof s.camera.pitch === 'number' &&
         typeof s.layout === 'string' && s.ui_scale === 1 && s.view?.width > 0 && Array.isArray(s.panels) && s.panels.length >= 2,
@@ -246,8 +242,7 @@ async function gestures(page, context) {
   const p0 = await api(page, () => window.swarmlab.screenPosition(0));
   const yaw0 = s.camera.yaw;
   await page.touchscreen.tap(p0.x, p0.y);
-  await frames(page, 4);
-  s = await appState(page);
+  s = await until(page, (st) => st.selected === 0);
   check('a tap on a particle selects it', s.selected === 0, `tapped (${p0.x.toFixed(0)}, ${p0.y.toFixed(0)}), selected ${s.selected}`);
   check('the tap did not turn the camera', s.camera.yaw === yaw0, `yaw ${yaw0} -> ${s.camera.yaw}`);
 
@@ -257,30 +252,30 @@ async function gestures(page, context) {
   const empty = { x: s.view.x + 25, y: s.view.y + s.view.height - 25 };
   const far = positions.every((p) => !p || Math.hypot(p.x - empty.x, p.y - empty.y) > 80);
   await page.touchscreen.tap(empty.x, empty.y);
-  await frames(page, 4);
-  s = await appState(page);
+  s = await until(page, (st) => st.selected === null);
   check('a tap on empty space deselects', far && s.selected === null, `selected ${s.selected}, far from particles: ${far}`);
   check('... without turning the camera', s.camera.yaw === yaw0, `yaw ${yaw0} -> ${s.camera.yaw}`);
 
   const cdp = await context.newCDPSession(page);
   const cx = s.view.x + s.view.width / 2, cy = s.view.y + s.view.height / 2;
+  // Each gesture is waited on until the app has seen its last finger lift and what it changed.
   // One finger dragged across the view orbits.
-  await fingers(page, cdp, [[cx - 80, cy, cx + 80, cy]]);
-  let t = await appState(page);
+  await fingers(cdp, [[cx - 80, cy, cx + 80, cy]]);
+  let t = await until(page, (st, yaw) => st.fingers === 0 && st.camera.yaw !== yaw, yaw0);
   check('one finger dragged on the view orbits (yaw changes)', Math.abs(t.camera.yaw - yaw0) > 0.3,
         `yaw ${yaw0.toFixed(3)} -> ${t.camera.yaw.toFixed(3)}`);
   check('... and selects nothing', t.selected === null);
 
   // Two fingers spreading apart zoom in; pinching them together zooms out.
   const d0 = t.camera.distance, yaw1 = t.camera.yaw;
-  await fingers(page, cdp, [[cx - 40, cy, cx - 120, cy], [cx + 40, cy, cx + 120, cy]]);
-  t = await appState(page);
+  await fingers(cdp, [[cx - 40, cy, cx - 120, cy], [cx + 40, cy, cx + 120, cy]]);
+  t = await until(page, (st, d) => st.fingers === 0 && st.camera.distance !== d, d0);
   check('two fingers spread apart zoom in (distance / 3)', Math.abs(t.camera.distance / d0 - 1 / 3) < 0.05,
         `distance ${d0.toFixed(3)} -> ${t.camera.distance.toFixed(3)}`);
   check('... without orbiting', t.camera.yaw === yaw1);
   const d1 = t.camera.distance;
-  await fingers(page, cdp, [[cx - 120, cy, cx - 40, cy], [cx + 120, cy, cx + 40, cy]]);
-  t = await appState(page);
+  await fingers(cdp, [[cx - 120, cy, cx - 40, cy], [cx + 120, cy, cx + 40, cy]]);
+  t = await until(page, (st, d) => st.fingers === 0 && st.camera.distance !== d, d1);
   check('a pinch zooms out again', Math.abs(t.camera.distance / d1 - 3) < 0.15, `distance ${d1.toFixed(3)} -> ${t.camera.distance.toFixed(3)}`);
 
   // Two fingers dragged together slide the scene with them, and it stays slid while the view
@@ -289,13 +284,14 @@ async function gestures(page, context) {
   const seenAt = () => api(page, (n) => Array.from({ length: n }, (_, i) => window.swarmlab.screenPosition(i)), count);
   const beforePan = await seenAt(), yaw2 = t.camera.yaw, d2 = t.camera.distance;
   const [dx, dy] = [90, 50];
-  await fingers(page, cdp, [[cx - 60, cy, cx - 60 + dx, cy + dy], [cx + 60, cy, cx + 60 + dx, cy + dy]]);
-  await frames(page, 5);
+  await fingers(cdp, [[cx - 60, cy, cx - 60 + dx, cy + dy], [cx + 60, cy, cx + 60 + dx, cy + dy]]);
+  await until(page, (st, p) => st.fingers === 0 && JSON.stringify(window.swarmlab.screenPosition(0)) !== p, JSON.stringify(beforePan[0]));
+  const held = await keepsDrawing(page);  // it stays slid over the frames after
   const afterPan = await seenAt();
   const mean = (k) => afterPan.reduce((sum, p, i) => sum + p[k] - beforePan[i][k], 0) / count;
   t = await appState(page);
-  check('two fingers dragged together slide the scene with them', Math.abs(mean('x') / dx - 1) < 0.3 && Math.abs(mean('y') / dy - 1) < 0.3,
-        `fingers moved (${dx}, ${dy}) px, particles by (${mean('x').toFixed(1)}, ${mean('y').toFixed(1)}) on average`);
+  check('two fingers dragged together slide the scene with them', Math.abs(mean('x') / dx - 1) < 0.3 && Math.abs(mean('y') / dy - 1) < 0.3 && held.ok,
+        `fingers moved (${dx}, ${dy}) px, particles by (${mean('x').toFixed(1)}, ${mean('y').toFixed(1)}) on average ${held.detail} later`);
   check('... without orbiting or zooming', t.camera.yaw === yaw2 && Math.abs(t.camera.distance / d2 - 1) < 0.02,
         `yaw ${yaw2.toFixed(3)} -> ${t.camera.yaw.toFixed(3)}, distance ${d2.toFixed(3)} -> ${t.camera.distance.toFixed(3)}`);
 
@@ -303,8 +299,8 @@ async function gestures(page, context) {
   const controls = t.panels.find((p) => p.name === 'Controls');
   if (check('the controls are a panel of the drawer', !!controls, JSON.stringify(t.panels.map((p) => p.name)))) {
     const x = controls.x + controls.width / 2, y0 = controls.y + controls.height * 0.75;
-    await fingers(page, cdp, [[x, y0, x, y0 - controls.height * 0.5]], 6);
-    t = await appState(page);
+    await fingers(cdp, [[x, y0, x, y0 - controls.height * 0.5]], 6);
+    t = await until(page, (st, a) => st.fingers === 0 && st.panels.some((p) => p.name === 'Controls' && p.scroll !== a), controls.scroll);
     const after = t.panels.find((p) => p.name === 'Controls');
     const field = await api(page, () => !!document.querySelector('#parallel-dom input.pdom-editing'));
     check('a finger dragged on the controls scrolls them', after && after.scroll > 0.3 * controls.height * 0.5,
@@ -336,9 +332,7 @@ async function gestures(page, context) {
   check('set() refuses an unknown key, naming it', /bogus/.test(errors[0] || ''), errors[0]);
   check('set() refuses bad values, naming the key', /speed/.test(errors[1] || '') && /layout/.test(errors[2] || '') &&
         /playing/.test(errors[3] || '') && /ui_scale/.test(errors[4] || ''), errors.slice(1).join(' | '));
-  await api(page, () => window.swarmlab.set({ speed: 2, playing: true, selected: 1 }));
-  await frames(page, 2);
-  t = await appState(page);
+  t = await api(page, () => window.swarmlab.set({ speed: 2, playing: true, selected: 1 }));
   check('set() changes speed, playing and selected', t.speed === 2 && t.playing === true && t.selected === 1,
         `speed ${t.speed}, playing ${t.playing}, selected ${t.selected}`);
   await api(page, () => window.swarmlab.set({ playing: false, selected: null }));
@@ -348,8 +342,7 @@ async function gestures(page, context) {
 // the view, none under the read-outs.
 async function checkLayout(page, W, H, label, expect) {
   await page.setViewportSize({ width: W, height: H });
-  await frames(page, 4);
-  const s = await appState(page);
+  const s = await settledAt(page, W, H);
   const parts = [...s.panels, { name: 'view', ...s.view }];
   const outside = parts.filter((p) => !inside(p, W, H)).map((p) => p.name);
   const clashes = [];
@@ -390,13 +383,12 @@ async function main(url) {
   for (const [W, H, kind] of sizes) await checkLayout(page, W, H, `${W}x${H}`, kind);
   // A projector at UI scale 1.5: compact, and the view still the larger part of the window.
   await api(page, () => window.swarmlab.set({ ui_scale: 1.5 }));
-  await frames(page, 4);
   const big = await checkLayout(page, 1280, 720, '1280x720-scale1.5', 'landscape');
   check('UI scale 1.5 applied', big.ui_scale === 1.5, String(big.ui_scale));
   check('1280x720 at UI scale 1.5: the view keeps half the width', big.view.width >= 640, `${Math.round(big.view.width)} px`);
   await api(page, () => window.swarmlab.set({ ui_scale: 1, layout: 'compact' }));
-  await frames(page, 4);
-  check('set({layout: "compact"}) overrides the wide layout at 1280x720', (await appState(page)).layout === 'landscape');
+  const compact = await until(page, (st) => st.layout === 'landscape');
+  check('set({layout: "compact"}) overrides the wide layout at 1280x720', compact.layout === 'landscape', compact.layout);
 
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));

@@ -71,7 +71,7 @@ async function walk(url, name) {
   await launchBrowser({ width: device.width, height: device.height, hasTouch: device.touch, isMobile: device.touch });
   const shots = join(outDir, 'walkthrough');
   mkdirSync(shots, { recursive: true });
-  const { page, started, error } = await openApp(url + '?welcome', `walk-${name}`, 10, listenToLiveRegion);
+  const { page, started, error } = await openApp(url + '?welcome', `walk-${name}`, listenToLiveRegion);
   if (!check(`${name}: the app starts`, started, error || '')) return;
   const me = person(page, device.touch ? 'touch' : 'keyboard');
   const shot = (file) => page.screenshot({ path: join(shots, `${name}-${file}.png`) });

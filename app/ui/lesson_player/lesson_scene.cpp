@@ -66,6 +66,7 @@ void keep_lesson_run_going(AppState& app) {
   const LessonStep* s = app.lessons.run_step();
   if (!s || !app.run->finished() || !app.run->primary().failure().empty()) return;
   if (s->run_loop) {
+    ++app.lesson_loops;
     app.restart();
     return;
   }

@@ -29,7 +29,11 @@ void travel_to(AppState& state, TimeTravel::Kind kind, long target) {
   state.travel = {kind, state.run->step(), target, chunk};
   state.playing = false;
   state.step_debt = 0;
-  if (state.run->step() == target) state.travel = {};
+  if (kind != TimeTravel::Kind::seek) state.last_fast_forward = {kind, 0, {}, false};
+  if (state.run->step() == target) {
+    state.travel = {};
+    if (kind != TimeTravel::Kind::seek) state.last_fast_forward.reached = true;
+  }
 }
 
 void step_back(AppState& state, bool coarse) {
@@ -71,7 +75,11 @@ void continue_travel(AppState& state, double budget_ms) {
       travel.chunk /= 2;
     spent_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
   }
-  if (run.step() >= travel.target || run.finished()) travel = {};
+  if (run.step() >= travel.target || run.finished()) {
+    if (travel.kind != TimeTravel::Kind::seek && run.step() >= travel.target)
+      state.last_fast_forward.reached = true;
+    travel = {};
+  }
 }
 
 void play_or_continue(AppState& state) {

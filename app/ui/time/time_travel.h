@@ -1,7 +1,10 @@
 #pragma once
 // A move of the run in time under way: a seek or a fast-forward, carried out a frame's time
 // budget at a time (time_controls.h starts and carries it on) so that the window never
-// freezes. The app's state holds one.
+// freezes. The app's state holds one, and a record of the last fast-forward.
+
+#include <cstddef>
+#include <vector>
 
 namespace swarmlab {
 
@@ -18,6 +21,16 @@ struct TimeTravel {
   double progress(long step) const {
     return target == from ? 1.0 : double(step - from) / double(target - from);
   }
+};
+
+/// The last fast-forward as its progress bar showed it, kept after it ends: what a test
+/// (state().last_fast_forward) reads instead of catching a bar that may last a frame or two.
+struct FastForwardRecord {
+  static constexpr std::size_t kKept = 200;        ///< progress values kept (the first frames')
+  TimeTravel::Kind kind = TimeTravel::Kind::none;  ///< none: no fast-forward yet
+  int frames = 0;                                  ///< frames its progress bar was drawn
+  std::vector<double> progress;  ///< the progress drawn, one a frame (the first kKept)
+  bool reached = false;          ///< it got to its target (not cancelled or overtaken)
 };
 
 }  // namespace swarmlab

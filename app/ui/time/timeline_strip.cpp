@@ -110,6 +110,10 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
     std::snprintf(label, sizeof label, "%s %.0f%%", travel_name(travel.kind),
                   100 * travel.progress(timeline.step()));
     ImGui::ProgressBar(float(travel.progress(timeline.step())), ImVec2(12 * font, 0), label);
+    FastForwardRecord& record = state.last_fast_forward;
+    ++record.frames;
+    if (record.progress.size() < FastForwardRecord::kKept)
+      record.progress.push_back(travel.progress(timeline.step()));
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) cancel_travel(state);
     item_tooltip("Esc: stop here");
