@@ -52,13 +52,22 @@ for entry in "${order[@]}"; do
   cp -a "$base" "$chroot_dir"
   # Committed files only, as a clone has them.
   git -C "$root" archive --format=tar HEAD | tar -x -C "$chroot_dir/root" --one-top-level=swarmlab
+  # The network trust of a machine of this kind: its extra CA certificates (an egress proxy's)
+  # and npm's CA file setting, which a fresh machine here has before any script runs.
+  if ls /usr/local/share/ca-certificates/*.crt >/dev/null 2>&1; then
+    cp /usr/local/share/ca-certificates/*.crt "$chroot_dir/usr/local/share/ca-certificates/"
+    chroot "$chroot_dir" update-ca-certificates >/dev/null 2>&1
+  fi
+  for npmrc in /etc/npmrc /usr/etc/npmrc; do
+    [ -f "$npmrc" ] && mkdir -p "$chroot_dir$(dirname "$npmrc")" && cp "$npmrc" "$chroot_dir$npmrc"
+  done
   mount -t proc proc "$chroot_dir/proc"
   mount --rbind /dev "$chroot_dir/dev"
   cp /etc/resolv.conf "$chroot_dir/etc/resolv.conf"
   echo "[fresh-check] $entry: ${commands[$entry]}" >&2
   t0=$(date +%s)
   if chroot "$chroot_dir" /usr/bin/env -i HOME=/root PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-       TERM=dumb bash -c "cd /root/swarmlab && ${commands[$entry]}" >"$log" 2>&1; then
+       TERM=dumb NODE_EXTRA_CA_CERTS=/etc/ssl/certs/ca-certificates.crt bash -c "cd /root/swarmlab && ${commands[$entry]}" >"$log" 2>&1; then
     result=ok
   else
     result="FAILED (last lines in ${log#"$root"/})"
