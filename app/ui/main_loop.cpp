@@ -92,18 +92,17 @@ void process_event(SDL_Event& event) {
 bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   // ImGui 1.86 sees a key as held or not once a frame: a key pressed and released between two
   // frames (a quick tap of Enter, a busy Chromebook, a scripted press) would never be seen
-  // pressed, and Enter in a lesson's answer field did nothing. Such a release is held back to
-  // the next frame.
+  // pressed, and Enter in a lesson's answer field did nothing. Once a key has gone down in
+  // this frame's events, every later release waits for the next frame: the key's own, and a
+  // modifier's let go right after it (a quick Ctrl+A is still Ctrl+A).
   static std::vector<SDL_Event> held_key_ups;
   for (SDL_Event& up : held_key_ups) process_event(up);
   held_key_ups.clear();
-  std::vector<SDL_Scancode> pressed_this_frame;
+  bool key_went_down = false;
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
-    if (event.type == SDL_KEYDOWN) pressed_this_frame.push_back(event.key.keysym.scancode);
-    if (event.type == SDL_KEYUP &&
-        std::find(pressed_this_frame.begin(), pressed_this_frame.end(),
-                  event.key.keysym.scancode) != pressed_this_frame.end()) {
+    if (event.type == SDL_KEYDOWN) key_went_down = true;
+    if (event.type == SDL_KEYUP && key_went_down) {
       held_key_ups.push_back(event);
       continue;
     }

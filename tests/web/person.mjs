@@ -63,6 +63,32 @@ export function person(page, way) {
     throw new Error('could not scroll to ' + (await el.evaluate((e) => e.textContent || e.getAttribute('aria-label'))));
   }
 
+  /** The item's box once it has held still between two frames the app drew (as Playwright
+   *  waits before a click): a panel scrolls new feedback into view on the frame after it
+   *  appears, moving the buttons below it. */
+  async function still(el) {
+    const handle = await el.elementHandle();
+    await page.waitForFunction((e) => {
+      const r = e.getBoundingClientRect();
+      const place = [r.x, r.y, r.width, r.height, e.dataset.clipped].join();
+      const frame = window.swarmlab.frames();
+      const last = e.stillSeen;
+      if (!last || last.place !== place) e.stillSeen = { place, frame };
+      return last && last.place === place && frame > last.frame;
+    }, handle, { timeout: 20_000 });
+    return box(el);
+  }
+
+  /** Scrolled into sight and held still there (it may have moved out of sight while settling). */
+  async function inSightAndStill(el) {
+    for (let tries = 0; tries < 5; ++tries) {
+      await reveal(el);
+      const b = await still(el);
+      if (!b.clipped) return b;
+    }
+    throw new Error('the item would not stay in sight');
+  }
+
   /** Tab (or Shift+Tab) until the element has the focus, as a keyboard user walks: counts the
    *  focusable elements between the focus and the target, presses Tab up to that many times,
    *  looks again. */
@@ -102,7 +128,7 @@ export function person(page, way) {
       await page.keyboard.press('Enter');
       return;
     }
-    const b = await reveal(el);
+    const b = await inSightAndStill(el);
     const x = b.x + b.width / 2, y = b.y + b.height / 2;
     if (way === 'touch') await tapAt(x, y);
     else await page.mouse.click(x, y);
@@ -114,7 +140,7 @@ export function person(page, way) {
     await el.waitFor({ state: 'attached' });
     if (way === 'keyboard') await tabTo(el);
     else if (way === 'touch') {
-      const b = await reveal(el);
+      const b = await inSightAndStill(el);
       await tapAt(b.x + b.width / 2, b.y + b.height / 2);
     } else throw new Error('person.type: a mouse user types with the keyboard (use keyboard)');
     // The field's <input> has the focus now (for a finger: once the app opened the field).
