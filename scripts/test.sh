@@ -10,7 +10,7 @@
 #                            smoke test, under 3 minutes once built.
 # Installs what is missing first. Each stage runs through ctest's labels (unit, cli, desktop,
 # wasm, web, walkthrough, fuzz, smoke) where it can; a failed test stage does not stop the later
-# ones; the two builds run side by side, then the walkthroughs beside the other tests. Ends with a table of the
+# ones; after the builds the browser tests run beside the others. Ends with a table of the
 # stages and their times; exits non-zero if any stage failed.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -64,25 +64,16 @@ wasm_build() {
     { [ -f build-wasm/CMakeCache.txt ] || emcmake cmake -S . -B build-wasm -DCMAKE_BUILD_TYPE=Release >/dev/null; } &&
     cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab swarmlab_web
 }
-# The two builds side by side: each has long single-threaded stretches (configuring, linking,
-# SDL2's configure, emcc's wasm link) that the other fills.
-mkdir -p build/test-logs
-echo "== native and wasm builds, side by side (build/test-logs/native-build.log, wasm-build.log)"
-stage "native build" scripts/build.sh >build/test-logs/native-build.log 2>&1 &
-native=$!
-stage "wasm build: core, tests, CLI for node, the page" wasm_build >build/test-logs/wasm-build.log 2>&1
-wasm_status=$?
-wait $native
-native_status=$?
-for log in native-build wasm-build; do echo "-- $log (last lines)"; tail -5 "build/test-logs/$log.log"; done
-if [ $native_status -ne 0 ] || [ $wasm_status -ne 0 ]; then
-  cat build/test-logs/native-build.log build/test-logs/wasm-build.log | grep -E -B2 -A8 'error|Error' | head -80
-  exit 1
-fi
+build "native build" scripts/build.sh
+build "wasm build: core, tests, CLI for node, the page" wasm_build
 
-# Two lanes at once: the walkthroughs (two pages, about a core each) beside everything else.
-# Each lane's output goes to its log, shown after.
+# Two lanes at once: the browser (its suites one at a time, then the walkthroughs two at a
+# time, a core a page) beside the native, wasm and fuzzing checks. The browser suites' timing
+# limits leave room for a loaded machine, not for three pages at once: they never run beside
+# the walkthroughs. Each lane's output goes to its log, shown after.
+mkdir -p build/test-logs
 browser_lane() {
+  stage "browser suites, one at a time (ctest -L web)" native_ctest -L web
   stage "walkthroughs: every lesson on four devices, two at a time (ctest -L walkthrough)" \
     native_ctest -L walkthrough -j2
 }
@@ -93,10 +84,9 @@ checks_lane() {
     build/app/swarmlab build-wasm/app/swarmlab.js \
     tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
     assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
-  stage "browser suites, one at a time (ctest -L web)" native_ctest -L web
   stage "fuzzing, a minute (ctest -L fuzz)" native_ctest -L fuzz
 }
-echo "== two lanes: walkthroughs (build/test-logs/browser.log) and the rest (build/test-logs/checks.log)"
+echo "== two lanes: browser (build/test-logs/browser.log) and checks (build/test-logs/checks.log)"
 browser_lane >build/test-logs/browser.log 2>&1 &
 browser=$!
 checks_lane >build/test-logs/checks.log 2>&1
