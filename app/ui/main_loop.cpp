@@ -7,7 +7,7 @@
 
 #include <algorithm>
 #include <cfloat>
-#include <vector>
+#include <deque>
 
 #include "ui/input/keyboard_regions.h"
 #include "ui/parallel_dom/parallel_dom.h"
@@ -76,6 +76,12 @@ void apply_touch(App& app) {
 /// ImGui's SDL backend, with the modifiers a key event carries: the backend reads them from
 /// SDL's state when the event is handled, by which time a quick Ctrl+A (both keys down and up
 /// between two frames) has let Ctrl go, and the A would be typed as text.
+bool is_modifier(SDL_Scancode key) {
+  return key == SDL_SCANCODE_LCTRL || key == SDL_SCANCODE_RCTRL || key == SDL_SCANCODE_LSHIFT ||
+         key == SDL_SCANCODE_RSHIFT || key == SDL_SCANCODE_LALT || key == SDL_SCANCODE_RALT ||
+         key == SDL_SCANCODE_LGUI || key == SDL_SCANCODE_RGUI;
+}
+
 void process_event(SDL_Event& event) {
   ImGui_ImplSDL2_ProcessEvent(&event);
   if (event.type != SDL_KEYDOWN && event.type != SDL_KEYUP) return;
@@ -90,20 +96,35 @@ void process_event(SDL_Event& event) {
 }  // namespace
 
 bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
-  // ImGui 1.86 sees a key as held or not once a frame: a key pressed and released between two
-  // frames (a quick tap of Enter, a busy Chromebook, a scripted press) would never be seen
-  // pressed, and Enter in a lesson's answer field did nothing. Once a key has gone down in
-  // this frame's events, every later release waits for the next frame: the key's own, and a
-  // modifier's let go right after it (a quick Ctrl+A is still Ctrl+A).
-  static std::vector<SDL_Event> held_key_ups;
-  for (SDL_Event& up : held_key_ups) process_event(up);
-  held_key_ups.clear();
-  bool key_went_down = false;
+  // ImGui 1.86 sees a key as held or not once a frame, and within a frame a text field takes
+  // typed characters before shortcuts: a key pressed and released between two frames would
+  // never be seen pressed (Enter in a lesson's answer field did nothing), and "Ctrl+A, 4.4,
+  // Enter" arriving in one frame of a busy machine typed 4.4 before selecting all. So the
+  // keyboard trickles, as ImGui's later input queue does: once a key other than a modifier has
+  // gone down (or a character arrived) in a frame, every later keyboard event waits, in order,
+  // for the frames after. A modifier's release waits too, so Ctrl+A stays Ctrl+A.
+  static std::deque<SDL_Event> waiting_keys;
+  bool typed = false;
+  const auto keyboard_event = [](const SDL_Event& e) {
+    return e.type == SDL_KEYDOWN || e.type == SDL_KEYUP || e.type == SDL_TEXTINPUT;
+  };
+  const auto take_key = [&](SDL_Event& e) {
+    process_event(e);
+    if (e.type == SDL_TEXTINPUT ||
+        (e.type == SDL_KEYDOWN && !is_modifier(e.key.keysym.scancode)))
+      typed = true;
+  };
+  while (!waiting_keys.empty() && !typed) {
+    take_key(waiting_keys.front());
+    waiting_keys.pop_front();
+  }
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
-    if (event.type == SDL_KEYDOWN) key_went_down = true;
-    if (event.type == SDL_KEYUP && key_went_down) {
-      held_key_ups.push_back(event);
+    if (keyboard_event(event)) {
+      if (typed || !waiting_keys.empty())
+        waiting_keys.push_back(event);
+      else
+        take_key(event);
       continue;
     }
     if (event.type == SDL_FINGERDOWN || event.type == SDL_FINGERMOTION ||

@@ -73,8 +73,11 @@ def main():
         ok = False
     # Each is the click's shape: its first crest and its tone (zero crossings over 1.5 ms).
     bad = []
+    window = int(0.0015 * RATE)
     for start in heard:
-        piece = samples[start:start + int(0.0015 * RATE)]
+        if start + window > len(samples):
+            continue  # cut off by closing the device at exit, as the count above allows
+        piece = samples[start:start + window]
         crest = max(abs(x) for x in piece)
         crossings = sum(1 for a, b in zip(piece, piece[1:]) if (a < 0) != (b < 0))
         tone = crossings / 2 / (len(piece) / RATE)

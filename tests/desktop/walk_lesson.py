@@ -114,11 +114,20 @@ def next_step(n):
     wait_for(f"step {n} after a click on Next", step_heading(n))
 
 
+def editing(field_id):
+    """Whether the window's text cursor is in the field (the items' "editing")."""
+    try:
+        with open(items_path) as f:
+            return json.load(f)["dom"]["editing"] == field_id
+    except (OSError, ValueError, KeyError):
+        return False
+
+
 def type_answer(text):
     """Clicks the answer field, replaces what it holds with text and presses Enter."""
-    press("textbox", "Your answer")
-    wait_for("the answer field open for typing", lambda all_items: any(
-        i["role"] == "textbox" and i["name"] == "Your answer" for i in all_items))
+    field = stable('textbox "Your answer"', shown("textbox", "Your answer"))
+    click(field)
+    wait_for("the answer field open for typing", lambda _: editing(field["id"]))
     xdotool("key", "ctrl+a")
     xdotool("type", "--delay", "20", text)
     xdotool("key", "Return")
