@@ -110,9 +110,12 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   else j["keyboard_focus"] = nullptr;
   // The item the keyboard is on (its name as the parallel DOM gives it), or null.
   j["keyboard_item"] = nullptr;
-  const unsigned nav_id = swarmlab::parallel_dom().nav_id();
-  for (const swarmlab::MirroredItem& item : swarmlab::parallel_dom().items())
-    if (nav_id != 0 && item.id == nav_id) j["keyboard_item"] = item.name;
+  if (const unsigned nav_id = swarmlab::parallel_dom().nav_id())
+    for (const swarmlab::MirroredItem& item : swarmlab::parallel_dom().items())
+      if (item.id == nav_id) {
+        j["keyboard_item"] = item.name;
+        break;
+      }
   return j;
 }
 

@@ -32,17 +32,17 @@ def ok(message):
 
 
 def snapshot():
-    """(frame number, items) of the last frame written, or (-1, []) before the first."""
+    """(frame number, what the window shows) of the last frame written: "items", "editing"..."""
     try:
         with open(items_path) as f:
             written = json.load(f)
-        return written["frame"], written["dom"]["items"]
+        return written["frame"], written["dom"]
     except (OSError, ValueError, KeyError):
-        return -1, []  # not written yet (the file is renamed into place whole)
+        return -1, {"items": []}  # not written yet (the file is renamed into place whole)
 
 
 def items():
-    return snapshot()[1]
+    return snapshot()[1]["items"]
 
 
 def wait_for(what, predicate):
@@ -63,8 +63,8 @@ def stable(what, predicate):
     deadline = time.monotonic() + WAIT_S
     last_frame, last = -1, None
     while time.monotonic() < deadline:
-        frame, now = snapshot()
-        found = predicate(now)
+        frame, shows = snapshot()
+        found = predicate(shows["items"])
         if found and frame > last_frame:
             place = (found["x"], found["y"], found["width"], found["height"])
             if last is not None and frame == last_frame + 1 and place == last:
@@ -114,20 +114,12 @@ def next_step(n):
     wait_for(f"step {n} after a click on Next", step_heading(n))
 
 
-def editing(field_id):
-    """Whether the window's text cursor is in the field (the items' "editing")."""
-    try:
-        with open(items_path) as f:
-            return json.load(f)["dom"]["editing"] == field_id
-    except (OSError, ValueError, KeyError):
-        return False
-
-
 def type_answer(text):
     """Clicks the answer field, replaces what it holds with text and presses Enter."""
     field = stable('textbox "Your answer"', shown("textbox", "Your answer"))
     click(field)
-    wait_for("the answer field open for typing", lambda _: editing(field["id"]))
+    wait_for("the answer field open for typing",
+             lambda _: snapshot()[1].get("editing") == field["id"])
     xdotool("key", "ctrl+a")
     xdotool("type", "--delay", "20", text)
     xdotool("key", "Return")

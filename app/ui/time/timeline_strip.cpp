@@ -107,13 +107,12 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
   if (travel.active() && travel.kind != TimeTravel::Kind::seek) {
     ImGui::SameLine();
     char label[64];
-    std::snprintf(label, sizeof label, "%s %.0f%%", travel_name(travel.kind),
-                  100 * travel.progress(timeline.step()));
-    ImGui::ProgressBar(float(travel.progress(timeline.step())), ImVec2(12 * font, 0), label);
+    const double progress = travel.progress(timeline.step());
+    std::snprintf(label, sizeof label, "%s %.0f%%", travel_name(travel.kind), 100 * progress);
+    ImGui::ProgressBar(float(progress), ImVec2(12 * font, 0), label);
     FastForwardRecord& record = state.last_fast_forward;
     ++record.frames;
-    if (record.progress.size() < FastForwardRecord::kKept)
-      record.progress.push_back(travel.progress(timeline.step()));
+    if (record.progress.size() < FastForwardRecord::kKept) record.progress.push_back(progress);
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) cancel_travel(state);
     item_tooltip("Esc: stop here");
