@@ -45,10 +45,10 @@ void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
       "%-14s %ld\n%-14s %.6g\n",
       "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift", s.energy_drift,
       "wall_hits", (long long)s.wall_hits, "steps", s.steps, "t_end", s.t_end);
-  // Appendix B: the energy books and the floor, when the preset has gravity, a floor or drag.
+  // Appendix B: the energy books and the floor, when energy comes or goes from outside.
   const swarm::EngineConfig& engine = run.plan().engine;
-  const bool forced = engine.forces.any() || engine.floor;
-  if (forced)
+  const bool forced = engine.forces.any() || engine.floor;  // the CM's height and the size
+  if (engine.exchanges_energy())
     std::printf("%-14s %.10g\n%-14s %.10g\n%-14s %.10g\n%-14s %.3e\n%-14s %lld\n", "work",
                 s.books.wall_work, "heat", s.books.wall_heat, "drag_loss", s.books.drag_loss,
                 "E_end-E0-books", s.E_end - s.E0 - s.books.net(), "floor_hits",

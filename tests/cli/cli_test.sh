@@ -193,6 +193,24 @@ expect_error gravity-short "{\"J\":1,$two,\"dt\":0.01,\"duration\":1,\"gravity\"
 expect_error duplicate-key "{$good, \"duration\": 1, \"J\": 2}" 'J: given twice (each key at most once)'
 expect_error trailing "{$good, \"duration\": 1} {}" 'preset: not valid JSON'
 
+# The energy books are printed for every run that exchanges energy with the outside, walls
+# included, and they balance: E_end - E0 - books is rounding.
+gas='"J":0,"particles":{"count":200,"position_radius":0.9,"velocity":{"temperature":1},"seed":3},"dt":0.001,"duration":0.4'
+printf '{%s,"container":{"radius":1,"moves":[{"to":0.8,"speed":1}]}}' "$gas" >"$work/moving.json"
+printf '{%s,"container":{"radius":1,"wall_temperature":3}}' "$gas" >"$work/hot.json"
+for wall in moving hot; do
+  "$bin" run "$work/$wall.json" >"$work/stdout" 2>"$work/stderr" || { bad "$wall wall run: $(cat "$work/stderr")"; continue; }
+  python3 - "$work/stdout" "$wall" <<'PY' && ok || bad "$wall wall: the books in the summary: $(cat "$work/stdout")"
+import sys
+rows = dict(l.split(None, 1) for l in open(sys.argv[1]) if len(l.split()) == 2)
+E0, E_end = float(rows["E0"]), float(rows["E_end"])
+books = float(rows["work"]) + float(rows["heat"]) - float(rows["drag_loss"])
+assert abs(books) > 1e-3 * E0, "nothing booked"
+assert abs(E_end - E0 - books) < 1e-9 * E0 and abs(float(rows["E_end-E0-books"])) < 1e-9 * E0
+assert (float(rows["heat"]) != 0) == (sys.argv[2] == "hot")
+PY
+done
+
 # Ten million particles run in the CLI, but not with RESULT.json (~17 GB): refused at once.
 printf '{"J":1,"particles":{"count":10000000,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e-3}' >"$work/ten-million.json"
 "$bin" validate "$work/ten-million.json" >/dev/null 2>&1 && ok || bad "ten million particles: not valid"

@@ -41,6 +41,7 @@ class ReferenceEngine final : public Engine {
     } else {
       step_with_exact_hits(dt, tally);
     }
+    if (config_.floor) rest_on_floor(system_, *config_.floor, config_.forces.gravity, tally);
     if (spheres_) spheres_->collide(system_.particles);
     ++steps_;
     return tally;

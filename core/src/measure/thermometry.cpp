@@ -54,9 +54,9 @@ std::vector<WallSums> prefix_sums(const std::vector<WallInterval>& intervals) {
 
 }  // namespace
 
-void WallMeter::add(const WallTally& step_tally, double dt, double R) {
+void WallMeter::add(const WallTally& step_tally, double dt, double area) {
   hits_ += step_tally.hits;
-  if (step_tally.hits > 0) impulse_per_area_ += step_tally.radial_impulse / sphere_area(R);
+  if (step_tally.hits > 0) impulse_per_area_ += step_tally.radial_impulse / area;
   hit_kinetic_energy_ += step_tally.hit_kinetic_energy;
   elapsed_ += dt;
 }

@@ -15,14 +15,14 @@ void WallTallyLog::clear() {
   tail_.clear();
 }
 
-WallReading WallTallyLog::reading(long first, double dt, double R) const {
+WallReading WallTallyLog::reading(long first, double dt, double area) const {
   WallMeter meter;
   auto add = [&](const Entry& e) {
     WallTally t;
     t.hits = e.hits;
     t.radial_impulse = e.radial_impulse;
     t.hit_kinetic_energy = e.hit_kinetic_energy;
-    meter.add(t, dt, R);
+    meter.add(t, dt, area);
   };
   for (long i = first; i < size(); ++i) {
     const long block = i / kBlock;

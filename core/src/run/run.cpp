@@ -84,12 +84,18 @@ void Run::expand_now(double factor) {
     const double f = plan_.expansion ? plan_.expansion->thermalize_fraction
                                      : ExpansionProtocol{}.thermalize_fraction;
     const long length = steps_done_ - hand_stage_start_;
-    const WallReading w = hand_tallies_.reading(std::lround(f * double(length)), plan_.dt, *R);
+    const WallReading w =
+        hand_tallies_.reading(std::lround(f * double(length)), plan_.dt, wall_area(*R, *R));
     stages_.push_back(
         {*R, sphere_volume(*R), w.P, w.T, total_energy(engine_->system()), w.hits, true});
   }
   engine_->set_container_radius(*R * factor);
   if (stage_by_hand_open()) open_stage_by_hand();
+}
+
+double Run::wall_area(double R_before, double R_after) const {
+  const double a = plan_.engine.sphere_radius.value_or(0.0);
+  return swept_area(R_before - a, R_after - a);
 }
 
 void Run::extend(long steps) { plan_.steps += std::max(0L, steps); }
@@ -116,13 +122,15 @@ Sample Run::sample_now() {
 }
 
 void Run::step_once() {
-  const double R = engine_->container_radius().value_or(0.0);
+  const double R_before = engine_->container_radius().value_or(0.0);
   const WallTally tally = engine_->step(plan_.dt);
+  const double R = engine_->container_radius().value_or(0.0);
+  const double area = wall_area(R_before, R);
   ++steps_done_;
   wall_hits_ += tally.hits;
   floor_hits_ += tally.floor_hits;
   books_.add(tally.books);
-  sample_meter_.add(tally, plan_.dt, R);
+  sample_meter_.add(tally, plan_.dt, area);
 
   if (stage_by_hand_open()) hand_tallies_.push(tally);
   if (plan_.expansion && steps_done_ <= protocol_steps_) {
@@ -130,7 +138,7 @@ void Run::step_once() {
     const long per_stage = steps_per_stage(e, plan_.dt);
     const long in_stage = (steps_done_ - 1) % per_stage;  // index of the step just taken
     if (in_stage >= std::lround(e.thermalize_fraction * double(per_stage)))
-      stage_meter_.add(tally, plan_.dt, R);
+      stage_meter_.add(tally, plan_.dt, area);
     if (in_stage == per_stage - 1) {
       const WallReading w = stage_meter_.reading();
       const EnergyParts energy = energy_now();

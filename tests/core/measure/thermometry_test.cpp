@@ -20,8 +20,8 @@ TEST_CASE("wall pressure and temperature follow the paper's definitions, by hand
 
   WallMeter meter;
   const double R = 2.0, dt = 0.01;
-  meter.add(t, dt, R);
-  meter.add(WallTally{}, dt, R);
+  meter.add(t, dt, sphere_area(R));
+  meter.add(WallTally{}, dt, sphere_area(R));
   const WallReading w = meter.reading();
   CHECK(w.P == Approx(12.0 / (4 * M_PI * R * R * 2 * dt)));
   CHECK(w.T == Approx(0.5 * 25.0));  // half the hitters' mean kinetic energy (k_B = 1)

@@ -60,7 +60,7 @@ void check_same(const WallReading& got, const WallReading& expected) {
 TEST_CASE("wall tally log: an empty log, and a stretch of no steps, read all zeros") {
   WallTallyLog log;
   CHECK(log.size() == 0);
-  const WallReading empty = log.reading(0, 1e-3, 1.0);
+  const WallReading empty = log.reading(0, 1e-3, sphere_area(1.0));
   CHECK(empty.hits == 0);
   CHECK(empty.P == 0);
   CHECK(empty.T == 0);
@@ -92,10 +92,10 @@ TEST_CASE(
   }
   for (long first : firsts) {
     CAPTURE(first);
-    check_same(log.reading(first, dt, R), expected_reading(first, n, dt, R));
+    check_same(log.reading(first, dt, sphere_area(R)), expected_reading(first, n, dt, R));
   }
-  // dt and R are the reader's: P goes as 1 / (dt R^2), T and the hits do not change.
-  check_same(log.reading(kSeam - 3, 0.5, 0.25), expected_reading(kSeam - 3, n, 0.5, 0.25));
+  // dt and the area are the reader's: P goes as 1 / (dt area), T and the hits do not change.
+  check_same(log.reading(kSeam - 3, 0.5, sphere_area(0.25)), expected_reading(kSeam - 3, n, 0.5, 0.25));
 }
 
 TEST_CASE("wall tally log: reads as one WallMeter fed the same steps, to the bit") {
@@ -107,8 +107,8 @@ TEST_CASE("wall tally log: reads as one WallMeter fed the same steps, to the bit
   for (long first : {0L, 17L, kSeam - 1, kSeam, n - 1}) {
     CAPTURE(first);
     WallMeter meter;
-    for (long i = first; i < n; ++i) meter.add(tally_of_step(i), dt, R);
-    const WallReading a = log.reading(first, dt, R), b = meter.reading();
+    for (long i = first; i < n; ++i) meter.add(tally_of_step(i), dt, sphere_area(R));
+    const WallReading a = log.reading(first, dt, sphere_area(R)), b = meter.reading();
     CHECK(a.hits == b.hits);
     CHECK(a.P == b.P);
     CHECK(a.T == b.T);
@@ -123,8 +123,8 @@ TEST_CASE("wall tally log: readings are right as the log grows through a block's
     const long size = i + 1;
     if (size < kSeam - 2 && size > 3) continue;
     CAPTURE(size);
-    check_same(log.reading(0, dt, R), expected_reading(0, size, dt, R));
-    check_same(log.reading(size - 1, dt, R), expected_reading(size - 1, size, dt, R));
+    check_same(log.reading(0, dt, sphere_area(R)), expected_reading(0, size, dt, R));
+    check_same(log.reading(size - 1, dt, sphere_area(R)), expected_reading(size - 1, size, dt, R));
   }
 }
 
@@ -132,12 +132,12 @@ TEST_CASE("wall tally log: a stretch where nothing hit has no temperature and no
   WallTallyLog log;
   for (long i = 0; i < 5; ++i) log.push(tally_of_step(i));
   for (int i = 0; i < 7; ++i) log.push(WallTally{});
-  const WallReading quiet = log.reading(5, 1e-3, 1.0);
+  const WallReading quiet = log.reading(5, 1e-3, sphere_area(1.0));
   CHECK(quiet.hits == 0);
   CHECK(quiet.T == 0);
   CHECK(quiet.P == 0);
   // The quiet steps still count as time: the pressure over all of them is diluted.
-  check_same(log.reading(0, 1e-3, 1.0), [] {
+  check_same(log.reading(0, 1e-3, sphere_area(1.0)), [] {
     WallReading w = expected_reading(0, 5, 1e-3, 1.0);
     w.P *= 5.0 / 12.0;
     return w;
@@ -161,10 +161,10 @@ TEST_CASE("wall tally log: copies are independent, whether cut inside a block or
     REQUIRE(original.size() == cut + more);
     REQUIRE(copy.size() == cut + more);
     // The shared history reads alike, what followed reads as each was fed.
-    check_same(original.reading(0, dt, R), expected_reading(0, cut + more, dt, R));
+    check_same(original.reading(0, dt, sphere_area(R)), expected_reading(0, cut + more, dt, R));
     const WallReading shared = expected_reading(0, cut, dt, R);
     const WallReading own = expected_reading(cut, cut + more, dt, R, 10.0);
-    const WallReading copy_all = copy.reading(0, dt, R);
+    const WallReading copy_all = copy.reading(0, dt, sphere_area(R));
     CHECK(copy_all.hits == shared.hits + own.hits);
     // P sums impulse per time: weigh each part by its number of steps.
     CHECK(copy_all.P == Approx((shared.P * double(cut) + own.P * double(more)) / double(cut + more))
@@ -172,11 +172,11 @@ TEST_CASE("wall tally log: copies are independent, whether cut inside a block or
     CHECK(copy_all.T == Approx((shared.T * double(shared.hits) + own.T * double(own.hits)) /
                                double(shared.hits + own.hits))
                             .epsilon(1e-12));
-    check_same(copy.reading(cut, dt, R), own);
+    check_same(copy.reading(cut, dt, sphere_area(R)), own);
     // Clearing one leaves the other whole.
     copy.clear();
     CHECK(copy.size() == 0);
-    check_same(original.reading(0, dt, R), expected_reading(0, cut + more, dt, R));
+    check_same(original.reading(0, dt, sphere_area(R)), expected_reading(0, cut + more, dt, R));
   }
 }
 
@@ -185,10 +185,10 @@ TEST_CASE("wall tally log: after clear() it reads as a new log") {
   for (long i = 0; i < kSeam + 10; ++i) log.push(tally_of_step(i, 3.0));
   log.clear();
   CHECK(log.size() == 0);
-  const WallReading empty = log.reading(0, 1e-3, 1.0);
+  const WallReading empty = log.reading(0, 1e-3, sphere_area(1.0));
   CHECK(empty.hits == 0);
   CHECK(empty.P == 0);
   for (long i = 0; i < kSeam + 10; ++i) log.push(tally_of_step(i));
-  check_same(log.reading(0, 1e-3, 1.0), expected_reading(0, kSeam + 10, 1e-3, 1.0));
-  check_same(log.reading(kSeam, 1e-3, 1.0), expected_reading(kSeam, kSeam + 10, 1e-3, 1.0));
+  check_same(log.reading(0, 1e-3, sphere_area(1.0)), expected_reading(0, kSeam + 10, 1e-3, 1.0));
+  check_same(log.reading(kSeam, 1e-3, sphere_area(1.0)), expected_reading(kSeam, kSeam + 10, 1e-3, 1.0));
 }

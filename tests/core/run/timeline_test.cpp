@@ -238,7 +238,7 @@ TEST_CASE("after the protocol's end a stage by hand covers the steps since, aver
   WallMeter meter;
   for (int i = 0; i < 1000; ++i) {
     const WallTally tally = copy.engine().step(plan.dt);
-    if (i >= 800) meter.add(tally, plan.dt, R);
+    if (i >= 800) meter.add(tally, plan.dt, sphere_area(R));
   }
   run.finish();
   CHECK(run.steps_done() == 1600);

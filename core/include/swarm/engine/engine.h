@@ -36,6 +36,13 @@ struct EngineConfig {
   std::vector<WallMove> wall_moves;        ///< the wall's path from container_radius at t = 0
   std::optional<double> wall_temperature;  ///< a thermal wall at this T (energy units, k_B = 1)
   std::optional<double> sphere_radius;     ///< hard spheres of this radius (length)
+
+  /// Whether energy comes or goes other than between the particles and their springs: a
+  /// field, drag, a floor, a moving or a hot wall. Its runs keep energy books (EnergyBooks)
+  /// worth showing.
+  bool exchanges_energy() const {
+    return forces.any() || floor || !wall_moves.empty() || wall_temperature;
+  }
 };
 
 class Engine {

@@ -24,8 +24,9 @@ struct WallReading {
 /// Accumulates the wall tallies of consecutive steps.
 class WallMeter {
  public:
-  /// R is the container radius during the step: the pressure divides by its area.
-  void add(const WallTally& step_tally, double dt, double R);
+  /// `area` is the wall's during the step (sphere_area, or swept_area for a wall that moved):
+  /// the pressure divides by it.
+  void add(const WallTally& step_tally, double dt, double area);
   WallReading reading() const;
   void reset();
 

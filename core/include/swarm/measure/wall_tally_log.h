@@ -20,8 +20,8 @@ class WallTallyLog {
   void clear();
   long size() const { return long(full_.size()) * kBlock + long(tail_.size()); }
   /// What one WallMeter would read fed with the steps [first, size()) in order, each of
-  /// length dt (time) at container radius R (length).
-  WallReading reading(long first, double dt, double R) const;
+  /// length dt (time) on a wall of this area (length^2).
+  WallReading reading(long first, double dt, double area) const;
 
  private:
   struct Entry {

@@ -24,4 +24,13 @@ inline bool falling_through(const Floor& floor, const Vec3& r_now_or_next, const
 /// work in tally.books.
 void bounce_on_floor(Particle& p, const Floor& floor, WallTally& tally);
 
+/// After a step on an inelastic floor (e < 1): every particle that ended below the floor is
+/// put on it and loses its downward velocity: it rests there, held up as a table holds a
+/// ball. A particle that bounces too slowly to clear the floor within a step would otherwise
+/// sink by about g dt (1 - e) / (2 (1 + e)) a step (the bounce at the start of the step gives
+/// back less than the fall takes). The energy this changes (the lift against gravity g and the
+/// springs, the lost downward motion) is booked as the floor's work in tally.books. An elastic
+/// floor gives back every bounce in full, so nothing rests on it and nothing is done.
+void rest_on_floor(System& s, const Floor& floor, const Vec3& g, WallTally& tally);
+
 }  // namespace swarm

@@ -38,6 +38,11 @@ inline Vec3 wall_reflection(double m, const Vec3& r, const Vec3& v, WallTally& t
 }
 
 double sphere_area(double R);
+/// The wall's area over a step in which its radius goes from R0 to R1: the volume it sweeps
+/// over the distance it moves, 4 pi (R0^2 + R0 R1 + R1^2) / 3, so that a pressure measured
+/// over this area times the change of volume is the wall's work in the step exactly (the P-V
+/// loop's area equals the work booked). sphere_area(R) when R0 = R1 = R.
+double swept_area(double R0, double R1);
 double sphere_volume(double R);
 
 }  // namespace swarm

@@ -104,6 +104,11 @@ class Run {
   Sample sample_now();
   void check_finite(const Sample& s);
   void open_stage_by_hand();
+  /// The area a step's wall pressure divides by: the sphere the particles' centres reach
+  /// (radius R - a for hard spheres of radius a, where they give the wall their impulse),
+  /// over the range a moving wall swept in the step (swept_area: P dV is then the wall's
+  /// work exactly).
+  double wall_area(double R_before, double R_after) const;
 
   std::unique_ptr<Engine> engine_;
   RunPlan plan_;
