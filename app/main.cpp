@@ -59,6 +59,72 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--png", run.png, "With --plots: a PNG of each figure too (needs rsvg-convert)")
       ->needs(plots);
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress bar and no table on the terminal");
+  CLI::Option* run_seed = run_cmd->add_option(
+      "--seed", run.seed,
+      "Draw the generated swarm from this seed instead of particles.seed (an ensemble's run)");
+  run_cmd->add_option("--perturb", run.perturb,
+                      "With --seed and listed particles: move each start by up to this fraction "
+                      "of the swarm's size and speed, drawn from the seed")
+      ->check(CLI::Range(0.0, 1.0))
+      ->needs(run_seed);
+  CLI::Option* run_index =
+      run_cmd->add_option("--run-index", run.run_index, "This run's index in its ensemble")
+          ->check(CLI::NonNegativeNumber);
+  run_cmd->add_option("--preset-hash", run.preset_hash,
+                      "Refuse to run unless the preset has this hash (the plan's)");
+  run_cmd
+      ->add_option("--record", run.record_path,
+                   "Write the ensemble record of this run (what swarmlab merge reads) instead "
+                   "of the usual outputs")
+      ->needs(run_seed)
+      ->needs(run_index)
+      ->excludes("--out")
+      ->excludes("--csv")
+      ->excludes(plots);
+
+  swarmlab::EnsembleOptions ensemble;
+  CLI::App* ensemble_cmd = app.add_subcommand(
+      "ensemble",
+      "Run a preset N times from independent seeds on every core, then merge the runs into "
+      "means with 95 % intervals (resumes where a killed ensemble stopped)");
+  swarmlab::EnsembleOptions plan;
+  CLI::App* plan_cmd = app.add_subcommand(
+      "plan",
+      "Write the runs of an ensemble as a manifest of swarmlab run commands for GNU parallel or "
+      "a Slurm array, without running them");
+  for (auto [cmd, o] : {std::pair{ensemble_cmd, &ensemble}, std::pair{plan_cmd, &plan}}) {
+    cmd->add_option("preset", o->preset_path, "Preset file (JSON)")->required();
+    cmd->add_option("--seeds", o->seeds, "How many independent runs")
+        ->required()
+        ->check(CLI::Range(1L, 1000000L));
+    cmd->add_option("--out", o->dir, "The ensemble's folder (plan.json, preset.json, runs/)")
+        ->required();
+    cmd->add_option("--seed", o->seed, "Master seed: run k starts from a seed derived from it and k");
+    cmd->add_option("--perturb", o->perturb,
+                    "Listed particles: move each run's start by up to this fraction of the "
+                    "swarm's size and speed")
+        ->check(CLI::Range(0.0, 1.0));
+    cmd->add_flag("--quiet,-q", o->quiet, "No progress bar and no table");
+  }
+  ensemble_cmd->add_option("--jobs,-j", ensemble.jobs, "Runs at once (default: every core)")
+      ->check(CLI::Range(1, 4096));
+  plan_cmd->add_flag("--slurm", plan.slurm, "Also write DIR/array.sbatch, a Slurm job array");
+  plan_cmd->add_option("--at-once", plan.slurm_at_once, "With --slurm: at most this many tasks at once")
+      ->check(CLI::NonNegativeNumber);
+  plan_cmd->add_option("--swarmlab", plan.swarmlab,
+                       "The program each manifest line calls (default: this swarmlab's path)");
+
+  swarmlab::MergeOptions merge;
+  CLI::App* merge_cmd = app.add_subcommand(
+      "merge", "Merge an ensemble's runs: per quantity the runs' values, mean, spread and 95 % interval");
+  merge_cmd->add_option("dir", merge.dir, "The ensemble's folder")->required();
+  merge_cmd->add_option("--out", merge.out_path, "REPORT.json (default DIR/report.json)");
+  merge_cmd->add_option("--csv", merge.csv_path, "The per-run table (default DIR/runs.csv)");
+  merge_cmd->add_option("--half-width", merge.half_width,
+                        "Say how many runs make each 95 % interval this narrow, relative to the "
+                        "mean (default 0.01)")
+      ->check(CLI::Range(1e-9, 1e9));
+  merge_cmd->add_flag("--quiet,-q", merge.quiet, "Say nothing on success");
 
   swarmlab::ReportOptions report;
   CLI::App* report_cmd = app.add_subcommand(
@@ -85,6 +151,9 @@ int main(int argc, char** argv) {
   if (*validate_cmd) return swarmlab::validate_command(validate_path);
   if (*bench_cmd) return swarmlab::bench_command(bench);
   if (*report_cmd) return swarmlab::report_command(report);
+  if (*ensemble_cmd) return swarmlab::ensemble_command(ensemble);
+  if (*plan_cmd) return swarmlab::plan_command(plan);
+  if (*merge_cmd) return swarmlab::merge_command(merge);
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop(
       {window_preset, frames, screenshot, select, presentation, plot_tab, sound, lesson_summary,

@@ -6,7 +6,7 @@ set -euo pipefail
 # Each group holds everything its own build or run needs, so that any one script works on a
 # fresh machine with only the groups it asks for (scripts/fresh-check.sh checks that).
 declare -A groups=(
-  [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin"
+  [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin parallel"
   [desktop]="dpkg-dev libsdl2-dev libstb-dev fonts-dejavu-core xvfb xauth xdotool"
   [web]="emscripten nodejs npm cmake make python3 dpkg-dev libeigen3-dev nlohmann-json3-dev doctest-dev libstb-dev"
   [webtest]="chromium"

@@ -1,6 +1,8 @@
 #pragma once
 // The headless subcommands of swarmlab. Each returns the process exit code.
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +14,36 @@ struct RunOptions {
   std::string csv_path;   // SAMPLES.csv, empty: none
   std::string plots_dir;  // figures (SVG + CSV) go here, empty: none
   bool png = false;       // also render each figure as PNG
+  bool quiet = false;
+  // One run of an ensemble (a manifest's line): the seed its start is drawn from, the
+  // perturbation of listed particles, its index and the plan's preset hash, and the record.
+  std::optional<std::uint64_t> seed;
+  double perturb = 0;
+  long run_index = -1;
+  std::string preset_hash;  // "": not checked
+  std::string record_path;  // DIR/runs/<k>.json, empty: none
+};
+
+/// swarmlab ensemble and swarmlab plan: N seeds of a preset into DIR.
+struct EnsembleOptions {
+  std::string preset_path;
+  long seeds = 0;
+  std::string dir;
+  std::uint64_t seed = 1;  // the master seed
+  double perturb = 0;
+  int jobs = 0;  // runs at once; 0: every hardware thread
+  bool quiet = false;
+  // plan only
+  bool slurm = false;
+  long slurm_at_once = 0;
+  std::string swarmlab;  // the program the manifest calls; "": this one
+};
+
+struct MergeOptions {
+  std::string dir;
+  std::string out_path;  // "": DIR/report.json
+  std::string csv_path;  // "": DIR/runs.csv
+  double half_width = 0.01;
   bool quiet = false;
 };
 
@@ -25,5 +57,8 @@ struct ReportOptions {
 int run_command(const RunOptions& options);
 int validate_command(const std::string& preset_path);
 int report_command(const ReportOptions& options);
+int ensemble_command(const EnsembleOptions& options);
+int plan_command(const EnsembleOptions& options);
+int merge_command(const MergeOptions& options);
 
 }  // namespace swarmlab

@@ -6,11 +6,14 @@
 #include "cli/cli.h"
 #include "cli/progress_bar.h"
 #include "cli/result_json.h"
+#include "ensemble/ensemble_member.h"
+#include "ensemble/ensemble_plan.h"
 #include "files/atomic_file.h"
 #include "files/preset_file.h"
 #include "report/plot_files.h"
 #include "report/report.h"
 #include "report/run_csv.h"
+#include "swarm/preset/ensemble_seed.h"
 #include "swarm/preset/printable_text.h"
 #include "swarm/preset/resource_budget.h"
 #include "swarm/run/side_by_side.h"
@@ -110,7 +113,7 @@ int run_command(const RunOptions& options) {
   }
   // Every output path is checked before the run: a device, a FIFO, a directory, a missing
   // folder or the same file twice is refused now, not after a long run.
-  if (const std::string err = check_output_paths({options.out_path, options.csv_path});
+  if (const std::string err = check_output_paths({options.out_path, options.csv_path, options.record_path});
       !err.empty()) {
     std::fprintf(stderr, "error: %s\n", err.c_str());
     return 1;
@@ -123,7 +126,36 @@ int run_command(const RunOptions& options) {
       return 1;
     }
   }
-  const swarm::Preset& preset = *parsed.preset;
+  if (!options.preset_hash.empty() &&
+      options.preset_hash != ensemble::preset_hash(*parsed.preset)) {
+    std::fprintf(stderr,
+                 "error: %s: --preset-hash: the preset has changed since the plan (its hash is "
+                 "%s, the plan's %s)\n",
+                 options.preset_path.c_str(), ensemble::preset_hash(*parsed.preset).c_str(),
+                 options.preset_hash.c_str());
+    return 1;
+  }
+  swarm::Preset preset = *parsed.preset;
+  if (options.seed) {
+    const swarm::SeededPreset seeded = swarm::with_seed(preset, *options.seed, options.perturb);
+    if (!seeded.preset) {
+      std::fprintf(stderr, "error: %s: %s\n", options.preset_path.c_str(), seeded.error.c_str());
+      return 1;
+    }
+    preset = *seeded.preset;
+  }
+  if (!options.record_path.empty()) {
+    const std::string err = ensemble::run_member(
+        preset,
+        {options.run_index, *options.seed, ensemble::preset_hash(*parsed.preset),
+         ensemble::program_version(), options.perturb},
+        options.record_path, swarm::default_threads());
+    if (!err.empty()) {
+      std::fprintf(stderr, "error: %s\n", err.c_str());
+      return 1;
+    }
+    return 0;
+  }
   // The files are built whole in memory before they are written: count them in the budget.
   const bool files =
       !options.out_path.empty() || !options.csv_path.empty() || !options.plots_dir.empty();

@@ -1,0 +1,222 @@
+// swarmlab ensemble, plan and merge: independent runs of one preset, run here on every core or
+// written as a manifest for any runner, and merged into intervals.
+
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "cli/cli.h"
+#include "cli/progress_bar.h"
+#include "ensemble/ensemble_member.h"
+#include "ensemble/ensemble_plan.h"
+#include "ensemble/merge.h"
+#include "files/atomic_file.h"
+#include "files/preset_file.h"
+#include "swarm/preset/ensemble_seed.h"
+
+namespace swarmlab {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace ensemble;
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "error: %s\n", message.c_str());
+  return 1;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The ensemble's folder made or checked, its plan and preset written: "" or why not.
+struct Prepared {
+  std::string error;
+  swarm::Preset preset;
+  EnsemblePlan plan;
+  std::string dir;  // absolute
+};
+
+Prepared prepare(const EnsembleOptions& o, int jobs) {
+  Prepared out;
+  const swarm::PresetParse parsed = read_preset_file(o.preset_path);
+  if (!parsed.preset) {
+    out.error = parsed.error;
+    return out;
+  }
+  out.preset = *parsed.preset;
+  // Run 0's start says whether the preset can be seeded at all (listed particles need
+  // --perturb; a perturbed particle may leave the container).
+  if (const swarm::SeededPreset first =
+          swarm::with_seed(out.preset, swarm::run_seed(o.seed, 0), o.perturb);
+      !first.preset) {
+    out.error = o.preset_path + ": " + first.error;
+    return out;
+  }
+  const swarm::ResourceEstimate cost = swarm::estimate_resources(out.preset);
+  const swarm::ResourceLimits limits;
+  // The runs share this machine's budget when it runs them; a plan's runs go elsewhere.
+  const double budget = limits.particle_steps * std::max(1, jobs);
+  if (jobs > 0 && cost.particle_steps * double(o.seeds) > budget) {
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "--seeds: %ld runs x %.3g particle-steps = %.3g (limit %.3g with %d jobs here); "
+                  "use swarmlab plan to run them on more machines",
+                  o.seeds, cost.particle_steps, cost.particle_steps * double(o.seeds), budget, jobs);
+    out.error = buf;
+    return out;
+  }
+  if (jobs > 0 && cost.memory_bytes() * jobs > limits.memory_bytes) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "--jobs: %d runs at once need ~%.3g GB (limit %.3g GB)", jobs,
+                  cost.memory_bytes() * jobs / 1e9, limits.memory_bytes / 1e9);
+    out.error = buf;
+    return out;
+  }
+  out.plan = {preset_hash(out.preset), o.seeds, o.seed, o.perturb, program_version()};
+  std::error_code ec;
+  out.dir = fs::absolute(o.dir, ec).lexically_normal().string();
+  if (!out.dir.empty() && out.dir.back() == '/') out.dir.pop_back();
+  fs::create_directories(out.dir + "/runs", ec);
+  if (ec) {
+    out.error = o.dir + ": cannot make the folder: " + ec.message();
+    return out;
+  }
+  if (fs::exists(plan_path(out.dir))) {
+    const PlanRead old = parse_plan(read_text(plan_path(out.dir)));
+    const EnsemblePlan& p = out.plan;
+    if (!old.plan) {
+      out.error = plan_path(out.dir) + ": " + old.error;
+      return out;
+    }
+    std::string differs;
+    if (old.plan->preset_hash != p.preset_hash) differs = "another preset";
+    else if (old.plan->runs != p.runs) differs = std::to_string(old.plan->runs) + " seeds";
+    else if (old.plan->seed != p.seed) differs = "master seed " + std::to_string(old.plan->seed);
+    else if (old.plan->perturbation != p.perturbation) differs = "another --perturb";
+    else if (old.plan->version != p.version) differs = "runs by swarmlab " + old.plan->version;
+    if (!differs.empty()) {
+      out.error = o.dir + ": holds another ensemble (" + differs +
+                  "); choose another --out, or remove the folder";
+      return out;
+    }
+  }
+  std::string err = write_file_atomically(preset_path(out.dir), swarm::preset_to_json(out.preset));
+  if (err.empty()) err = write_file_atomically(plan_path(out.dir), plan_json(out.plan));
+  out.error = err;
+  return out;
+}
+
+std::string this_program() {
+  std::error_code ec;
+  const fs::path self = fs::canonical("/proc/self/exe", ec);
+  return ec ? std::string("swarmlab") : self.string();
+}
+
+int write_merge(const std::string& dir, const MergeOptions& o) {
+  const MergeReport m = merge_ensemble(dir, o.half_width);
+  if (!m.error.empty()) return fail(m.error);
+  OutputFiles files;
+  std::string err = files.stage(o.out_path.empty() ? dir + "/report.json" : o.out_path, m.json);
+  if (err.empty()) err = files.stage(o.csv_path.empty() ? dir + "/runs.csv" : o.csv_path, m.csv);
+  if (err.empty()) err = files.commit();
+  if (!err.empty()) return fail(err);
+  if (!o.quiet) std::printf("%s", m.table.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int ensemble_command(const EnsembleOptions& o) {
+  const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+  const Prepared p = prepare(o, jobs);
+  if (!p.error.empty()) return fail(p.error);
+  // A killed ensemble resumes: whole runs are kept, a corrupted file is named and run again.
+  const RunScan scan = scan_runs(p.dir, p.plan);
+  if (!scan.mixed.empty()) return fail("runs of another ensemble in " + o.dir + ": " + scan.mixed);
+  std::vector<long> todo = scan.missing;
+  for (const auto& [k, why] : scan.corrupted) {
+    std::fprintf(stderr, "runs/%ld.json: %s: running it again\n", k, why.c_str());
+    todo.push_back(k);
+  }
+  std::sort(todo.begin(), todo.end());
+  if (!o.quiet && !scan.done.empty())
+    std::fprintf(stderr, "%zu of %ld runs already done in %s\n", scan.done.size(), o.seeds,
+                 o.dir.c_str());
+
+  std::atomic<std::size_t> next{0}, finished{0};
+  std::mutex lock;
+  std::string first_error;
+  ProgressBar bar("runs", !o.quiet);
+  // One engine thread per run when runs share the cores: the bits do not depend on it.
+  const int threads = jobs > 1 ? 1 : swarm::default_threads();
+  auto worker = [&] {
+    for (;;) {
+      const std::size_t i = next++;
+      if (i >= todo.size()) return;
+      const long k = todo[i];
+      const std::uint64_t seed = swarm::run_seed(p.plan.seed, std::uint64_t(k));
+      const swarm::SeededPreset seeded = swarm::with_seed(p.preset, seed, p.plan.perturbation);
+      std::string err = seeded.error;
+      if (err.empty()) {
+        try {
+          err = run_member(*seeded.preset, {k, seed, p.plan.preset_hash, p.plan.version,
+                                            p.plan.perturbation},
+                           run_path(p.dir, k), threads);
+        } catch (const std::exception& e) {
+          err = e.what();
+        }
+      }
+      std::lock_guard<std::mutex> hold(lock);
+      if (!err.empty() && first_error.empty()) first_error = "run " + std::to_string(k) + ": " + err;
+      bar.update(double(++finished) / double(todo.size()));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 0; j < std::min<long>(jobs, long(todo.size())); ++j) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+  bar.finish();
+  if (!first_error.empty()) return fail(first_error);
+  MergeOptions m;
+  m.quiet = o.quiet;
+  return write_merge(p.dir, m);
+}
+
+int plan_command(const EnsembleOptions& o) {
+  const Prepared p = prepare(o, 0);
+  if (!p.error.empty()) return fail(p.error);
+  const std::string swarmlab = o.swarmlab.empty() ? this_program() : o.swarmlab;
+  OutputFiles files;
+  std::string err = files.stage(p.dir + "/manifest.txt", manifest(p.plan, swarmlab, p.dir));
+  if (err.empty() && o.slurm) {
+    std::error_code ec;
+    fs::create_directories(p.dir + "/logs", ec);  // Slurm opens each task's log before it runs
+    err = files.stage(p.dir + "/array.sbatch", slurm_array_script(p.plan, p.dir, o.slurm_at_once));
+  }
+  if (err.empty()) err = files.commit();
+  if (!err.empty()) return fail(err);
+  if (!o.quiet) {
+    std::printf("wrote %s/manifest.txt: %ld runs, one swarmlab run command per line\n",
+                p.dir.c_str(), o.seeds);
+    std::printf("run them, for example:\n  parallel --joblog %s/joblog --resume-failed < %s/manifest.txt\n",
+                p.dir.c_str(), p.dir.c_str());
+    if (o.slurm) std::printf("  sbatch %s/array.sbatch\n", p.dir.c_str());
+    std::printf("then: swarmlab merge %s\n", p.dir.c_str());
+  }
+  return 0;
+}
+
+int merge_command(const MergeOptions& o) {
+  std::string dir = o.dir;
+  while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
+  return write_merge(dir, o);
+}
+
+}  // namespace swarmlab

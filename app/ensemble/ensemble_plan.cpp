@@ -1,0 +1,126 @@
+#include "ensemble/ensemble_plan.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "swarm/preset/ensemble_seed.h"
+
+#ifndef SWARMLAB_VERSION
+#define SWARMLAB_VERSION "unknown"
+#endif
+
+namespace swarmlab::ensemble {
+namespace {
+
+using json = nlohmann::json;
+
+/// A word the shell passes through unchanged: in single quotes, each ' written as '\''.
+std::string quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string number(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+}  // namespace
+
+std::string program_version() { return SWARMLAB_VERSION; }
+
+std::string preset_hash(const swarm::Preset& p) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : swarm::preset_to_json(p)) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::string plan_json(const EnsemblePlan& plan) {
+  const json j = {{"format", kPlanFormat},       {"preset_hash", plan.preset_hash},
+                  {"runs", plan.runs},           {"seed", plan.seed},
+                  {"perturbation", plan.perturbation}, {"swarmlab", plan.version}};
+  return j.dump(1) + "\n";
+}
+
+PlanRead parse_plan(const std::string& text) {
+  PlanRead out;
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || j.value("format", std::string()) != kPlanFormat) {
+    out.error = std::string("not a plan (\"format\": \"") + kPlanFormat + "\")";
+    return out;
+  }
+  EnsemblePlan p;
+  if (!j.contains("preset_hash") || !j["preset_hash"].is_string() || !j.contains("swarmlab") ||
+      !j["swarmlab"].is_string()) {
+    out.error = "preset_hash, swarmlab: missing or not text";
+    return out;
+  }
+  if (!j.contains("runs") || !j["runs"].is_number_integer() || j["runs"].get<long>() < 1) {
+    out.error = "runs: missing or not a whole number >= 1";
+    return out;
+  }
+  if (!j.contains("seed") || !j["seed"].is_number_unsigned()) {
+    out.error = "seed: missing or not a whole number >= 0";
+    return out;
+  }
+  if (!j.contains("perturbation") || !j["perturbation"].is_number()) {
+    out.error = "perturbation: missing or not a number";
+    return out;
+  }
+  p.preset_hash = j["preset_hash"];
+  p.version = j["swarmlab"];
+  p.runs = j["runs"];
+  p.seed = j["seed"];
+  p.perturbation = j["perturbation"];
+  out.plan = p;
+  return out;
+}
+
+std::string plan_path(const std::string& dir) { return dir + "/plan.json"; }
+std::string preset_path(const std::string& dir) { return dir + "/preset.json"; }
+std::string run_path(const std::string& dir, long index) {
+  return dir + "/runs/" + std::to_string(index) + ".json";
+}
+
+std::string run_command_line(const EnsemblePlan& plan, long index, const std::string& swarmlab,
+                             const std::string& dir) {
+  std::string line = quoted(swarmlab) + " run " + quoted(preset_path(dir)) + " --seed " +
+                     std::to_string(swarm::run_seed(plan.seed, std::uint64_t(index)));
+  if (plan.perturbation > 0) line += " --perturb " + number(plan.perturbation);
+  line += " --run-index " + std::to_string(index) + " --preset-hash " + plan.preset_hash +
+          " --record " + quoted(run_path(dir, index)) + " --quiet";
+  return line;
+}
+
+std::string manifest(const EnsemblePlan& plan, const std::string& swarmlab, const std::string& dir) {
+  std::string out;
+  for (long k = 0; k < plan.runs; ++k) out += run_command_line(plan, k, swarmlab, dir) + "\n";
+  return out;
+}
+
+std::string slurm_array_script(const EnsemblePlan& plan, const std::string& dir, long at_once) {
+  std::string array = "0-" + std::to_string(plan.runs - 1);
+  if (at_once > 0) array += "%" + std::to_string(at_once);
+  return "#!/bin/bash\n"
+         "# One run of the ensemble in " + dir + " per array task: task i runs line i + 1 of\n"
+         "# manifest.txt. Submit with: sbatch " + dir + "/array.sbatch\n"
+         "#SBATCH --job-name=swarmlab-ensemble\n"
+         "#SBATCH --array=" + array + "\n"
+         "#SBATCH --ntasks=1\n"
+         "#SBATCH --cpus-per-task=1\n"
+         "#SBATCH --output=" + dir + "/logs/%a.out\n"
+         "set -euo pipefail\n"
+         "mkdir -p " + quoted(dir + "/logs") + "\n"
+         "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + quoted(dir + "/manifest.txt") + ")\n"
+         "[ -n \"$line\" ] || { echo \"no line $((SLURM_ARRAY_TASK_ID + 1)) in the manifest\" >&2; exit 1; }\n"
+         "eval \"$line\"\n";
+}
+
+}  // namespace swarmlab::ensemble

@@ -1,0 +1,308 @@
+#include "ensemble/merge.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "swarm/measure/confidence.h"
+#include "swarm/measure/fit.h"
+
+namespace swarmlab::ensemble {
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+bool read_text(const std::string& path, std::string& out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  out = s.str();
+  return bool(in) || in.eof();
+}
+
+json interval_json(const swarm::MeanInterval& m) {
+  json j = {{"mean", m.mean}, {"sd", m.sd}, {"se", m.se}};
+  j["ci95"] = m.lo ? json::array({*m.lo, *m.hi}) : json(nullptr);
+  return j;
+}
+
+/// The pointwise mean and 95 % interval of runs' series of one length.
+struct Band {
+  std::vector<double> x;
+  std::vector<std::vector<double>> values;  // per point, one per run
+  json to_json() const {
+    json mean = json::array(), lo = json::array(), hi = json::array();
+    for (const auto& v : values) {
+      const swarm::MeanInterval m = swarm::mean_interval(v);
+      mean.push_back(m.mean);
+      lo.push_back(m.lo ? json(*m.lo) : json(nullptr));
+      hi.push_back(m.hi ? json(*m.hi) : json(nullptr));
+    }
+    return {{"mean", mean}, {"lo", lo}, {"hi", hi}};
+  }
+};
+
+/// The exponent of a power law fitted to the runs' mean stage values, for the runs picked.
+double pooled_exponent(const std::vector<std::vector<double>>& x_runs,
+                       const std::vector<std::vector<double>>& y_runs,
+                       const std::vector<std::size_t>& pick) {
+  const std::size_t stages = x_runs.front().size();
+  std::vector<double> x(stages, 0.0), y(stages, 0.0);
+  for (std::size_t r : pick)
+    for (std::size_t s = 0; s < stages; ++s) x[s] += x_runs[r][s], y[s] += y_runs[r][s];
+  const swarm::PowerLawFit f = swarm::fit_power_law(x, y);  // the common 1 / n cancels
+  return f.valid ? f.slope : NAN;
+}
+
+std::string format_interval(const json& q) {
+  char buf[160];
+  if (q["ci95"].is_array())
+    std::snprintf(buf, sizeof buf, "%13.6g  [%.6g, %.6g]", q["mean"].get<double>(),
+                  q["ci95"][0].get<double>(), q["ci95"][1].get<double>());
+  else
+    std::snprintf(buf, sizeof buf, "%13.6g  (one run: no interval)", q["mean"].get<double>());
+  return buf;
+}
+
+}  // namespace
+
+RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
+                  const std::function<void(const RunRecord&)>& each) {
+  RunScan scan;
+  std::error_code ec;
+  // Files in runs/ that no run of this plan writes.
+  for (const auto& entry : fs::directory_iterator(dir + "/runs", ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() < 6 || name.substr(name.size() - 5) != ".json") continue;
+    const std::string stem = name.substr(0, name.size() - 5);
+    const bool numeric = !stem.empty() && stem.find_first_not_of("0123456789") == std::string::npos &&
+                         stem.size() < 12 && (stem == "0" || stem[0] != '0');
+    if (!numeric || std::stol(stem) >= plan.runs)
+      scan.mixed += (scan.mixed.empty() ? "" : "; ") + ("runs/" + name) +
+                    ": not a run of this plan (runs 0 to " + std::to_string(plan.runs - 1) + ")";
+  }
+  for (long k = 0; k < plan.runs; ++k) {
+    const std::string path = run_path(dir, k);
+    std::string text;
+    if (!fs::exists(path, ec)) {
+      scan.missing.push_back(k);
+      continue;
+    }
+    if (!read_text(path, text)) {
+      scan.corrupted.push_back({k, "cannot be read"});
+      continue;
+    }
+    const RecordRead read = parse_record(text);
+    if (!read.record) {
+      scan.corrupted.push_back({k, read.error});
+      continue;
+    }
+    const RunRecord& r = *read.record;
+    std::string why;
+    if (r.id.preset_hash != plan.preset_hash)
+      why = "a run of another preset (hash " + r.id.preset_hash + ", the plan's " + plan.preset_hash + ")";
+    else if (r.id.version != plan.version)
+      why = "made by swarmlab " + r.id.version + ", the plan's is " + plan.version;
+    else if (r.id.index != k)
+      why = "holds run " + std::to_string(r.id.index);
+    if (!why.empty()) {
+      scan.mixed += (scan.mixed.empty() ? "" : "; ") + ("runs/" + std::to_string(k) + ".json: " + why);
+      continue;
+    }
+    scan.done.push_back(k);
+    if (!r.failure.empty()) {
+      scan.failed.push_back({k, r.failure});
+      continue;
+    }
+    if (each) each(r);
+  }
+  return scan;
+}
+
+MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
+  MergeReport out;
+  std::string text;
+  if (!read_text(plan_path(dir), text)) {
+    out.error = plan_path(dir) +
+                ": missing: not an ensemble folder (swarmlab plan or swarmlab ensemble makes one)";
+    return out;
+  }
+  const PlanRead plan = parse_plan(text);
+  if (!plan.plan) {
+    out.error = plan_path(dir) + ": " + plan.error;
+    return out;
+  }
+
+  // What the report needs, gathered run by run: nothing grows with a run's length.
+  std::vector<long> indices;
+  std::vector<std::uint64_t> seeds;
+  std::map<std::string, std::vector<double>> values;  // one per run, NAN where a run lacks it
+  std::map<std::string, std::vector<double>> errors;  // within-run se of P and T
+  std::vector<double> starts;
+  Band P_t, T_t;
+  std::vector<std::vector<double>> stage_V, stage_P, stage_T;
+  bool bands_agree = true;
+  const RunScan scan = scan_runs(dir, *plan.plan, [&](const RunRecord& r) {
+    const std::size_t n = indices.size();
+    indices.push_back(r.id.index);
+    seeds.push_back(r.id.seed);
+    starts.push_back(r.equilibration_start);
+    for (auto& [name, v] : values) v.push_back(NAN);
+    for (const auto& [name, v] : r.values) {
+      auto& column = values[name];
+      column.resize(n + 1, NAN);
+      column[n] = v.value;
+      if (v.se) {
+        auto& e = errors[name];
+        e.resize(n + 1, NAN);
+        e[n] = *v.se;
+      }
+    }
+    if (n == 0) {
+      P_t.x = T_t.x = r.t;
+      P_t.values.assign(r.t.size(), {});
+      T_t.values.assign(r.t.size(), {});
+    }
+    if (r.t.size() != P_t.x.size()) bands_agree = false;
+    for (std::size_t i = 0; bands_agree && i < r.t.size(); ++i) {
+      P_t.values[i].push_back(r.P[i]);
+      T_t.values[i].push_back(r.T[i]);
+    }
+    stage_V.push_back(r.stage_V);
+    stage_P.push_back(r.stage_P);
+    stage_T.push_back(r.stage_T);
+  });
+  if (!scan.mixed.empty()) {
+    out.error = "runs of different presets, versions or plans cannot be merged as one: " + scan.mixed;
+    return out;
+  }
+  if (indices.empty()) {
+    out.error = dir + ": no run has finished yet (" + std::to_string(scan.missing.size()) +
+                " missing, " + std::to_string(scan.corrupted.size()) + " corrupted, " +
+                std::to_string(scan.failed.size()) + " failed)";
+    return out;
+  }
+
+  json report = {{"format", "swarmlab ensemble report"},
+                 {"preset_hash", plan.plan->preset_hash},
+                 {"swarmlab", plan.plan->version},
+                 {"seed", plan.plan->seed},
+                 {"planned", plan.plan->runs},
+                 {"runs", indices.size()},
+                 {"confidence", 0.95},
+                 {"missing", scan.missing}};
+  json corrupted = json::array(), failed = json::array();
+  for (const auto& [k, why] : scan.corrupted) corrupted.push_back({{"index", k}, {"error", why}});
+  for (const auto& [k, why] : scan.failed) failed.push_back({{"index", k}, {"failure", why}});
+  report["corrupted"] = corrupted;
+  report["failed"] = failed;
+  report["equilibration_start"] = interval_json(swarm::mean_interval(starts));
+
+  json quantities = json::object();
+  std::string table;
+  char line[320];
+  std::snprintf(line, sizeof line, "%-14s %5s %13s  %-29s %11s %11s %7s\n", "quantity", "runs",
+                "mean", "95 % interval", "sd", "within se", "ratio");
+  table += line;
+  for (const auto& [name, column] : values) {
+    std::vector<double> v;
+    for (double x : column)
+      if (std::isfinite(x)) v.push_back(x);
+    const swarm::MeanInterval m = swarm::mean_interval(v);
+    json q = interval_json(m);
+    q["values"] = column;
+    q["runs"] = v.size();
+    if (m.lo && m.mean != 0)
+      q["runs_for_half_width"] = {{"relative", relative_half_width},
+                                  {"runs", swarm::runs_for_half_width(m.sd, relative_half_width * std::abs(m.mean))}};
+    double within = NAN;
+    if (const auto e = errors.find(name); e != errors.end()) {
+      double sum = 0;
+      std::size_t count = 0;
+      for (double se : e->second)
+        if (std::isfinite(se)) sum += se * se, ++count;
+      if (count > 0) {
+        within = std::sqrt(sum / double(count));
+        q["within_se"] = within;
+        // sd over runs against the rms within-run error: near 1 when the error bars are honest.
+        if (within > 0 && m.lo) q["spread_ratio"] = m.sd / within;
+      }
+    }
+    const std::string fit_prefix = "fit.";
+    if (name.compare(0, fit_prefix.size(), fit_prefix) == 0 && stage_V.front().size() >= 3) {
+      const std::string kind = name.substr(fit_prefix.size());  // P_V, T_V or P_T
+      const auto& x = kind == "P_T" ? stage_T : stage_V;
+      const auto& y = kind == "T_V" ? stage_T : stage_P;
+      bool same_stages = true;
+      for (std::size_t r = 0; r < x.size(); ++r)
+        same_stages = same_stages && x[r].size() == x[0].size() && y[r].size() == x[0].size();
+      if (same_stages) {
+        const auto b = swarm::bca_interval(x.size(), [&](const std::vector<std::size_t>& pick) {
+          return pooled_exponent(x, y, pick);
+        });
+        if (b) {
+          q["mean_of_run_fits"] = interval_json(m);
+          q["mean"] = b->estimate;
+          q["ci95"] = {b->lo, b->hi};
+          q["interval"] = "BCa bootstrap over whole runs, the fit to the runs' mean stages";
+        }
+      }
+    }
+    char within_text[32] = "", ratio_text[32] = "";
+    if (std::isfinite(within)) std::snprintf(within_text, sizeof within_text, "%11.4g", within);
+    if (q.contains("spread_ratio"))
+      std::snprintf(ratio_text, sizeof ratio_text, "%7.2f", q["spread_ratio"].get<double>());
+    std::snprintf(line, sizeof line, "%-14s %5zu %s %11.4g %11s %7s\n", name.c_str(), v.size(),
+                  format_interval(q).c_str(), m.sd, within_text, ratio_text);
+    table += line;
+    quantities[name] = q;
+  }
+  report["quantities"] = quantities;
+  json bands = json::object();
+  if (bands_agree && !P_t.x.empty())
+    bands["time"] = {{"t", P_t.x}, {"P", P_t.to_json()}, {"T", T_t.to_json()}};
+  if (!stage_V.front().empty()) {
+    Band sP, sT;
+    sP.x = stage_V.front();
+    sP.values.assign(sP.x.size(), {});
+    sT.values.assign(sP.x.size(), {});
+    bool agree = true;
+    for (std::size_t r = 0; r < stage_V.size(); ++r) {
+      if (stage_P[r].size() != sP.x.size()) agree = false;
+      for (std::size_t s = 0; agree && s < sP.x.size(); ++s)
+        sP.values[s].push_back(stage_P[r][s]), sT.values[s].push_back(stage_T[r][s]);
+    }
+    if (agree) bands["stages"] = {{"V", sP.x}, {"P", sP.to_json()}, {"T", sT.to_json()}};
+  }
+  report["bands"] = bands;
+  out.json = report.dump(1) + "\n";
+
+  // The per-run table, full precision.
+  out.csv = "index,seed";
+  for (const auto& [name, column] : values) out.csv += "," + name;
+  out.csv += "\n";
+  for (std::size_t r = 0; r < indices.size(); ++r) {
+    out.csv += std::to_string(indices[r]) + "," + std::to_string(seeds[r]);
+    for (const auto& [name, column] : values) {
+      char buf[40] = "";
+      if (std::isfinite(column[r])) std::snprintf(buf, sizeof buf, "%.17g", column[r]);
+      out.csv += std::string(",") + buf;
+    }
+    out.csv += "\n";
+  }
+  char head[200];
+  std::snprintf(head, sizeof head, "%zu of %ld runs merged (%zu missing, %zu corrupted, %zu failed)\n\n",
+                indices.size(), plan.plan->runs, scan.missing.size(), scan.corrupted.size(),
+                scan.failed.size());
+  out.table = head + table;
+  return out;
+}
+
+}  // namespace swarmlab::ensemble

@@ -1,0 +1,190 @@
+#include "ensemble/run_record.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "swarm/measure/wall_time_average.h"
+
+namespace swarmlab::ensemble {
+namespace {
+
+using json = nlohmann::json;
+
+void put(RunRecord& r, const std::string& name, double value, std::optional<double> se = {}) {
+  if (std::isfinite(value)) r.values[name] = {value, se};
+}
+
+/// The wall intervals in at most kSeriesPoints stretches, each read as one meter would.
+void fill_series(RunRecord& r, const std::vector<swarm::Sample>& samples) {
+  const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(samples);
+  const std::size_t n = intervals.size();
+  const std::size_t points = std::min(n, kSeriesPoints);
+  for (std::size_t k = 0; k < points; ++k) {
+    const std::size_t first = n * k / points, last = n * (k + 1) / points;
+    const swarm::WallReading w = swarm::wall_average(intervals, first, last);
+    r.t.push_back(intervals[last - 1].t_end);
+    r.P.push_back(w.P);
+    r.T.push_back(w.T);
+    r.R.push_back(samples[last].R);
+  }
+}
+
+template <class T>
+bool read_number(const json& j, const char* key, T& out, std::string& error) {
+  const auto it = j.find(key);
+  if (it == j.end() || !it->is_number()) {
+    error = std::string(key) + ": missing or not a number";
+    return false;
+  }
+  out = it->get<T>();
+  return true;
+}
+
+bool read_array(const json& j, const char* key, std::vector<double>& out, std::string& error) {
+  const auto it = j.find(key);
+  if (it == j.end() || !it->is_array()) {
+    error = std::string(key) + ": missing or not an array";
+    return false;
+  }
+  for (const json& x : *it) {
+    if (!x.is_number()) {
+      error = std::string(key) + ": holds something other than a number";
+      return false;
+    }
+    out.push_back(x.get<double>());
+  }
+  return true;
+}
+
+}  // namespace
+
+RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
+  RunRecord r;
+  r.id = id;
+  r.failure = run.failure();
+  const swarm::RunSummary s = run.summary();
+  put(r, "energy_drift", s.energy_drift);
+  put(r, "wall_hits", double(s.wall_hits));
+  const std::vector<swarm::Sample>& samples = run.samples();
+  if (run.plan().engine.container_radius && run.stages().empty()) {
+    const swarm::WallTimeAverages a = swarm::wall_time_averages(swarm::wall_intervals(samples));
+    r.equilibration_start = a.start;
+    if (a.P) put(r, "P", a.P->mean, a.P->se);
+    if (a.T) put(r, "T", a.T->mean, a.T->se);
+  }
+  if (samples.size() > 1) fill_series(r, samples);
+  for (std::size_t k = 0; k < run.stages().size(); ++k) {
+    const swarm::Stage& st = run.stages()[k];
+    const std::string stage = "stage" + std::to_string(k + 1);
+    put(r, stage + ".P", st.P);
+    put(r, stage + ".T", st.T);
+    r.stage_V.push_back(st.V);
+    r.stage_P.push_back(st.P);
+    r.stage_T.push_back(st.T);
+  }
+  if (!run.stages().empty()) {
+    const swarm::StageFits f = run.fits();
+    if (f.P_V.valid) put(r, "fit.P_V", f.P_V.slope);
+    if (f.T_V.valid) put(r, "fit.T_V", f.T_V.slope);
+    if (f.P_T.valid) put(r, "fit.P_T", f.P_T.slope);
+  }
+  return r;
+}
+
+std::string record_json(const RunRecord& r) {
+  json values = json::object();
+  for (const auto& [name, v] : r.values) {
+    json x = {{"value", v.value}};
+    if (v.se) x["se"] = *v.se;
+    values[name] = x;
+  }
+  json j = {{"format", kRunFormat},
+            {"format_version", kRunFormatVersion},
+            {"swarmlab", r.id.version},
+            {"preset_hash", r.id.preset_hash},
+            {"index", r.id.index},
+            {"seed", r.id.seed},
+            {"perturbation", r.id.perturbation},
+            {"failure", r.failure},
+            {"equilibration_start", r.equilibration_start},
+            {"values", values},
+            {"series", {{"t", r.t}, {"P", r.P}, {"T", r.T}, {"R", r.R}}},
+            {"stages", {{"V", r.stage_V}, {"P", r.stage_P}, {"T", r.stage_T}}}};
+  return j.dump() + "\n";
+}
+
+RecordRead parse_record(const std::string& text) {
+  RecordRead out;
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) {
+    out.error = "not a complete JSON object (cut short or corrupted)";
+    return out;
+  }
+  if (j.value("format", std::string()) != kRunFormat) {
+    out.error = std::string("format: not \"") + kRunFormat + "\"";
+    return out;
+  }
+  RunRecord r;
+  std::string& e = out.error;
+  int format_version = 0;
+  if (!read_number(j, "format_version", format_version, e)) return out;
+  if (format_version != kRunFormatVersion) {
+    e = "format_version: " + std::to_string(format_version) + ", this swarmlab reads " +
+        std::to_string(kRunFormatVersion);
+    return out;
+  }
+  if (!j.contains("swarmlab") || !j["swarmlab"].is_string() || !j.contains("preset_hash") ||
+      !j["preset_hash"].is_string() || !j.contains("failure") || !j["failure"].is_string()) {
+    e = "swarmlab, preset_hash, failure: missing or not text";
+    return out;
+  }
+  r.id.version = j["swarmlab"];
+  r.id.preset_hash = j["preset_hash"];
+  r.failure = j["failure"];
+  if (!j.contains("seed") || !j["seed"].is_number_unsigned()) {
+    e = "seed: missing or not a whole number >= 0";
+    return out;
+  }
+  r.id.seed = j["seed"].get<std::uint64_t>();
+  if (!read_number(j, "index", r.id.index, e) || !read_number(j, "perturbation", r.id.perturbation, e) ||
+      !read_number(j, "equilibration_start", r.equilibration_start, e))
+    return out;
+  const auto values = j.find("values");
+  if (values == j.end() || !values->is_object()) {
+    e = "values: missing or not an object";
+    return out;
+  }
+  for (const auto& [name, v] : values->items()) {
+    RunValue x;
+    if (!v.is_object() || !read_number(v, "value", x.value, e)) {
+      e = "values." + name + ": " + (e.empty() ? "not an object" : e);
+      return out;
+    }
+    if (v.contains("se")) {
+      double se = 0;
+      if (!read_number(v, "se", se, e)) return out;
+      x.se = se;
+    }
+    r.values[name] = x;
+  }
+  const auto series = j.find("series");
+  const auto stages = j.find("stages");
+  if (series == j.end() || !series->is_object() || stages == j.end() || !stages->is_object()) {
+    e = "series, stages: missing or not objects";
+    return out;
+  }
+  if (!read_array(*series, "t", r.t, e) || !read_array(*series, "P", r.P, e) ||
+      !read_array(*series, "T", r.T, e) || !read_array(*series, "R", r.R, e) ||
+      !read_array(*stages, "V", r.stage_V, e) || !read_array(*stages, "P", r.stage_P, e) ||
+      !read_array(*stages, "T", r.stage_T, e))
+    return out;
+  if (r.P.size() != r.t.size() || r.T.size() != r.t.size() || r.R.size() != r.t.size() ||
+      r.stage_P.size() != r.stage_V.size() || r.stage_T.size() != r.stage_V.size()) {
+    e = "series, stages: arrays of different lengths";
+    return out;
+  }
+  out.record = std::move(r);
+  return out;
+}
+
+}  // namespace swarmlab::ensemble

@@ -1,0 +1,60 @@
+#pragma once
+// One run of an ensemble, written whole to DIR/runs/<k>.json by `swarmlab run --record` (and by
+// `swarmlab ensemble`): who it is (index, seed, preset hash, program version), the numbers the
+// merge compares across runs, each with its within-run error where it has one, and the wall's
+// P(t), T(t) and the stages for the merge's bands. Small and of one size whatever the run's
+// length, so that a merge of thousands of runs reads little.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "swarm/run/run.h"
+
+namespace swarmlab::ensemble {
+
+inline constexpr const char* kRunFormat = "swarmlab ensemble run";
+inline constexpr int kRunFormatVersion = 1;
+/// The P(t), T(t) series hold at most this many points, each the wall average of a stretch
+/// of consecutive samples (exact: impulses and hits add up).
+inline constexpr std::size_t kSeriesPoints = 200;
+
+/// A number one run gives, and its error within the run (blocking) when it is a time average.
+struct RunValue {
+  double value = 0;
+  std::optional<double> se;
+};
+
+struct RunIdentity {
+  long index = 0;
+  std::uint64_t seed = 0;
+  std::string preset_hash;
+  std::string version;  ///< swarmlab's, which decides the bits
+  double perturbation = 0;
+};
+
+struct RunRecord {
+  RunIdentity id;
+  std::string failure;  ///< "" for a finished run; the reason a run stopped otherwise
+  double equilibration_start = 0;  ///< time from which P and T are averaged
+  /// "P", "T" (time averages after the equilibration start), "energy_drift", "wall_hits",
+  /// and for expansions "stage<k>.P", "stage<k>.T" (k from 1) and "fit.P_V", "fit.T_V",
+  /// "fit.P_T" (each run's fitted exponent).
+  std::map<std::string, RunValue> values;
+  std::vector<double> t, P, T, R;         ///< the wall series, at most kSeriesPoints
+  std::vector<double> stage_V, stage_P, stage_T;  ///< expansions: one per stage
+};
+
+/// The record of a finished (or failed) run.
+RunRecord record_of(const RunIdentity& id, swarm::Run& run);
+std::string record_json(const RunRecord& r);
+
+struct RecordRead {
+  std::optional<RunRecord> record;
+  std::string error;  ///< what is wrong with the text, naming the key
+};
+RecordRead parse_record(const std::string& text);
+
+}  // namespace swarmlab::ensemble
