@@ -180,7 +180,9 @@ int ensemble_command(const EnsembleOptions& o) {
     }
   };
   std::vector<std::thread> pool;
-  for (int j = 0; j < std::min<long>(jobs, long(todo.size())); ++j) pool.emplace_back(worker);
+  if (jobs == 1) worker();  // no second thread (the browser's and node's wasm have none)
+  for (int j = 0; jobs > 1 && j < std::min<long>(jobs, long(todo.size())); ++j)
+    pool.emplace_back(worker);
   for (auto& t : pool) t.join();
   bar.finish();
   if (!first_error.empty()) return fail(first_error);

@@ -26,28 +26,31 @@ std::optional<BlockingError> blocking_error(const std::vector<double>& values) {
   for (double v : values) all_squares += (v - out.mean) * (v - out.mean);
   out.naive_se = std::sqrt(all_squares / double(n - 1) / double(n));
 
-  int d = 0;
-  while ((std::size_t(2) << d) <= n) ++d;  // 2^d <= n < 2^(d+1)
-  std::vector<double> x(values.end() - (std::ptrdiff_t(1) << d), values.end());
-  out.used = long(x.size());
-  double mu = 0;
-  for (double v : x) mu += v;
-  mu /= double(x.size());
-  // Level i holds 2^(d - i) values: its variance s[i] (over n) and lag-1 covariance g[i].
-  std::vector<double> s(std::size_t(d), 0.0), term(std::size_t(d), 0.0);
-  for (int i = 0; i < d; ++i) {
+  // Level i holds m_i = floor(m_(i-1) / 2) values, neighbours averaged in pairs (a value
+  // left over at the end of a level is dropped): its variance s[i] (over m_i, about its own
+  // mean) and the chi-square term of its lag-1 covariance.
+  std::vector<double> x = values;
+  std::vector<double> s, term;
+  std::vector<std::size_t> size;
+  while (x.size() >= 2) {
     const std::size_t m = x.size();
+    double mu = 0;
+    for (double v : x) mu += v;
+    mu /= double(m);
     double var = 0, cov = 0;
     for (std::size_t t = 0; t < m; ++t) var += (x[t] - mu) * (x[t] - mu);
     for (std::size_t t = 0; t + 1 < m; ++t) cov += (x[t] - mu) * (x[t + 1] - mu);
     var /= double(m);
     cov /= double(m);
-    s[std::size_t(i)] = var;
+    s.push_back(var);
+    size.push_back(m);
     // Uncorrelated pairs: sqrt(m) cov / var is about standard normal, its square chi-square(1).
-    if (var > 0) term[std::size_t(i)] = double(m) * (cov / var) * (cov / var);
+    term.push_back(var > 0 ? double(m) * (cov / var) * (cov / var) : 0.0);
     for (std::size_t t = 0; t < m / 2; ++t) x[t] = 0.5 * (x[2 * t] + x[2 * t + 1]);
     x.resize(m / 2);
   }
+  const int d = int(s.size());
+  out.used = long(n);
   // M_j = sum of the terms of levels j..d-1, chi-square(d - j) when none is correlated.
   std::vector<double> tail(std::size_t(d) + 1, 0.0);
   for (int i = d - 1; i >= 0; --i) tail[std::size_t(i)] = tail[std::size_t(i) + 1] + term[std::size_t(i)];
@@ -59,8 +62,8 @@ std::optional<BlockingError> blocking_error(const std::vector<double>& values) {
       out.plateau = true;
       break;
     }
-  const double m = double(std::size_t(1) << (d - out.level));
-  out.se = std::sqrt(s[std::size_t(out.level)] * m / (m - 1) / m);
+  const double m = double(size[std::size_t(out.level)]);
+  out.se = std::sqrt(s[std::size_t(out.level)] / (m - 1));
   out.effective_count = out.se > 0 ? double(n) * (out.naive_se / out.se) * (out.naive_se / out.se)
                                    : double(n);
   return out;

@@ -95,11 +95,11 @@ TEST_CASE("blocking: short and degenerate series") {
   REQUIRE(constant);
   CHECK(constant->mean == 2.5);
   CHECK(constant->se == 0);
-  // 5 values: blocking uses the last 4, the mean is over all five.
+  // 5 values: an odd level drops its last value when halved; the mean is over all five.
   const auto five = blocking_error({10, 1, 2, 3, 4});
   REQUIRE(five);
   CHECK(five->mean == 4);
-  CHECK(five->used == 4);
+  CHECK(five->used == 5);
 }
 
 TEST_CASE("blocking a ratio: a wall temperature's error from its hits' energies") {

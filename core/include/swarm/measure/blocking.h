@@ -25,13 +25,12 @@ struct BlockingError {
   /// The values that count as independent, n (naive_se / se)^2.
   double effective_count = 0;
   int level = 0;      ///< times the series was halved to reach the chosen level
-  long used = 0;      ///< values used: the last 2^k of them for the largest such 2^k <= n
+  long used = 0;      ///< values used: all of them
   bool plateau = true;  ///< false: no level passed the test (the series is too short)
 };
 
-/// The blocking error of the mean of `values` (at least 4 of them; none otherwise). Blocking
-/// needs a power of two, so the first n - 2^floor(log2 n) values are left out of se (the
-/// mean is over all of them).
+/// The blocking error of the mean of `values` (at least 4 of them; none otherwise). A level
+/// of odd length drops its last value when it is halved.
 std::optional<BlockingError> blocking_error(const std::vector<double>& values);
 
 /// The same for a ratio of sums, sum(numerators) / sum(weights) (a wall temperature: the hits'
