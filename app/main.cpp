@@ -59,6 +59,8 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--png", run.png, "With --plots: a PNG of each figure too (needs rsvg-convert)")
       ->needs(plots);
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress bar and no table on the terminal");
+  run_cmd->add_option("--threads", run.threads, "Engine threads, 1 or 2 (the results are the same)")
+      ->check(CLI::Range(1, 2));
   CLI::Option* run_seed = run_cmd->add_option(
       "--seed", run.seed,
       "Draw the generated swarm from this seed instead of particles.seed (an ensemble's run)");
@@ -108,6 +110,10 @@ int main(int argc, char** argv) {
   }
   ensemble_cmd->add_option("--jobs,-j", ensemble.jobs, "Runs at once (default: every core)")
       ->check(CLI::Range(1, 4096));
+  ensemble_cmd
+      ->add_option("--threads", ensemble.threads,
+                   "Engine threads per run, 1 or 2 (default: 1 when runs share the cores)")
+      ->check(CLI::Range(1, 2));
   plan_cmd->add_flag("--slurm", plan.slurm, "Also write DIR/array.sbatch, a Slurm job array");
   plan_cmd->add_option("--at-once", plan.slurm_at_once, "With --slurm: at most this many tasks at once")
       ->check(CLI::NonNegativeNumber);
@@ -130,7 +136,8 @@ int main(int argc, char** argv) {
   CLI::App* report_cmd = app.add_subcommand(
       "report",
       "Draw saved runs (RESULT.json from run --out): one run gives its figures, several are "
-      "overlaid stage by stage (T-V, P-V, P-T)");
+      "overlaid stage by stage (T-V, P-V, P-T); an ensemble's REPORT.json (merge) gives its "
+      "bands");
   report_cmd->add_option("results", report.result_paths, "RESULT.json files")->required();
   report_cmd->add_option("--plots", report.plots_dir, "Directory for the figures (SVG + CSV)")
       ->required();

@@ -15,6 +15,7 @@ struct RunOptions {
   std::string plots_dir;  // figures (SVG + CSV) go here, empty: none
   bool png = false;       // also render each figure as PNG
   bool quiet = false;
+  int threads = 0;        // engine threads; 0: the default (swarm::default_threads)
   // One run of an ensemble (a manifest's line): the seed its start is drawn from, the
   // perturbation of listed particles, its index and the plan's preset hash, and the record.
   std::optional<std::uint64_t> seed;
@@ -32,6 +33,7 @@ struct EnsembleOptions {
   std::uint64_t seed = 1;  // the master seed
   double perturb = 0;
   int jobs = 0;  // runs at once; 0: every hardware thread
+  int threads = 0;  // engine threads per run; 0: 1 when runs share the cores, else the default
   bool quiet = false;
   // plan only
   bool slurm = false;

@@ -156,7 +156,7 @@ int ensemble_command(const EnsembleOptions& o) {
   std::string first_error;
   ProgressBar bar("runs", !o.quiet);
   // One engine thread per run when runs share the cores: the bits do not depend on it.
-  const int threads = jobs > 1 ? 1 : swarm::default_threads();
+  const int threads = o.threads > 0 ? o.threads : jobs > 1 ? 1 : swarm::default_threads();
   auto worker = [&] {
     for (;;) {
       const std::size_t i = next++;

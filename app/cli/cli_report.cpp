@@ -1,14 +1,44 @@
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 #include "cli/cli.h"
+#include "report/ensemble_figures.h"
 #include "report/plot_files.h"
 #include "report/report.h"
 
 namespace swarmlab {
 
+namespace {
+
+/// The file's text when it is an ensemble report (swarmlab merge), else "".
+std::string ensemble_report_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  return text.find(report::kEnsembleReportFormat) != std::string::npos &&
+                 text.find("\"format\"") != std::string::npos
+             ? text
+             : std::string();
+}
+
+}  // namespace
+
 int report_command(const ReportOptions& options) {
+  std::vector<report::NamedFigure> ensemble;
+  if (options.result_paths.size() == 1)
+    if (const std::string text = ensemble_report_text(options.result_paths.front()); !text.empty()) {
+      report::EnsembleFigures e = report::ensemble_figures(text);
+      if (!e.error.empty()) {
+        std::fprintf(stderr, "error: %s: %s\n", options.result_paths.front().c_str(), e.error.c_str());
+        return 1;
+      }
+      ensemble = std::move(e.figures);
+    }
   std::vector<report::RunRecord> runs;
   for (const std::string& path : options.result_paths) {
+    if (!ensemble.empty()) break;
     report::RecordRead read = report::read_result_file(path);
     if (!read.record) {
       std::fprintf(stderr, "error: %s\n", read.error.c_str());
@@ -24,7 +54,9 @@ int report_command(const ReportOptions& options) {
   }
   // One run: everything it has. Several: their stages overlaid, the paper's Fig. 5.
   const std::vector<report::NamedFigure> figures =
-      runs.size() == 1 ? report::run_figures(runs.front()) : report::overlay_figures(runs);
+      !ensemble.empty()   ? ensemble
+      : runs.size() == 1 ? report::run_figures(runs.front())
+                         : report::overlay_figures(runs);
   if (figures.empty()) {
     std::fprintf(stderr, "error: nothing to overlay: fewer than one of these runs has stages\n");
     return 1;

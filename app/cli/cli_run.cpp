@@ -149,7 +149,7 @@ int run_command(const RunOptions& options) {
         preset,
         {options.run_index, *options.seed, ensemble::preset_hash(*parsed.preset),
          ensemble::program_version(), options.perturb},
-        options.record_path, swarm::default_threads());
+        options.record_path, options.threads > 0 ? options.threads : swarm::default_threads());
     if (!err.empty()) {
       std::fprintf(stderr, "error: %s\n", err.c_str());
       return 1;
@@ -165,7 +165,9 @@ int run_command(const RunOptions& options) {
     return 1;
   }
   try {
-    swarm::SideBySide runs(swarm::initial_system(preset), swarm::run_plan(preset), preset.compare);
+    swarm::RunPlan plan = swarm::run_plan(preset);
+    if (options.threads > 0) plan.engine.threads = options.threads;
+    swarm::SideBySide runs(swarm::initial_system(preset), plan, preset.compare);
     swarm::Run& run = runs.primary();
     ProgressBar bar("running", !options.quiet);
     runs.finish([&bar](double done) { bar.update(done); });

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "report/ensemble_figures.h"
 #include "swarm/measure/confidence.h"
 #include "swarm/measure/fit.h"
 
@@ -39,8 +40,15 @@ struct Band {
   std::vector<std::vector<double>> values;  // per point, one per run
   json to_json() const {
     json mean = json::array(), lo = json::array(), hi = json::array();
-    for (const auto& v : values) {
+    for (const auto& all : values) {
+      std::vector<double> v;
+      for (double x : all)
+        if (std::isfinite(x)) v.push_back(x);
       const swarm::MeanInterval m = swarm::mean_interval(v);
+      if (v.empty()) {
+        mean.push_back(nullptr), lo.push_back(nullptr), hi.push_back(nullptr);
+        continue;
+      }
       mean.push_back(m.mean);
       lo.push_back(m.lo ? json(*m.lo) : json(nullptr));
       hi.push_back(m.hi ? json(*m.hi) : json(nullptr));
@@ -190,7 +198,7 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
     return out;
   }
 
-  json report = {{"format", "swarmlab ensemble report"},
+  json report = {{"format", report::kEnsembleReportFormat},
                  {"preset_hash", plan.plan->preset_hash},
                  {"swarmlab", plan.plan->version},
                  {"seed", plan.plan->seed},

@@ -24,7 +24,7 @@ void fill_series(RunRecord& r, const std::vector<swarm::Sample>& samples) {
     const swarm::WallReading w = swarm::wall_average(intervals, first, last);
     r.t.push_back(intervals[last - 1].t_end);
     r.P.push_back(w.P);
-    r.T.push_back(w.T);
+    r.T.push_back(w.hits > 0 ? w.T : NAN);  // no hits: no temperature (null in the file)
     r.R.push_back(samples[last].R);
   }
 }
@@ -47,6 +47,10 @@ bool read_array(const json& j, const char* key, std::vector<double>& out, std::s
     return false;
   }
   for (const json& x : *it) {
+    if (x.is_null()) {  // a point without a value (a stretch without hits has no T)
+      out.push_back(NAN);
+      continue;
+    }
     if (!x.is_number()) {
       error = std::string(key) + ": holds something other than a number";
       return false;

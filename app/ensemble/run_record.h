@@ -43,7 +43,8 @@ struct RunRecord {
   /// and for expansions "stage<k>.P", "stage<k>.T" (k from 1) and "fit.P_V", "fit.T_V",
   /// "fit.P_T" (each run's fitted exponent).
   std::map<std::string, RunValue> values;
-  std::vector<double> t, P, T, R;         ///< the wall series, at most kSeriesPoints
+  /// The wall series, at most kSeriesPoints; T is NAN (null in the file) where nothing hit.
+  std::vector<double> t, P, T, R;
   std::vector<double> stage_V, stage_P, stage_T;  ///< expansions: one per stage
 };
 

@@ -28,6 +28,10 @@ else
   bad "ensemble failed"
 fi
 
+# The report draws the ensemble's bands.
+"$bin" report "$work/here/report.json" --plots "$work/here/figures" --quiet &&
+  grep -q "95 % interval over runs" "$work/here/figures/ensemble-time.svg" && ok || bad "report of an ensemble"
+
 # The same runs from a manifest: each line a plain swarmlab run, the same bits as the ensemble.
 same_runs() {  # DIR: every runs/<k>.json equals the ensemble's, byte for byte
   for k in 0 1 2 3 4 5; do cmp -s "$work/here/runs/$k.json" "$1/runs/$k.json" || return 1; done
