@@ -95,9 +95,11 @@ int main(int argc, char** argv) {
       "Write the runs of an ensemble as a manifest of swarmlab run commands for GNU parallel or "
       "a Slurm array, without running them");
   for (auto [cmd, o] : {std::pair{ensemble_cmd, &ensemble}, std::pair{plan_cmd, &plan}}) {
-    cmd->add_option("preset", o->preset_path, "Preset file (JSON)")->required();
-    cmd->add_option("--seeds", o->seeds, "How many independent runs")
-        ->required()
+    cmd->add_option("preset", o->preset_path,
+                    "Preset file (JSON), or a sweep over some of a preset's keys (README)")
+        ->required();
+    cmd->add_option("--seeds", o->seeds,
+                    "How many independent runs (per sweep point; a sweep may give its own)")
         ->check(CLI::Range(1L, 1000000L));
     cmd->add_option("--out", o->dir, "The ensemble's folder (plan.json, preset.json, runs/)")
         ->required();

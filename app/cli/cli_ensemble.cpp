@@ -14,6 +14,7 @@
 #include "ensemble/ensemble_member.h"
 #include "ensemble/ensemble_plan.h"
 #include "ensemble/merge.h"
+#include "ensemble/sweep.h"
 #include "files/atomic_file.h"
 #include "files/preset_file.h"
 #include "swarm/preset/ensemble_seed.h"
@@ -36,55 +37,90 @@ std::string read_text(const std::string& path) {
   return s.str();
 }
 
-/// The ensemble's folder made or checked, its plan and preset written: "" or why not.
+/// The ensemble's folder made or checked, its plan and presets written: "" or why not.
 struct Prepared {
   std::string error;
-  swarm::Preset preset;
+  std::vector<swarm::Preset> presets;  // one per point
   EnsemblePlan plan;
   std::string dir;  // absolute
 };
 
 Prepared prepare(const EnsembleOptions& o, int jobs) {
   Prepared out;
-  const swarm::PresetParse parsed = read_preset_file(o.preset_path);
-  if (!parsed.preset) {
-    out.error = parsed.error;
+  std::ifstream in(o.preset_path, std::ios::binary);
+  if (!in) {
+    out.error = o.preset_path + ": cannot open the file";
     return out;
   }
-  out.preset = *parsed.preset;
-  // Run 0's start says whether the preset can be seeded at all (listed particles need
-  // --perturb; a perturbed particle may leave the container).
-  if (const swarm::SeededPreset first =
-          swarm::with_seed(out.preset, swarm::run_seed(o.seed, 0), o.perturb);
-      !first.preset) {
-    out.error = o.preset_path + ": " + first.error;
+  std::ostringstream text;
+  text << in.rdbuf();
+  long seeds = o.seeds;
+  std::vector<PlanPoint> points;
+  if (is_sweep(text.str())) {
+    SweepRead sweep = read_sweep(text.str(), o.preset_path);
+    if (!sweep.sweep) {
+      out.error = o.preset_path + ": " + sweep.error;
+      return out;
+    }
+    if (seeds == 0) seeds = sweep.sweep->seeds.value_or(0);
+    for (SweepPoint& p : sweep.sweep->points) {
+      points.push_back({p.values, preset_hash(p.preset)});
+      out.presets.push_back(std::move(p.preset));
+    }
+  } else {
+    const swarm::PresetParse parsed = read_preset_file(o.preset_path);
+    if (!parsed.preset) {
+      out.error = parsed.error;
+      return out;
+    }
+    points.push_back({"{}", preset_hash(*parsed.preset)});
+    out.presets.push_back(*parsed.preset);
+  }
+  if (seeds < 1) {
+    out.error = "--seeds: how many runs (per point) is missing: give --seeds N, or \"seeds\" in the sweep";
     return out;
   }
-  const swarm::ResourceEstimate cost = swarm::estimate_resources(out.preset);
+  out.plan = {points, seeds, o.seed, o.perturb, program_version()};
+  double particle_steps = 0, memory = 0;
+  for (std::size_t p = 0; p < out.presets.size(); ++p) {
+    // Run 0's start says whether the preset can be seeded at all (listed particles need
+    // --perturb; a perturbed particle may leave the container).
+    if (const swarm::SeededPreset first =
+            swarm::with_seed(out.presets[p], swarm::run_seed(o.seed, 0), o.perturb);
+        !first.preset) {
+      out.error = o.preset_path + ": " +
+                  (points.size() > 1 ? "point " + points[p].values + ": " : std::string()) +
+                  first.error;
+      return out;
+    }
+    const swarm::ResourceEstimate cost = swarm::estimate_resources(out.presets[p]);
+    particle_steps += cost.particle_steps * double(seeds);
+    memory = std::max(memory, cost.memory_bytes());
+  }
   const swarm::ResourceLimits limits;
   // The runs share this machine's budget when it runs them; a plan's runs go elsewhere.
   const double budget = limits.particle_steps * std::max(1, jobs);
-  if (jobs > 0 && cost.particle_steps * double(o.seeds) > budget) {
+  if (jobs > 0 && particle_steps > budget) {
     char buf[240];
     std::snprintf(buf, sizeof buf,
-                  "--seeds: %ld runs x %.3g particle-steps = %.3g (limit %.3g with %d jobs here); "
+                  "--seeds: %ld runs need %.3g particle-steps (limit %.3g with %d jobs here); "
                   "use swarmlab plan to run them on more machines",
-                  o.seeds, cost.particle_steps, cost.particle_steps * double(o.seeds), budget, jobs);
+                  out.plan.runs(), particle_steps, budget, jobs);
     out.error = buf;
     return out;
   }
-  if (jobs > 0 && cost.memory_bytes() * jobs > limits.memory_bytes) {
+  if (jobs > 0 && memory * jobs > limits.memory_bytes) {
     char buf[200];
     std::snprintf(buf, sizeof buf, "--jobs: %d runs at once need ~%.3g GB (limit %.3g GB)", jobs,
-                  cost.memory_bytes() * jobs / 1e9, limits.memory_bytes / 1e9);
+                  memory * jobs / 1e9, limits.memory_bytes / 1e9);
     out.error = buf;
     return out;
   }
-  out.plan = {preset_hash(out.preset), o.seeds, o.seed, o.perturb, program_version()};
   std::error_code ec;
   out.dir = fs::absolute(o.dir, ec).lexically_normal().string();
   if (!out.dir.empty() && out.dir.back() == '/') out.dir.pop_back();
   fs::create_directories(out.dir + "/runs", ec);
+  if (!ec && points.size() > 1) fs::create_directories(out.dir + "/points", ec);
   if (ec) {
     out.error = o.dir + ": cannot make the folder: " + ec.message();
     return out;
@@ -96,9 +132,12 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
       out.error = plan_path(out.dir) + ": " + old.error;
       return out;
     }
+    bool same_points = old.plan->points.size() == p.points.size();
+    for (std::size_t i = 0; same_points && i < p.points.size(); ++i)
+      same_points = old.plan->points[i].preset_hash == p.points[i].preset_hash;
     std::string differs;
-    if (old.plan->preset_hash != p.preset_hash) differs = "another preset";
-    else if (old.plan->runs != p.runs) differs = std::to_string(old.plan->runs) + " seeds";
+    if (!same_points) differs = "another preset or sweep";
+    else if (old.plan->seeds != p.seeds) differs = std::to_string(old.plan->seeds) + " seeds";
     else if (old.plan->seed != p.seed) differs = "master seed " + std::to_string(old.plan->seed);
     else if (old.plan->perturbation != p.perturbation) differs = "another --perturb";
     else if (old.plan->version != p.version) differs = "runs by swarmlab " + old.plan->version;
@@ -108,7 +147,10 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
       return out;
     }
   }
-  std::string err = write_file_atomically(preset_path(out.dir), swarm::preset_to_json(out.preset));
+  std::string err;
+  for (std::size_t p = 0; err.empty() && p < out.presets.size(); ++p)
+    err = write_file_atomically(preset_path(out.dir, out.plan, long(p)),
+                                swarm::preset_to_json(out.presets[p]));
   if (err.empty()) err = write_file_atomically(plan_path(out.dir), plan_json(out.plan));
   out.error = err;
   return out;
@@ -148,8 +190,8 @@ int ensemble_command(const EnsembleOptions& o) {
   }
   std::sort(todo.begin(), todo.end());
   if (!o.quiet && !scan.done.empty())
-    std::fprintf(stderr, "%zu of %ld runs already done in %s\n", scan.done.size(), o.seeds,
-                 o.dir.c_str());
+    std::fprintf(stderr, "%zu of %ld runs already done in %s\n", scan.done.size(),
+                 p.plan.runs(), o.dir.c_str());
 
   std::atomic<std::size_t> next{0}, finished{0};
   std::mutex lock;
@@ -162,13 +204,16 @@ int ensemble_command(const EnsembleOptions& o) {
       const std::size_t i = next++;
       if (i >= todo.size()) return;
       const long k = todo[i];
-      const std::uint64_t seed = swarm::run_seed(p.plan.seed, std::uint64_t(k));
-      const swarm::SeededPreset seeded = swarm::with_seed(p.preset, seed, p.plan.perturbation);
+      const std::size_t point = std::size_t(p.plan.point_of(k));
+      const std::uint64_t seed = swarm::run_seed(p.plan.seed, std::uint64_t(p.plan.seed_index_of(k)));
+      const swarm::SeededPreset seeded =
+          swarm::with_seed(p.presets[point], seed, p.plan.perturbation);
       std::string err = seeded.error;
       if (err.empty()) {
         try {
-          err = run_member(*seeded.preset, {k, seed, p.plan.preset_hash, p.plan.version,
-                                            p.plan.perturbation},
+          err = run_member(*seeded.preset,
+                           {k, seed, p.plan.points[point].preset_hash, p.plan.version,
+                            p.plan.perturbation},
                            run_path(p.dir, k), threads);
         } catch (const std::exception& e) {
           err = e.what();
@@ -205,8 +250,9 @@ int plan_command(const EnsembleOptions& o) {
   if (err.empty()) err = files.commit();
   if (!err.empty()) return fail(err);
   if (!o.quiet) {
-    std::printf("wrote %s/manifest.txt: %ld runs, one swarmlab run command per line\n",
-                p.dir.c_str(), o.seeds);
+    std::printf("wrote %s/manifest.txt: %ld runs (%zu points x %ld seeds), one swarmlab run "
+                "command per line\n",
+                p.dir.c_str(), p.plan.runs(), p.plan.points.size(), p.plan.seeds);
     std::printf("run them, for example:\n  parallel --joblog %s/joblog --resume-failed < %s/manifest.txt\n",
                 p.dir.c_str(), p.dir.c_str());
     if (o.slurm) std::printf("  sbatch %s/array.sbatch\n", p.dir.c_str());

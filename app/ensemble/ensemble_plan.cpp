@@ -43,8 +43,11 @@ std::string preset_hash(const swarm::Preset& p) {
 }
 
 std::string plan_json(const EnsemblePlan& plan) {
-  const json j = {{"format", kPlanFormat},       {"preset_hash", plan.preset_hash},
-                  {"runs", plan.runs},           {"seed", plan.seed},
+  json points = json::array();
+  for (const PlanPoint& p : plan.points)
+    points.push_back({{"values", json::parse(p.values)}, {"preset_hash", p.preset_hash}});
+  const json j = {{"format", kPlanFormat},     {"points", points},
+                  {"seeds", plan.seeds},       {"seed", plan.seed},
                   {"perturbation", plan.perturbation}, {"swarmlab", plan.version}};
   return j.dump(1) + "\n";
 }
@@ -57,13 +60,24 @@ PlanRead parse_plan(const std::string& text) {
     return out;
   }
   EnsemblePlan p;
-  if (!j.contains("preset_hash") || !j["preset_hash"].is_string() || !j.contains("swarmlab") ||
-      !j["swarmlab"].is_string()) {
-    out.error = "preset_hash, swarmlab: missing or not text";
+  if (!j.contains("swarmlab") || !j["swarmlab"].is_string()) {
+    out.error = "swarmlab: missing or not text";
     return out;
   }
-  if (!j.contains("runs") || !j["runs"].is_number_integer() || j["runs"].get<long>() < 1) {
-    out.error = "runs: missing or not a whole number >= 1";
+  if (!j.contains("points") || !j["points"].is_array() || j["points"].empty()) {
+    out.error = "points: missing or empty";
+    return out;
+  }
+  for (const json& point : j["points"]) {
+    if (!point.is_object() || !point.contains("values") || !point["values"].is_object() ||
+        !point.contains("preset_hash") || !point["preset_hash"].is_string()) {
+      out.error = "points: each needs values (an object) and preset_hash (text)";
+      return out;
+    }
+    p.points.push_back({point["values"].dump(), point["preset_hash"]});
+  }
+  if (!j.contains("seeds") || !j["seeds"].is_number_integer() || j["seeds"].get<long>() < 1) {
+    out.error = "seeds: missing or not a whole number >= 1";
     return out;
   }
   if (!j.contains("seed") || !j["seed"].is_number_unsigned()) {
@@ -74,9 +88,8 @@ PlanRead parse_plan(const std::string& text) {
     out.error = "perturbation: missing or not a number";
     return out;
   }
-  p.preset_hash = j["preset_hash"];
   p.version = j["swarmlab"];
-  p.runs = j["runs"];
+  p.seeds = j["seeds"];
   p.seed = j["seed"];
   p.perturbation = j["perturbation"];
   out.plan = p;
@@ -84,29 +97,35 @@ PlanRead parse_plan(const std::string& text) {
 }
 
 std::string plan_path(const std::string& dir) { return dir + "/plan.json"; }
-std::string preset_path(const std::string& dir) { return dir + "/preset.json"; }
+std::string preset_path(const std::string& dir, const EnsemblePlan& plan, long point) {
+  return plan.points.size() == 1 ? dir + "/preset.json"
+                                 : dir + "/points/" + std::to_string(point) + ".json";
+}
 std::string run_path(const std::string& dir, long index) {
   return dir + "/runs/" + std::to_string(index) + ".json";
 }
 
-std::string run_command_line(const EnsemblePlan& plan, long index, const std::string& swarmlab,
+std::string run_command_line(const EnsemblePlan& plan, long run, const std::string& swarmlab,
                              const std::string& dir) {
-  std::string line = quoted(swarmlab) + " run " + quoted(preset_path(dir)) + " --seed " +
-                     std::to_string(swarm::run_seed(plan.seed, std::uint64_t(index)));
+  const long point = plan.point_of(run);
+  std::string line =
+      quoted(swarmlab) + " run " + quoted(preset_path(dir, plan, point)) + " --seed " +
+      std::to_string(swarm::run_seed(plan.seed, std::uint64_t(plan.seed_index_of(run))));
   if (plan.perturbation > 0) line += " --perturb " + number(plan.perturbation);
-  line += " --run-index " + std::to_string(index) + " --preset-hash " + plan.preset_hash +
-          " --record " + quoted(run_path(dir, index)) + " --quiet";
+  line += " --run-index " + std::to_string(run) + " --preset-hash " +
+          plan.points[std::size_t(point)].preset_hash + " --record " +
+          quoted(run_path(dir, run)) + " --quiet";
   return line;
 }
 
 std::string manifest(const EnsemblePlan& plan, const std::string& swarmlab, const std::string& dir) {
   std::string out;
-  for (long k = 0; k < plan.runs; ++k) out += run_command_line(plan, k, swarmlab, dir) + "\n";
+  for (long i = 0; i < plan.runs(); ++i) out += run_command_line(plan, i, swarmlab, dir) + "\n";
   return out;
 }
 
 std::string slurm_array_script(const EnsemblePlan& plan, const std::string& dir, long at_once) {
-  std::string array = "0-" + std::to_string(plan.runs - 1);
+  std::string array = "0-" + std::to_string(plan.runs() - 1);
   if (at_once > 0) array += "%" + std::to_string(at_once);
   return "#!/bin/bash\n"
          "# One run of the ensemble in " + dir + " per array task: task i runs line i + 1 of\n"

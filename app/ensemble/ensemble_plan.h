@@ -1,12 +1,14 @@
 #pragma once
-// An ensemble on disk: DIR/plan.json says what it is (the preset's hash, how many runs, the
-// master seed, the perturbation, the swarmlab that runs it), DIR/preset.json is the preset,
-// DIR/runs/<k>.json are the runs, and DIR/manifest.txt holds one plain `swarmlab run` command
-// per run for any runner (GNU parallel, a Slurm array: DIR/array.sbatch).
+// An ensemble on disk: DIR/plan.json says what it is (its points, each a preset with its hash,
+// the runs per point, the master seed, the perturbation, the swarmlab that runs it), the
+// presets are DIR/preset.json (one point) or DIR/points/<p>.json (a sweep), the runs are
+// DIR/runs/<i>.json, and DIR/manifest.txt holds one plain `swarmlab run` command per run for
+// any runner (GNU parallel, a Slurm array: DIR/array.sbatch).
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "swarm/preset/preset.h"
 
@@ -14,12 +16,24 @@ namespace swarmlab::ensemble {
 
 inline constexpr const char* kPlanFormat = "swarmlab ensemble plan";
 
-struct EnsemblePlan {
+/// One point of a sweep: the values its preset's keys were given ({} for a plain ensemble),
+/// as JSON text ({"J": 0.5, "particles.count": 2000}), and that preset's hash.
+struct PlanPoint {
+  std::string values = "{}";
   std::string preset_hash;
-  long runs = 0;
-  std::uint64_t seed = 1;  ///< the master seed: run k starts from swarm::run_seed(seed, k)
+};
+
+struct EnsemblePlan {
+  std::vector<PlanPoint> points;  ///< one for a plain ensemble
+  long seeds = 0;                 ///< runs per point
+  std::uint64_t seed = 1;   ///< the master seed: run k of every point starts from run_seed(seed, k)
   double perturbation = 0;  ///< for listed particles (swarm::with_seed)
   std::string version;      ///< the swarmlab that wrote the plan
+
+  long runs() const { return long(points.size()) * seeds; }
+  /// Run i is run i % seeds of point i / seeds.
+  long point_of(long run) const { return run / seeds; }
+  long seed_index_of(long run) const { return run % seeds; }
 };
 
 /// The version runs record: they merge only with runs of the same one, since another build
@@ -38,14 +52,15 @@ struct PlanRead {
 PlanRead parse_plan(const std::string& text);
 
 std::string plan_path(const std::string& dir);
-std::string preset_path(const std::string& dir);
-std::string run_path(const std::string& dir, long index);
+/// The preset point p runs: DIR/preset.json for a plain ensemble, DIR/points/<p>.json in a sweep.
+std::string preset_path(const std::string& dir, const EnsemblePlan& plan, long point);
+std::string run_path(const std::string& dir, long run);
 
-/// The `swarmlab run` command of run `index`, as one shell line (paths quoted): swarmlab is
-/// the program to call, dir the ensemble's folder as the runner will see it.
-std::string run_command_line(const EnsemblePlan& plan, long index, const std::string& swarmlab,
+/// The `swarmlab run` command of run i, as one shell line (paths quoted): swarmlab is the
+/// program to call, dir the ensemble's folder as the runner will see it.
+std::string run_command_line(const EnsemblePlan& plan, long run, const std::string& swarmlab,
                              const std::string& dir);
-/// Every run's command, one per line, run k on line k + 1.
+/// Every run's command, one per line, run i on line i + 1.
 std::string manifest(const EnsemblePlan& plan, const std::string& swarmlab, const std::string& dir);
 /// A Slurm batch script for a job array over the manifest: task i runs line i + 1, at most
 /// `at_once` at a time (0: no limit).

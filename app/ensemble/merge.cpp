@@ -85,6 +85,7 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
                   const std::function<void(const RunRecord&)>& each) {
   RunScan scan;
   std::error_code ec;
+  const long runs = plan.runs();
   // Files in runs/ that no run of this plan writes.
   for (const auto& entry : fs::directory_iterator(dir + "/runs", ec)) {
     const std::string name = entry.path().filename().string();
@@ -92,11 +93,11 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
     const std::string stem = name.substr(0, name.size() - 5);
     const bool numeric = !stem.empty() && stem.find_first_not_of("0123456789") == std::string::npos &&
                          stem.size() < 12 && (stem == "0" || stem[0] != '0');
-    if (!numeric || std::stol(stem) >= plan.runs)
+    if (!numeric || std::stol(stem) >= runs)
       scan.mixed += (scan.mixed.empty() ? "" : "; ") + ("runs/" + name) +
-                    ": not a run of this plan (runs 0 to " + std::to_string(plan.runs - 1) + ")";
+                    ": not a run of this plan (runs 0 to " + std::to_string(runs - 1) + ")";
   }
-  for (long k = 0; k < plan.runs; ++k) {
+  for (long k = 0; k < runs; ++k) {
     const std::string path = run_path(dir, k);
     std::string text;
     if (!fs::exists(path, ec)) {
@@ -113,9 +114,10 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
       continue;
     }
     const RunRecord& r = *read.record;
+    const std::string& hash = plan.points[std::size_t(plan.point_of(k))].preset_hash;
     std::string why;
-    if (r.id.preset_hash != plan.preset_hash)
-      why = "a run of another preset (hash " + r.id.preset_hash + ", the plan's " + plan.preset_hash + ")";
+    if (r.id.preset_hash != hash)
+      why = "a run of another preset (hash " + r.id.preset_hash + ", the plan's " + hash + ")";
     else if (r.id.version != plan.version)
       why = "made by swarmlab " + r.id.version + ", the plan's is " + plan.version;
     else if (r.id.index != k)
@@ -134,21 +136,10 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
   return scan;
 }
 
-MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
-  MergeReport out;
-  std::string text;
-  if (!read_text(plan_path(dir), text)) {
-    out.error = plan_path(dir) +
-                ": missing: not an ensemble folder (swarmlab plan or swarmlab ensemble makes one)";
-    return out;
-  }
-  const PlanRead plan = parse_plan(text);
-  if (!plan.plan) {
-    out.error = plan_path(dir) + ": " + plan.error;
-    return out;
-  }
+namespace {
 
-  // What the report needs, gathered run by run: nothing grows with a run's length.
+/// What one point's report needs, gathered run by run: nothing grows with a run's length.
+struct PointRuns {
   std::vector<long> indices;
   std::vector<std::uint64_t> seeds;
   std::map<std::string, std::vector<double>> values;  // one per run, NAN where a run lacks it
@@ -157,7 +148,8 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
   Band P_t, T_t;
   std::vector<std::vector<double>> stage_V, stage_P, stage_T;
   bool bands_agree = true;
-  const RunScan scan = scan_runs(dir, *plan.plan, [&](const RunRecord& r) {
+
+  void add(const RunRecord& r) {
     const std::size_t n = indices.size();
     indices.push_back(r.id.index);
     seeds.push_back(r.id.seed);
@@ -186,40 +178,14 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
     stage_V.push_back(r.stage_V);
     stage_P.push_back(r.stage_P);
     stage_T.push_back(r.stage_T);
-  });
-  if (!scan.mixed.empty()) {
-    out.error = "runs of different presets, versions or plans cannot be merged as one: " + scan.mixed;
-    return out;
   }
-  if (indices.empty()) {
-    out.error = dir + ": no run has finished yet (" + std::to_string(scan.missing.size()) +
-                " missing, " + std::to_string(scan.corrupted.size()) + " corrupted, " +
-                std::to_string(scan.failed.size()) + " failed)";
-    return out;
-  }
+};
 
-  json report = {{"format", report::kEnsembleReportFormat},
-                 {"preset_hash", plan.plan->preset_hash},
-                 {"swarmlab", plan.plan->version},
-                 {"seed", plan.plan->seed},
-                 {"planned", plan.plan->runs},
-                 {"runs", indices.size()},
-                 {"confidence", 0.95},
-                 {"missing", scan.missing}};
-  json corrupted = json::array(), failed = json::array();
-  for (const auto& [k, why] : scan.corrupted) corrupted.push_back({{"index", k}, {"error", why}});
-  for (const auto& [k, why] : scan.failed) failed.push_back({{"index", k}, {"failure", why}});
-  report["corrupted"] = corrupted;
-  report["failed"] = failed;
-  report["equilibration_start"] = interval_json(swarm::mean_interval(starts));
-
+/// Per quantity: values, mean, sd, se, ci95, and the rest (see merge.h); the table's rows.
+json point_quantities(const PointRuns& p, double relative_half_width, std::string& table) {
   json quantities = json::object();
-  std::string table;
   char line[320];
-  std::snprintf(line, sizeof line, "%-14s %5s %13s  %-29s %11s %11s %7s\n", "quantity", "runs",
-                "mean", "95 % interval", "sd", "within se", "ratio");
-  table += line;
-  for (const auto& [name, column] : values) {
+  for (const auto& [name, column] : p.values) {
     std::vector<double> v;
     for (double x : column)
       if (std::isfinite(x)) v.push_back(x);
@@ -228,10 +194,11 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
     q["values"] = column;
     q["runs"] = v.size();
     if (m.lo && m.mean != 0)
-      q["runs_for_half_width"] = {{"relative", relative_half_width},
-                                  {"runs", swarm::runs_for_half_width(m.sd, relative_half_width * std::abs(m.mean))}};
+      q["runs_for_half_width"] = {
+          {"relative", relative_half_width},
+          {"runs", swarm::runs_for_half_width(m.sd, relative_half_width * std::abs(m.mean))}};
     double within = NAN;
-    if (const auto e = errors.find(name); e != errors.end()) {
+    if (const auto e = p.errors.find(name); e != p.errors.end()) {
       double sum = 0;
       std::size_t count = 0;
       for (double se : e->second)
@@ -244,10 +211,10 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
       }
     }
     const std::string fit_prefix = "fit.";
-    if (name.compare(0, fit_prefix.size(), fit_prefix) == 0 && stage_V.front().size() >= 3) {
+    if (name.compare(0, fit_prefix.size(), fit_prefix) == 0 && p.stage_V.front().size() >= 3) {
       const std::string kind = name.substr(fit_prefix.size());  // P_V, T_V or P_T
-      const auto& x = kind == "P_T" ? stage_T : stage_V;
-      const auto& y = kind == "T_V" ? stage_T : stage_P;
+      const auto& x = kind == "P_T" ? p.stage_T : p.stage_V;
+      const auto& y = kind == "T_V" ? p.stage_T : p.stage_P;
       bool same_stages = true;
       for (std::size_t r = 0; r < x.size(); ++r)
         same_stages = same_stages && x[r].size() == x[0].size() && y[r].size() == x[0].size();
@@ -272,44 +239,146 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
     table += line;
     quantities[name] = q;
   }
-  report["quantities"] = quantities;
+  return quantities;
+}
+
+json point_bands(const PointRuns& p) {
   json bands = json::object();
-  if (bands_agree && !P_t.x.empty())
-    bands["time"] = {{"t", P_t.x}, {"P", P_t.to_json()}, {"T", T_t.to_json()}};
-  if (!stage_V.front().empty()) {
+  if (p.bands_agree && !p.P_t.x.empty())
+    bands["time"] = {{"t", p.P_t.x}, {"P", p.P_t.to_json()}, {"T", p.T_t.to_json()}};
+  if (!p.stage_V.front().empty()) {
     Band sP, sT;
-    sP.x = stage_V.front();
+    sP.x = p.stage_V.front();
     sP.values.assign(sP.x.size(), {});
     sT.values.assign(sP.x.size(), {});
     bool agree = true;
-    for (std::size_t r = 0; r < stage_V.size(); ++r) {
-      if (stage_P[r].size() != sP.x.size()) agree = false;
+    for (std::size_t r = 0; r < p.stage_V.size(); ++r) {
+      if (p.stage_P[r].size() != sP.x.size()) agree = false;
       for (std::size_t s = 0; agree && s < sP.x.size(); ++s)
-        sP.values[s].push_back(stage_P[r][s]), sT.values[s].push_back(stage_T[r][s]);
+        sP.values[s].push_back(p.stage_P[r][s]), sT.values[s].push_back(p.stage_T[r][s]);
     }
     if (agree) bands["stages"] = {{"V", sP.x}, {"P", sP.to_json()}, {"T", sT.to_json()}};
   }
-  report["bands"] = bands;
-  out.json = report.dump(1) + "\n";
+  return bands;
+}
 
-  // The per-run table, full precision.
-  out.csv = "index,seed";
-  for (const auto& [name, column] : values) out.csv += "," + name;
-  out.csv += "\n";
-  for (std::size_t r = 0; r < indices.size(); ++r) {
-    out.csv += std::to_string(indices[r]) + "," + std::to_string(seeds[r]);
-    for (const auto& [name, column] : values) {
-      char buf[40] = "";
-      if (std::isfinite(column[r])) std::snprintf(buf, sizeof buf, "%.17g", column[r]);
-      out.csv += std::string(",") + buf;
-    }
-    out.csv += "\n";
+std::vector<long> of_point(const std::vector<long>& runs, const EnsemblePlan& plan, long point) {
+  std::vector<long> out;
+  for (long i : runs)
+    if (plan.point_of(i) == point) out.push_back(i);
+  return out;
+}
+
+}  // namespace
+
+MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
+  MergeReport out;
+  std::string text;
+  if (!read_text(plan_path(dir), text)) {
+    out.error = plan_path(dir) +
+                ": missing: not an ensemble folder (swarmlab plan or swarmlab ensemble makes one)";
+    return out;
   }
-  char head[200];
-  std::snprintf(head, sizeof head, "%zu of %ld runs merged (%zu missing, %zu corrupted, %zu failed)\n\n",
-                indices.size(), plan.plan->runs, scan.missing.size(), scan.corrupted.size(),
-                scan.failed.size());
-  out.table = head + table;
+  const PlanRead read = parse_plan(text);
+  if (!read.plan) {
+    out.error = plan_path(dir) + ": " + read.error;
+    return out;
+  }
+  const EnsemblePlan& plan = *read.plan;
+  std::vector<PointRuns> points(plan.points.size());
+  std::size_t merged = 0;
+  const RunScan scan = scan_runs(dir, plan, [&](const RunRecord& r) {
+    points[std::size_t(plan.point_of(r.id.index))].add(r);
+    ++merged;
+  });
+  if (!scan.mixed.empty()) {
+    out.error = "runs of different presets, versions or plans cannot be merged as one: " + scan.mixed;
+    return out;
+  }
+  if (merged == 0) {
+    out.error = dir + ": no run has finished yet (" + std::to_string(scan.missing.size()) +
+                " missing, " + std::to_string(scan.corrupted.size()) + " corrupted, " +
+                std::to_string(scan.failed.size()) + " failed)";
+    return out;
+  }
+  json corrupted = json::array(), failed = json::array();
+  for (const auto& [k, why] : scan.corrupted) corrupted.push_back({{"index", k}, {"error", why}});
+  for (const auto& [k, why] : scan.failed) failed.push_back({{"index", k}, {"failure", why}});
+  json report = {{"format", report::kEnsembleReportFormat},
+                 {"swarmlab", plan.version},
+                 {"seed", plan.seed},
+                 {"seeds", plan.seeds},
+                 {"planned", plan.runs()},
+                 {"runs", merged},
+                 {"confidence", 0.95},
+                 {"missing", scan.missing},
+                 {"corrupted", corrupted},
+                 {"failed", failed}};
+  char line[320];
+  std::snprintf(line, sizeof line, "%zu of %ld runs merged (%zu missing, %zu corrupted, %zu failed)\n",
+                merged, plan.runs(), scan.missing.size(), scan.corrupted.size(), scan.failed.size());
+  out.table = line;
+  std::snprintf(line, sizeof line, "%-14s %5s %13s  %-29s %11s %11s %7s\n", "quantity", "runs",
+                "mean", "95 % interval", "sd", "within se", "ratio");
+  const std::string header = line;
+
+  // The per-run table: the point's values, then every quantity any run has.
+  std::set<std::string> names, keys;
+  for (const PointRuns& p : points)
+    for (const auto& [name, column] : p.values) names.insert(name);
+  for (const PlanPoint& pp : plan.points) {
+    const json values = json::parse(pp.values);
+    for (const auto& [key, v] : values.items()) keys.insert(key);
+  }
+  out.csv = "index,seed";
+  for (const std::string& key : keys) out.csv += "," + key;
+  for (const std::string& name : names) out.csv += "," + name;
+  out.csv += "\n";
+
+  json point_reports = json::array();
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const PointRuns& runs = points[p];
+    const json values = json::parse(plan.points[p].values);
+    out.table += "\n";
+    if (plan.points.size() > 1) out.table += "point " + std::to_string(p) + ": " + values.dump() + "\n";
+    json r = {{"values", values},
+              {"preset_hash", plan.points[p].preset_hash},
+              {"runs", runs.indices.size()},
+              {"missing", of_point(scan.missing, plan, long(p))}};
+    if (runs.indices.empty()) {
+      out.table += "no run finished\n";
+      point_reports.push_back(r);
+      continue;
+    }
+    out.table += header;
+    r["equilibration_start"] = interval_json(swarm::mean_interval(runs.starts));
+    r["quantities"] = point_quantities(runs, relative_half_width, out.table);
+    r["bands"] = point_bands(runs);
+    point_reports.push_back(r);
+    for (std::size_t i = 0; i < runs.indices.size(); ++i) {
+      out.csv += std::to_string(runs.indices[i]) + "," + std::to_string(runs.seeds[i]);
+      for (const std::string& key : keys)
+        out.csv += "," + (values.contains(key) ? values[key].dump() : std::string());
+      for (const std::string& name : names) {
+        char buf[40] = "";
+        const auto c = runs.values.find(name);
+        if (c != runs.values.end() && std::isfinite(c->second[i]))
+          std::snprintf(buf, sizeof buf, "%.17g", c->second[i]);
+        out.csv += std::string(",") + buf;
+      }
+      out.csv += "\n";
+    }
+  }
+  if (points.size() == 1) {
+    // A plain ensemble: its one point's numbers at the top level.
+    const json& only = point_reports[0];
+    report["preset_hash"] = only["preset_hash"];
+    for (const char* key : {"equilibration_start", "quantities", "bands"})
+      if (only.contains(key)) report[key] = only[key];
+  } else {
+    report["points"] = point_reports;
+  }
+  out.json = report.dump(1) + "\n";
   return out;
 }
 

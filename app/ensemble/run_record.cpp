@@ -70,6 +70,12 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
   put(r, "energy_drift", s.energy_drift);
   put(r, "wall_hits", double(s.wall_hits));
   const std::vector<swarm::Sample>& samples = run.samples();
+  if (run.plan().engine.exchanges_energy()) {
+    put(r, "work", s.books.wall_work);
+    put(r, "heat", s.books.wall_heat);
+    put(r, "KE_start", samples.front().KE);
+    put(r, "KE_end", samples.back().KE);
+  }
   if (run.plan().engine.container_radius && run.stages().empty()) {
     const swarm::WallTimeAverages a = swarm::wall_time_averages(swarm::wall_intervals(samples));
     r.equilibration_start = a.start;
@@ -88,9 +94,13 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
   }
   if (!run.stages().empty()) {
     const swarm::StageFits f = run.fits();
-    if (f.P_V.valid) put(r, "fit.P_V", f.P_V.slope);
-    if (f.T_V.valid) put(r, "fit.T_V", f.T_V.slope);
-    if (f.P_T.valid) put(r, "fit.P_T", f.P_T.slope);
+    const std::pair<const char*, const swarm::PowerLawFit*> fits[] = {
+        {"P_V", &f.P_V}, {"T_V", &f.T_V}, {"P_T", &f.P_T}};
+    for (const auto& [name, fit] : fits)
+      if (fit->valid) {
+        put(r, std::string("fit.") + name, fit->slope);
+        put(r, std::string("r2.") + name, fit->r_squared);
+      }
   }
   return r;
 }

@@ -40,8 +40,10 @@ struct RunRecord {
   std::string failure;  ///< "" for a finished run; the reason a run stopped otherwise
   double equilibration_start = 0;  ///< time from which P and T are averaged
   /// "P", "T" (time averages after the equilibration start), "energy_drift", "wall_hits",
-  /// and for expansions "stage<k>.P", "stage<k>.T" (k from 1) and "fit.P_V", "fit.T_V",
-  /// "fit.P_T" (each run's fitted exponent).
+  /// with outside work or heat (EngineConfig::exchanges_energy) "work", "heat" (the books
+  /// at the end), "KE_start" and "KE_end",
+  /// and for expansions "stage<k>.P", "stage<k>.T" (k from 1), "fit.P_V", "fit.T_V",
+  /// "fit.P_T" (each run's fitted exponent) and "r2.P_V", "r2.T_V", "r2.P_T" (their R^2).
   std::map<std::string, RunValue> values;
   /// The wall series, at most kSeriesPoints; T is NAN (null in the file) where nothing hit.
   std::vector<double> t, P, T, R;

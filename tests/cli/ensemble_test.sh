@@ -125,9 +125,40 @@ refused listed "particles: listed particles start every run the same" "$bin" ens
 "$bin" ensemble "$work/listed.json" --seeds 4 --out "$work/l" --perturb 0.01 --quiet && ok || bad "listed with --perturb"
 big='{"J": 1, "particles": {"count": 1000000, "position_radius": 1, "velocity": {"speed": 1}}, "dt": 0.001, "duration": 1000, "sample_every": 100000}'
 printf '%s' "$big" >"$work/big.json"
-refused budget "--seeds: 1000 runs x" "$bin" ensemble "$work/big.json" --seeds 1000 --out "$work/big" --jobs 2
+refused budget "--seeds: 1000 runs need" "$bin" ensemble "$work/big.json" --seeds 1000 --out "$work/big" --jobs 2
 refused changed "--preset-hash: the preset has changed since the plan" \
   "$bin" run "$work/gas.json" --seed 1 --run-index 0 --preset-hash 0123456789abcdef --record "$work/r.json"
 refused other-plan "holds another ensemble (12 seeds)" "$bin" ensemble "$work/long.json" --seeds 5 --out "$work/killed"
+
+# A sweep: a grid over two keys of the base preset, its points' values in the report and in
+# runs.csv, the same seeds at every point, and the same runs through the manifest.
+printf '{"preset": "gas.json", "grid": {"particles.count": [100, 300], "container.radius": [1.0, 1.5]}, "seeds": 3}' >"$work/sweep.json"
+if "$bin" ensemble "$work/sweep.json" --out "$work/sweep" --quiet; then
+  python3 - "$work/sweep/report.json" "$work/sweep/runs.csv" <<'PY' && ok || bad "sweep report"
+import csv, json, sys
+r = json.load(open(sys.argv[1]))
+assert r["runs"] == 12 and len(r["points"]) == 4
+vals = [p["values"] for p in r["points"]]
+assert vals == [{"container.radius": R, "particles.count": n} for R in (1.0, 1.5) for n in (100, 300)], vals
+# The ideal gas: P grows with N (3x the particles, about 3x P) and falls with V (the bigger
+# sphere is still filling in 0.5 time units, so by more than the volume ratio 3.4).
+P = {(p["values"]["container.radius"], p["values"]["particles.count"]): p["quantities"]["P"]["mean"] for p in r["points"]}
+assert 2.4 < P[(1.0, 300)] / P[(1.0, 100)] < 3.6 and P[(1.0, 100)] / P[(1.5, 100)] > 2.4, P
+rows = list(csv.DictReader(open(sys.argv[2])))
+assert len(rows) == 12 and rows[0]["particles.count"] == "100" and rows[3]["particles.count"] == "300"
+assert rows[0]["seed"] == rows[3]["seed"] == rows[6]["seed"]   # the same seeds at every point
+PY
+else
+  bad "sweep ensemble"
+fi
+"$bin" plan "$work/sweep.json" --out "$work/sweep-plan" --quiet &&
+  [ "$(wc -l <"$work/sweep-plan/manifest.txt")" -eq 12 ] &&
+  grep -q "sweep-plan/points/3.json' --seed" "$work/sweep-plan/manifest.txt" && ok || bad "sweep manifest"
+(cd "$work" && bash sweep-plan/manifest.txt >/dev/null) && cmp -s "$work/sweep/runs/7.json" "$work/sweep-plan/runs/7.json" &&
+  ok || bad "a sweep's manifest line gives another run"
+printf '{"preset": "gas.json", "grid": {"particles.countt": [100, 300]}, "seeds": 3}' >"$work/sweep-bad.json"
+refused sweep-unknown-key "particles.countt: not a key of the base preset" "$bin" ensemble "$work/sweep-bad.json" --out "$work/sb"
+printf '{"preset": "gas.json", "points": [{"J": 0}, {"particles.count": -5}], "seeds": 2}' >"$work/sweep-bad2.json"
+refused sweep-bad-value 'point {"particles.count":-5}: particles.count' "$bin" plan "$work/sweep-bad2.json" --out "$work/sb2"
 
 finish

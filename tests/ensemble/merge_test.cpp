@@ -39,13 +39,13 @@ nlohmann::json ensemble_report(const swarm::Preset& p, long runs, std::uint64_t 
                                const std::string& dir) {
   fs::remove_all(dir);
   fs::create_directories(dir + "/runs");
-  const EnsemblePlan plan{preset_hash(p), runs, seed, 0.0, program_version()};
+  const EnsemblePlan plan{{{"{}", preset_hash(p)}}, runs, seed, 0.0, program_version()};
   REQUIRE(swarmlab::write_file_atomically(plan_path(dir), plan_json(plan)).empty());
   for (long k = 0; k < runs; ++k) {
     const std::uint64_t s = swarm::run_seed(seed, std::uint64_t(k));
     const swarm::SeededPreset seeded = swarm::with_seed(p, s, 0);
     REQUIRE(seeded.preset);
-    REQUIRE(run_member(*seeded.preset, {k, s, plan.preset_hash, plan.version, 0.0},
+    REQUIRE(run_member(*seeded.preset, {k, s, plan.points[0].preset_hash, plan.version, 0.0},
                        run_path(dir, k), 1)
                 .empty());
   }

@@ -1,0 +1,143 @@
+#include "ensemble/sweep.h"
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+
+namespace swarmlab::ensemble {
+namespace {
+
+using json = nlohmann::json;
+
+/// Limits a grid to what a manifest can hold.
+constexpr std::size_t kMaxPoints = 10000;
+
+/// Sets the value at a dotted path of the base preset; "" or why not.
+std::string set_key(json& preset, const std::string& key, const json& value) {
+  json* at = &preset;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t dot = key.find('.', from);
+    const std::string part = key.substr(from, dot == std::string::npos ? std::string::npos : dot - from);
+    if (!at->is_object() || !at->contains(part))
+      return key + ": not a key of the base preset (a sweep varies what the preset already sets)";
+    at = &(*at)[part];
+    if (dot == std::string::npos) break;
+    from = dot + 1;
+  }
+  *at = value;
+  return {};
+}
+
+}  // namespace
+
+bool is_sweep(const std::string& text) {
+  const json j = json::parse(text, nullptr, false);
+  return j.is_object() && j.contains("preset") && (j.contains("grid") || j.contains("points"));
+}
+
+SweepRead read_sweep(const std::string& text, const std::string& sweep_path) {
+  SweepRead out;
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) {
+    out.error = "sweep: not valid JSON";
+    return out;
+  }
+  for (const auto& [key, v] : j.items())
+    if (key != "preset" && key != "grid" && key != "points" && key != "seeds") {
+      out.error = key + ": unknown key (a sweep has preset, grid or points, and seeds)";
+      return out;
+    }
+  if (!j["preset"].is_string()) {
+    out.error = "preset: must be the base preset's file name";
+    return out;
+  }
+  if (j.contains("grid") == j.contains("points")) {
+    out.error = "grid, points: give one of them";
+    return out;
+  }
+  Sweep sweep;
+  if (j.contains("seeds")) {
+    if (!j["seeds"].is_number_integer() || j["seeds"].get<long>() < 1) {
+      out.error = "seeds: must be a whole number >= 1";
+      return out;
+    }
+    sweep.seeds = j["seeds"].get<long>();
+  }
+  std::vector<json> points;
+  if (j.contains("grid")) {
+    const json& grid = j["grid"];
+    if (!grid.is_object() || grid.empty()) {
+      out.error = "grid: must be an object of keys, each with a list of values";
+      return out;
+    }
+    points.push_back(json::object());
+    for (const auto& [key, values] : grid.items()) {
+      if (!values.is_array() || values.empty()) {
+        out.error = "grid." + key + ": must be a non-empty list of values";
+        return out;
+      }
+      if (points.size() * values.size() > kMaxPoints) {
+        out.error = "grid: more than " + std::to_string(kMaxPoints) + " points";
+        return out;
+      }
+      std::vector<json> next;
+      for (const json& p : points)
+        for (const json& v : values) {
+          json q = p;
+          q[key] = v;
+          next.push_back(q);
+        }
+      points = std::move(next);
+    }
+  } else {
+    const json& list = j["points"];
+    if (!list.is_array() || list.empty() || list.size() > kMaxPoints) {
+      out.error = "points: must be a list of 1 to " + std::to_string(kMaxPoints) + " objects";
+      return out;
+    }
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!list[i].is_object() || list[i].empty()) {
+        out.error = "points[" + std::to_string(i) + "]: must be an object of keys and values";
+        return out;
+      }
+      points.push_back(list[i]);
+    }
+  }
+
+  namespace fs = std::filesystem;
+  const std::string base_path =
+      (fs::path(sweep_path).parent_path() / j["preset"].get<std::string>()).string();
+  std::ifstream in(base_path, std::ios::binary);
+  if (!in) {
+    out.error = "preset: " + base_path + ": cannot open the file";
+    return out;
+  }
+  std::ostringstream s;
+  s << in.rdbuf();
+  const json base = json::parse(s.str(), nullptr, false);
+  if (base.is_discarded() || !base.is_object()) {
+    out.error = "preset: " + base_path + ": not valid JSON";
+    return out;
+  }
+  for (const json& values : points) {
+    json preset = base;
+    for (const auto& [key, v] : values.items())
+      if (std::string err = set_key(preset, key, v); !err.empty()) {
+        out.error = err;
+        return out;
+      }
+    const swarm::PresetParse parsed = swarm::parse_preset(preset.dump());
+    if (!parsed.preset) {
+      out.error = "point " + values.dump() + ": " + parsed.error;
+      return out;
+    }
+    sweep.points.push_back({values.dump(), *parsed.preset});
+  }
+  out.sweep = std::move(sweep);
+  return out;
+}
+
+}  // namespace swarmlab::ensemble
