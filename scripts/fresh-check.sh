@@ -17,7 +17,7 @@ declare -A commands=(
   [run]="scripts/run.sh"
   [test-quick]="scripts/test.sh --quick"
   [web]="scripts/web.sh --build-only"
-  [report]="scripts/report.sh"
+  [report]="scripts/report.sh --no-ensembles"
   [fuzz]="scripts/fuzz.sh 10"
   [bench]="scripts/build.sh && build/app/swarmlab bench headline"
 )

@@ -2,10 +2,19 @@
 # Regenerates every figure of docs/paper-reproduction.md and docs/student-projects.md into
 # docs/figures/, one command per figure set, from the shipped presets (a few minutes in all;
 # the Fig. 5 long run dominates).
-# Usage: scripts/report.sh [--png]     (--png: a PNG beside each SVG; needs rsvg-convert)
+# Then the ensembles behind the pages' error bars (scripts/ensembles.sh: 32 seeds per claim,
+# about 20 minutes more on this 2-core machine), unless --no-ensembles.
+# Usage: scripts/report.sh [--png] [--no-ensembles]   (--png: a PNG beside each SVG; needs
+# rsvg-convert)
 # SWARMLAB=path/to/swarmlab picks the binary; by default build/app/swarmlab, built if missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+ensembles=1
+args=()
+for arg in "$@"; do
+  if [ "$arg" = --no-ensembles ]; then ensembles=0; else args+=("$arg"); fi
+done
+set -- ${args[@]+"${args[@]}"}
 bin=${SWARMLAB:-build/app/swarmlab}
 [ -x "$bin" ] || scripts/build.sh --target swarmlab
 figures=docs/figures
@@ -37,3 +46,5 @@ run drag-one-particle "$@"               # drag on one particle: v0 exp(-b t / m
 run moving-wall-cycle "$@"               # P-V loop of a compress-expand cycle, energy books
 run hot-wall "$@"                        # a cold gas warmed by a wall at Tw
 run hard-spheres-gas "$@"                # hard spheres: energy, P and T
+
+[ $ensembles -eq 0 ] || SWARMLAB="$bin" scripts/ensembles.sh
