@@ -5,6 +5,7 @@
 
 #include "cli/cli.h"
 #include "cli/cli_bench.h"
+#include "ensemble/ensemble_plan.h"
 #include "ui/plots/plot_tab.h"
 #ifdef SWARMLAB_HAS_DESKTOP
 #include "desktop/desktop.h"
@@ -15,6 +16,8 @@ int main(int argc, char** argv) {
       "Swarm Lab: N particles coupled pairwise by F = -J m1 m2 r, solved exactly.\n"
       "Without a subcommand it opens the desktop window (optionally with PRESET.json)."};
   app.require_subcommand(0, 1);
+  app.set_version_flag("--version", swarmlab::ensemble::program_version(),
+                       "The build's version: its commit, and a hash of uncommitted changes");
 
   std::string window_preset;
   int frames = 0;

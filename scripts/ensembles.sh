@@ -26,6 +26,12 @@ mkdir -p docs/ensembles
 for preset in "${presets[@]}"; do
   echo "== $preset: $seeds seeds" >&2
   start=$(date +%s)
+  # Runs of another build do not merge with this one's: start that folder again.
+  dir="build/ensembles/$preset"
+  if [ -f "$dir/plan.json" ] && ! grep -qF "\"swarmlab\": \"$("$bin" --version)\"" "$dir/plan.json"; then
+    echo "   $dir holds runs of another build: starting it again" >&2
+    rm -rf "$dir"
+  fi
   "$bin" ensemble "assets/presets/$preset.json" --seeds "$seeds" --out "build/ensembles/$preset" --quiet
   "$bin" report "build/ensembles/$preset/report.json" --plots "docs/figures/ensembles/$preset" --quiet
   cp "build/ensembles/$preset/report.json" "docs/ensembles/$preset.json"

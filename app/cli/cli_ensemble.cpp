@@ -109,10 +109,11 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
     out.error = buf;
     return out;
   }
-  if (jobs > 0 && memory * jobs > limits.memory_bytes) {
+  const double at_once = double(std::min<long>(jobs, out.plan.runs()));
+  if (jobs > 0 && memory * at_once > limits.memory_bytes) {
     char buf[200];
-    std::snprintf(buf, sizeof buf, "--jobs: %d runs at once need ~%.3g GB (limit %.3g GB)", jobs,
-                  memory * jobs / 1e9, limits.memory_bytes / 1e9);
+    std::snprintf(buf, sizeof buf, "--jobs: %.0f runs at once need ~%.3g GB (limit %.3g GB)",
+                  at_once, memory * at_once / 1e9, limits.memory_bytes / 1e9);
     out.error = buf;
     return out;
   }

@@ -144,18 +144,6 @@ int run_command(const RunOptions& options) {
     }
     preset = *seeded.preset;
   }
-  if (!options.record_path.empty()) {
-    const std::string err = ensemble::run_member(
-        preset,
-        {options.run_index, *options.seed, ensemble::preset_hash(*parsed.preset),
-         ensemble::program_version(), options.perturb},
-        options.record_path, options.threads > 0 ? options.threads : swarm::default_threads());
-    if (!err.empty()) {
-      std::fprintf(stderr, "error: %s\n", err.c_str());
-      return 1;
-    }
-    return 0;
-  }
   // The files are built whole in memory before they are written: count them in the budget.
   const bool files =
       !options.out_path.empty() || !options.csv_path.empty() || !options.plots_dir.empty();
@@ -165,6 +153,18 @@ int run_command(const RunOptions& options) {
     return 1;
   }
   try {
+    if (!options.record_path.empty()) {
+      const std::string err = ensemble::run_member(
+          preset,
+          {options.run_index, *options.seed, ensemble::preset_hash(*parsed.preset),
+           ensemble::program_version(), options.perturb},
+          options.record_path, options.threads > 0 ? options.threads : swarm::default_threads());
+      if (!err.empty()) {
+        std::fprintf(stderr, "error: %s\n", err.c_str());
+        return 1;
+      }
+      return 0;
+    }
     swarm::RunPlan plan = swarm::run_plan(preset);
     if (options.threads > 0) plan.engine.threads = options.threads;
     swarm::SideBySide runs(swarm::initial_system(preset), plan, preset.compare);

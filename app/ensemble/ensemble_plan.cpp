@@ -4,10 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/preset/ensemble_seed.h"
-
-#ifndef SWARMLAB_VERSION
-#define SWARMLAB_VERSION "unknown"
-#endif
+#include "swarmlab_version.h"
 
 namespace swarmlab::ensemble {
 namespace {
@@ -68,16 +65,18 @@ PlanRead parse_plan(const std::string& text) {
     out.error = "points: missing or empty";
     return out;
   }
-  for (const json& point : j["points"]) {
+  for (std::size_t i = 0; i < j["points"].size(); ++i) {
+    const json& point = j["points"][i];
     if (!point.is_object() || !point.contains("values") || !point["values"].is_object() ||
         !point.contains("preset_hash") || !point["preset_hash"].is_string()) {
-      out.error = "points: each needs values (an object) and preset_hash (text)";
+      out.error = "points[" + std::to_string(i) + "]: needs values (an object) and preset_hash (text)";
       return out;
     }
     p.points.push_back({point["values"].dump(), point["preset_hash"]});
   }
-  if (!j.contains("seeds") || !j["seeds"].is_number_integer() || j["seeds"].get<long>() < 1) {
-    out.error = "seeds: missing or not a whole number >= 1";
+  if (!j.contains("seeds") || !j["seeds"].is_number_integer() || j["seeds"].get<long>() < 1 ||
+      j["seeds"].get<long>() > 1000000) {
+    out.error = "seeds: missing or not a whole number from 1 to 1,000,000";
     return out;
   }
   if (!j.contains("seed") || !j["seed"].is_number_unsigned()) {

@@ -12,6 +12,7 @@
 #include "report/ensemble_figures.h"
 #include "swarm/measure/confidence.h"
 #include "swarm/measure/fit.h"
+#include "swarm/preset/ensemble_seed.h"
 
 namespace swarmlab::ensemble {
 namespace {
@@ -57,15 +58,24 @@ struct Band {
   }
 };
 
-/// The exponent of a power law fitted to the runs' mean stage values, for the runs picked.
+/// The exponent of a power law fitted to the runs' mean stage values, for the runs picked. A
+/// stage's mean is over the runs that have the value there (a stage without hits has no T);
+/// a stage none of them has is left out of the fit (as 0: fit_power_law skips it).
 double pooled_exponent(const std::vector<std::vector<double>>& x_runs,
                        const std::vector<std::vector<double>>& y_runs,
                        const std::vector<std::size_t>& pick) {
   const std::size_t stages = x_runs.front().size();
-  std::vector<double> x(stages, 0.0), y(stages, 0.0);
+  std::vector<double> x(stages, 0.0), y(stages, 0.0), nx(stages, 0.0), ny(stages, 0.0);
   for (std::size_t r : pick)
-    for (std::size_t s = 0; s < stages; ++s) x[s] += x_runs[r][s], y[s] += y_runs[r][s];
-  const swarm::PowerLawFit f = swarm::fit_power_law(x, y);  // the common 1 / n cancels
+    for (std::size_t s = 0; s < stages; ++s) {
+      if (std::isfinite(x_runs[r][s])) x[s] += x_runs[r][s], nx[s] += 1;
+      if (std::isfinite(y_runs[r][s])) y[s] += y_runs[r][s], ny[s] += 1;
+    }
+  for (std::size_t s = 0; s < stages; ++s) {
+    x[s] = nx[s] > 0 ? x[s] / nx[s] : 0.0;
+    y[s] = ny[s] > 0 ? y[s] / ny[s] : 0.0;
+  }
+  const swarm::PowerLawFit f = swarm::fit_power_law(x, y);
   return f.valid ? f.slope : NAN;
 }
 
@@ -122,6 +132,11 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
       why = "made by swarmlab " + r.id.version + ", the plan's is " + plan.version;
     else if (r.id.index != k)
       why = "holds run " + std::to_string(r.id.index);
+    else if (r.id.seed != swarm::run_seed(plan.seed, std::uint64_t(plan.seed_index_of(k))))
+      why = "started from seed " + std::to_string(r.id.seed) + ", not the plan's for this run";
+    else if (r.id.perturbation != plan.perturbation)
+      why = "perturbed by " + std::to_string(r.id.perturbation) + ", not the plan's " +
+            std::to_string(plan.perturbation);
     if (!why.empty()) {
       scan.mixed += (scan.mixed.empty() ? "" : "; ") + ("runs/" + std::to_string(k) + ".json: " + why);
       continue;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <type_traits>
 
 #include "swarm/measure/wall_time_average.h"
 
@@ -29,21 +30,25 @@ void fill_series(RunRecord& r, const std::vector<swarm::Sample>& samples) {
   }
 }
 
+/// A number at j[key]; `where` prefixes the key in the message ("values.P.").
 template <class T>
-bool read_number(const json& j, const char* key, T& out, std::string& error) {
+bool read_number(const json& j, const char* key, T& out, std::string& error,
+                 const std::string& where = "") {
   const auto it = j.find(key);
-  if (it == j.end() || !it->is_number()) {
-    error = std::string(key) + ": missing or not a number";
+  const bool whole = std::is_integral<T>::value;
+  if (it == j.end() || !it->is_number() || (whole && !it->is_number_integer())) {
+    error = where + key + (whole ? ": missing or not a whole number" : ": missing or not a number");
     return false;
   }
   out = it->get<T>();
   return true;
 }
 
-bool read_array(const json& j, const char* key, std::vector<double>& out, std::string& error) {
+bool read_array(const json& j, const char* key, std::vector<double>& out, std::string& error,
+                const std::string& where) {
   const auto it = j.find(key);
   if (it == j.end() || !it->is_array()) {
-    error = std::string(key) + ": missing or not an array";
+    error = where + key + ": missing or not an array";
     return false;
   }
   for (const json& x : *it) {
@@ -52,7 +57,7 @@ bool read_array(const json& j, const char* key, std::vector<double>& out, std::s
       continue;
     }
     if (!x.is_number()) {
-      error = std::string(key) + ": holds something other than a number";
+      error = where + key + ": holds something other than a number";
       return false;
     }
     out.push_back(x.get<double>());
@@ -79,18 +84,25 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
   if (run.plan().engine.container_radius && run.stages().empty()) {
     const swarm::WallTimeAverages a = swarm::wall_time_averages(swarm::wall_intervals(samples));
     r.equilibration_start = a.start;
-    if (a.P) put(r, "P", a.P->mean, a.P->se);
-    if (a.T) put(r, "T", a.T->mean, a.T->se);
+    // A blocking error without a plateau (the run too short for its correlations) is no error
+    // bar: the value goes without one.
+    auto error_of = [](const swarm::BlockingError& b) {
+      return b.plateau ? std::optional<double>(b.se) : std::nullopt;
+    };
+    if (a.P) put(r, "P", a.P->mean, error_of(*a.P));
+    if (a.T) put(r, "T", a.T->mean, error_of(*a.T));
   }
   if (samples.size() > 1) fill_series(r, samples);
   for (std::size_t k = 0; k < run.stages().size(); ++k) {
     const swarm::Stage& st = run.stages()[k];
     const std::string stage = "stage" + std::to_string(k + 1);
+    // A stage without hits has a pressure (0) but no temperature.
+    const double T = st.hits > 0 ? st.T : NAN;
     put(r, stage + ".P", st.P);
-    put(r, stage + ".T", st.T);
+    put(r, stage + ".T", T);
     r.stage_V.push_back(st.V);
     r.stage_P.push_back(st.P);
-    r.stage_T.push_back(st.T);
+    r.stage_T.push_back(T);
   }
   if (!run.stages().empty()) {
     const swarm::StageFits f = run.fits();
@@ -170,13 +182,15 @@ RecordRead parse_record(const std::string& text) {
   }
   for (const auto& [name, v] : values->items()) {
     RunValue x;
-    if (!v.is_object() || !read_number(v, "value", x.value, e)) {
-      e = "values." + name + ": " + (e.empty() ? "not an object" : e);
+    const std::string where = "values." + name + ".";
+    if (!v.is_object()) {
+      e = "values." + name + ": not an object";
       return out;
     }
+    if (!read_number(v, "value", x.value, e, where)) return out;
     if (v.contains("se")) {
       double se = 0;
-      if (!read_number(v, "se", se, e)) return out;
+      if (!read_number(v, "se", se, e, where)) return out;
       x.se = se;
     }
     r.values[name] = x;
@@ -187,10 +201,11 @@ RecordRead parse_record(const std::string& text) {
     e = "series, stages: missing or not objects";
     return out;
   }
-  if (!read_array(*series, "t", r.t, e) || !read_array(*series, "P", r.P, e) ||
-      !read_array(*series, "T", r.T, e) || !read_array(*series, "R", r.R, e) ||
-      !read_array(*stages, "V", r.stage_V, e) || !read_array(*stages, "P", r.stage_P, e) ||
-      !read_array(*stages, "T", r.stage_T, e))
+  if (!read_array(*series, "t", r.t, e, "series.") || !read_array(*series, "P", r.P, e, "series.") ||
+      !read_array(*series, "T", r.T, e, "series.") || !read_array(*series, "R", r.R, e, "series.") ||
+      !read_array(*stages, "V", r.stage_V, e, "stages.") ||
+      !read_array(*stages, "P", r.stage_P, e, "stages.") ||
+      !read_array(*stages, "T", r.stage_T, e, "stages."))
     return out;
   if (r.P.size() != r.t.size() || r.T.size() != r.t.size() || r.R.size() != r.t.size() ||
       r.stage_P.size() != r.stage_V.size() || r.stage_T.size() != r.stage_V.size()) {

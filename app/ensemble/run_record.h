@@ -47,7 +47,8 @@ struct RunRecord {
   std::map<std::string, RunValue> values;
   /// The wall series, at most kSeriesPoints; T is NAN (null in the file) where nothing hit.
   std::vector<double> t, P, T, R;
-  std::vector<double> stage_V, stage_P, stage_T;  ///< expansions: one per stage
+  /// Expansions: one per stage; T is NAN (null in the file) for a stage without hits.
+  std::vector<double> stage_V, stage_P, stage_T;
 };
 
 /// The record of a finished (or failed) run.

@@ -60,8 +60,9 @@ SweepRead read_sweep(const std::string& text, const std::string& sweep_path) {
   }
   Sweep sweep;
   if (j.contains("seeds")) {
-    if (!j["seeds"].is_number_integer() || j["seeds"].get<long>() < 1) {
-      out.error = "seeds: must be a whole number >= 1";
+    if (!j["seeds"].is_number_integer() || j["seeds"].get<long>() < 1 ||
+        j["seeds"].get<long>() > 1000000) {
+      out.error = "seeds: must be a whole number from 1 to 1,000,000";
       return out;
     }
     sweep.seeds = j["seeds"].get<long>();

@@ -96,7 +96,8 @@ Resolved resolve(const std::string& path) {
 /// and sets name.
 int create_unique(const std::string& target, std::string& name) {
   static std::atomic<unsigned> counter{0};
-  static std::mt19937_64 random{std::random_device{}()};
+  // One generator per thread: an ensemble's runs write their records at once.
+  thread_local std::mt19937_64 random{std::random_device{}()};
   // A long file name leaves room for the suffix within NAME_MAX (255).
   const std::string base = name_of(target).substr(0, 120);
   for (int attempt = 0; attempt < 16; ++attempt) {

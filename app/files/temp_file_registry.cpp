@@ -6,6 +6,7 @@
 #include <climits>
 #include <csignal>
 #include <cstring>
+#include <mutex>
 #include <utility>
 
 namespace swarmlab {
@@ -18,6 +19,9 @@ char slot_path[kSlots][PATH_MAX];
 volatile std::sig_atomic_t slot_used[kSlots];
 
 struct sigaction previous_int, previous_term;
+// Threads (an ensemble's runs) register files at once: one at a time claims a slot. The
+// handler takes no lock; it reads only raised flags.
+std::mutex slots_lock;
 
 void remove_temp_files(int number) {
   for (int i = 0; i < kSlots; ++i)
@@ -53,6 +57,7 @@ void install_handlers() {
 
 bool register_temp_file(const std::string& path) {
   if (path.size() >= PATH_MAX) return false;
+  std::lock_guard<std::mutex> hold(slots_lock);
   install_handlers();
   for (int i = 0; i < kSlots; ++i)
     if (!slot_used[i]) {
@@ -64,6 +69,7 @@ bool register_temp_file(const std::string& path) {
 }
 
 void unregister_temp_file(const std::string& path) {
+  std::lock_guard<std::mutex> hold(slots_lock);
   for (int i = 0; i < kSlots; ++i)
     if (slot_used[i] && path == slot_path[i]) {
       slot_used[i] = 0;

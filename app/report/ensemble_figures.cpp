@@ -42,6 +42,35 @@ void add_band(Panel& panel, const std::vector<double>& x, const json& band, cons
   }
 }
 
+/// The figures of one set of bands (a plain ensemble's, or one sweep point's).
+void add_band_figures(std::vector<NamedFigure>& out, const json& bands, long runs,
+                      const std::string& point, const std::string& prefix) {
+  const std::string subtitle = (point.empty() ? "" : point + "; ") + std::to_string(runs) +
+                               " runs; lines: the mean over runs, thin lines: its 95 % interval";
+  if (bands.contains("time")) {
+    const json& b = bands.at("time");
+    const std::vector<double> t = numbers(b.at("t"));
+    Figure f{"Wall pressure and temperature over time, ensemble", subtitle, {}, true};
+    Panel P{{"time t", "time"}, {"pressure P", "", false, true}};
+    add_band(P, t, b.at("P"), "P", 0, false);
+    Panel T{{"time t", "time"}, {"temperature T", "energy", false, true}};
+    add_band(T, t, b.at("T"), "T", 1, false);
+    f.panels = {P, T};
+    out.push_back({prefix + "ensemble-time", f});
+  }
+  if (bands.contains("stages")) {
+    const json& b = bands.at("stages");
+    const std::vector<double> V = numbers(b.at("V"));
+    Figure f{"Stage pressure and temperature against volume, ensemble", subtitle, {}, true};
+    Panel P{{"volume V", "length³", true}, {"pressure P", "", true}};
+    add_band(P, V, b.at("P"), "P", 0, true);
+    Panel T{{"volume V", "length³", true}, {"temperature T", "energy", true}};
+    add_band(T, V, b.at("T"), "T", 1, true);
+    f.panels = {P, T};
+    out.push_back({prefix + "ensemble-stages", f});
+  }
+}
+
 }  // namespace
 
 EnsembleFigures ensemble_figures(const std::string& report_text) {
@@ -52,30 +81,16 @@ EnsembleFigures ensemble_figures(const std::string& report_text) {
     return out;
   }
   try {
-    const std::string subtitle = std::to_string(r.at("runs").get<long>()) +
-                                 " runs; lines: the mean over runs, thin lines: its 95 % interval";
-    const json& bands = r.at("bands");
-    if (bands.contains("time")) {
-      const json& b = bands.at("time");
-      const std::vector<double> t = numbers(b.at("t"));
-      Figure f{"Wall pressure and temperature over time, ensemble", subtitle, {}, true};
-      Panel P{{"time t", "time"}, {"pressure P", "", false, true}};
-      add_band(P, t, b.at("P"), "P", 0, false);
-      Panel T{{"time t", "time"}, {"temperature T", "energy", false, true}};
-      add_band(T, t, b.at("T"), "T", 1, false);
-      f.panels = {P, T};
-      out.figures.push_back({"ensemble-time", f});
-    }
-    if (bands.contains("stages")) {
-      const json& b = bands.at("stages");
-      const std::vector<double> V = numbers(b.at("V"));
-      Figure f{"Stage pressure and temperature against volume, ensemble", subtitle, {}, true};
-      Panel P{{"volume V", "length³", true}, {"pressure P", "", true}};
-      add_band(P, V, b.at("P"), "P", 0, true);
-      Panel T{{"volume V", "length³", true}, {"temperature T", "energy", true}};
-      add_band(T, V, b.at("T"), "T", 1, true);
-      f.panels = {P, T};
-      out.figures.push_back({"ensemble-stages", f});
+    if (r.contains("points")) {
+      // A sweep: each point's bands, named by its number, its values in the subtitle.
+      const json& points = r.at("points");
+      for (std::size_t p = 0; p < points.size(); ++p)
+        if (points[p].contains("bands"))
+          add_band_figures(out.figures, points[p].at("bands"), points[p].at("runs").get<long>(),
+                           "point " + std::to_string(p) + " " + points[p].at("values").dump(),
+                           "point" + std::to_string(p) + "-");
+    } else if (r.contains("bands")) {
+      add_band_figures(out.figures, r.at("bands"), r.at("runs").get<long>(), "", "");
     }
   } catch (const json::exception& e) {
     out.figures.clear();

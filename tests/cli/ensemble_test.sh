@@ -114,6 +114,12 @@ cp "$work/other/runs/1.json" "$work/local/runs/1.json"
 rm -f "$work/local/report.json"
 refused mixed "runs/1.json: a run of another preset" "$bin" merge "$work/local"
 [ ! -e "$work/local/report.json" ] && ok || bad "mixed: a report was written"
+# A run whose seed is not the plan's (an edited manifest line) is named, not merged.
+python3 - "$work/here/runs/4.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1])); r["seed"] += 1; json.dump(r, open(sys.argv[1], "w"))
+PY
+refused wrong-seed "runs/4.json: started from seed" "$bin" merge "$work/here"
 mkdir -p "$work/empty"
 refused empty "plan.json: missing: not an ensemble folder" "$bin" merge "$work/empty"
 "$bin" plan "$work/gas.json" --seeds 3 --out "$work/none" --quiet
@@ -154,6 +160,8 @@ fi
 "$bin" plan "$work/sweep.json" --out "$work/sweep-plan" --quiet &&
   [ "$(wc -l <"$work/sweep-plan/manifest.txt")" -eq 12 ] &&
   grep -q "sweep-plan/points/3.json' --seed" "$work/sweep-plan/manifest.txt" && ok || bad "sweep manifest"
+"$bin" report "$work/sweep/report.json" --plots "$work/sweep/figures" --quiet &&
+  [ -s "$work/sweep/figures/point3-ensemble-time.svg" ] && ok || bad "report of a sweep"
 (cd "$work" && bash sweep-plan/manifest.txt >/dev/null) && cmp -s "$work/sweep/runs/7.json" "$work/sweep-plan/runs/7.json" &&
   ok || bad "a sweep's manifest line gives another run"
 printf '{"preset": "gas.json", "grid": {"particles.countt": [100, 300]}, "seeds": 3}' >"$work/sweep-bad.json"

@@ -50,7 +50,7 @@ TEST_CASE("sweep: each wrong key or value is one message naming it") {
   CHECK(read_sweep(R"({"preset": "base.json", "grid": {"J": [1]}, "points": [{"J": 1}]})", at).error ==
         "grid, points: give one of them");
   CHECK(read_sweep(R"({"preset": "base.json", "grid": {"J": [1]}, "seeds": 0})", at).error ==
-        "seeds: must be a whole number >= 1");
+        "seeds: must be a whole number from 1 to 1,000,000");
   CHECK(read_sweep(R"({"preset": "base.json", "grid": {"J": [1]}, "colour": 1})", at).error.find("colour: unknown key") == 0);
   fs::remove_all(dir);
 }
