@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/splitmix.h"
+
 namespace swarm {
 namespace {
 
@@ -56,13 +58,6 @@ double invert(F f, double p, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
-/// splitmix64: the resamples' counter-based generator.
-std::uint64_t mix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 }  // namespace
 
@@ -132,10 +127,10 @@ std::optional<BootstrapInterval> bca_interval(std::size_t runs, const RunStatist
 
   std::vector<double> replicas(static_cast<std::size_t>(resamples));
   std::vector<std::size_t> pick(runs);
-  const std::uint64_t key = mix(seed);
+  const std::uint64_t key = splitmix64(seed);
   for (int b = 0; b < resamples; ++b) {
     for (std::size_t i = 0; i < runs; ++i) {
-      const std::uint64_t r = mix(key ^ mix((std::uint64_t(b) << 32) + i));
+      const std::uint64_t r = splitmix64(key ^ splitmix64((std::uint64_t(b) << 32) + i));
       pick[i] = std::size_t(r % runs);  // bias below 2^-40 for any runs this merge sees
     }
     replicas[std::size_t(b)] = statistic(pick);

@@ -3,17 +3,10 @@
 #include <cmath>
 
 #include "math/portable_math.h"
+#include "math/splitmix.h"
 
 namespace swarm {
 namespace {
-
-/// SplitMix64's finaliser: a bijection of 64 bits whose outputs pass BigCrush as a counter
-/// generator.
-std::uint64_t mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 /// (0, 1]: the top 53 bits, plus one, over 2^53; never 0, so its log is finite.
 double unit_interval(std::uint64_t bits) { return double((bits >> 11) + 1) * 0x1.0p-53; }
@@ -21,8 +14,9 @@ double unit_interval(std::uint64_t bits) { return double((bits >> 11) + 1) * 0x1
 }  // namespace
 
 void thermal_uniforms(const ThermalDraw& key, double u[3]) {
-  const std::uint64_t base = mix(mix(key.step + 0x9e3779b97f4a7c15ULL) ^ key.particle);
-  for (int i = 0; i < 3; ++i) u[i] = unit_interval(mix(base + std::uint64_t(i + 1) * 0x9e3779b97f4a7c15ULL));
+  const std::uint64_t base = splitmix64_mix(splitmix64(key.step) ^ key.particle);
+  for (int i = 0; i < 3; ++i)
+    u[i] = unit_interval(splitmix64_mix(base + std::uint64_t(i + 1) * kSplitmix64Gamma));
 }
 
 void reemit_from_thermal_wall(Particle& p, double Tw, const ThermalDraw& key, WallTally& tally) {

@@ -2,19 +2,10 @@
 
 #include <cmath>
 
+#include "math/splitmix.h"
 #include "swarm/physics/diagnostics.h"
 
 namespace swarm {
-namespace {
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-}  // namespace
 
 std::uint64_t run_seed(std::uint64_t master, std::uint64_t index) {
   return splitmix64(splitmix64(master) ^ index) >> 11;  // 53 bits: exact in any JSON reader
