@@ -27,6 +27,15 @@ double energy_with_gravity(const System& s, const Vec3& g) {
   return total_energy(s) + gravity_potential_energy(s, g);
 }
 
+/// An engine for s under gravity g above the floor z = 0 of restitution e.
+std::unique_ptr<Engine> on_floor(const System& s, CollisionMode mode, const Vec3& g, double e) {
+  EngineConfig config;
+  config.collisions = mode;
+  config.forces.gravity = g;
+  config.floor = Floor{0, e};
+  return make_engine(s, config);
+}
+
 }  // namespace
 
 TEST_CASE("a floor bounce: v_z -> -e v_z, the lost kinetic energy booked as negative work") {
@@ -47,11 +56,7 @@ TEST_CASE("an elastic floor under gravity: energy kept to rounding over thousand
     const std::string mode_name(name_of(mode));
     CAPTURE(mode_name);
     const System s = swarm_above_floor();
-    EngineConfig config;
-    config.collisions = mode;
-    config.forces.gravity = g;
-    config.floor = Floor{0, 1};
-    auto engine = make_engine(s, config);
+    auto engine = on_floor(s, mode, g, 1);
     const double E0 = energy_with_gravity(s, g);
     const Vec3 V0 = cm_velocity(s);
     std::int64_t bounces = 0;
@@ -95,11 +100,7 @@ TEST_CASE("an inelastic floor: the swarm comes to rest on it and never ends a st
     const std::string mode_name(name_of(mode));
     CAPTURE(mode_name);
     const System s = swarm_above_floor();
-    EngineConfig config;
-    config.collisions = mode;
-    config.forces.gravity = g;
-    config.floor = Floor{0, 0.5};
-    auto engine = make_engine(s, config);
+    auto engine = on_floor(s, mode, g, 0.5);
     EnergyBooks books;
     double lowest = 1;
     for (int i = 0; i < 4000; ++i) {
