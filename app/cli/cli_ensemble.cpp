@@ -4,9 +4,7 @@
 #include <atomic>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 #include <thread>
 
 #include "cli/cli.h"
@@ -16,7 +14,7 @@
 #include "ensemble/merge.h"
 #include "ensemble/sweep.h"
 #include "files/atomic_file.h"
-#include "files/preset_file.h"
+#include "files/text_file.h"
 #include "swarm/preset/ensemble_seed.h"
 
 namespace swarmlab {
@@ -30,13 +28,6 @@ int fail(const std::string& message) {
   return 1;
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 /// The ensemble's folder made or checked, its plan and presets written: "" or why not.
 struct Prepared {
   std::string error;
@@ -47,17 +38,13 @@ struct Prepared {
 
 Prepared prepare(const EnsembleOptions& o, int jobs) {
   Prepared out;
-  std::ifstream in(o.preset_path, std::ios::binary);
-  if (!in) {
-    out.error = o.preset_path + ": cannot open the file";
-    return out;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read once: the text is a sweep or a preset.
+  const std::string text = read_text_file(o.preset_path, out.error);
+  if (!out.error.empty()) return out;
   long seeds = o.seeds;
   std::vector<PlanPoint> points;
-  if (is_sweep(text.str())) {
-    SweepRead sweep = read_sweep(text.str(), o.preset_path);
+  if (is_sweep(text)) {
+    SweepRead sweep = read_sweep(text, o.preset_path);
     if (!sweep.sweep) {
       out.error = o.preset_path + ": " + sweep.error;
       return out;
@@ -68,9 +55,9 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
       out.presets.push_back(std::move(p.preset));
     }
   } else {
-    const swarm::PresetParse parsed = read_preset_file(o.preset_path);
+    const swarm::PresetParse parsed = swarm::parse_preset(text);
     if (!parsed.preset) {
-      out.error = parsed.error;
+      out.error = o.preset_path + ": " + parsed.error;
       return out;
     }
     points.push_back({"{}", preset_hash(*parsed.preset)});
@@ -127,7 +114,8 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
     return out;
   }
   if (fs::exists(plan_path(out.dir))) {
-    const PlanRead old = parse_plan(read_text(plan_path(out.dir)));
+    std::string unreadable;
+    const PlanRead old = parse_plan(read_text_file(plan_path(out.dir), unreadable));
     const EnsemblePlan& p = out.plan;
     if (!old.plan) {
       out.error = plan_path(out.dir) + ": " + old.error;

@@ -1,8 +1,7 @@
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "cli/cli.h"
+#include "files/text_file.h"
 #include "report/ensemble_figures.h"
 #include "report/plot_files.h"
 #include "report/report.h"
@@ -13,10 +12,8 @@ namespace {
 
 /// The file's text when it is an ensemble report (swarmlab merge), else "".
 std::string ensemble_report_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  const std::string text = s.str();
+  std::string unreadable;  // read_result_file says what is wrong with the file
+  const std::string text = read_text_file(path, unreadable);
   return text.find(report::kEnsembleReportFormat) != std::string::npos &&
                  text.find("\"format\"") != std::string::npos
              ? text

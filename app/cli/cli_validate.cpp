@@ -2,6 +2,7 @@
 
 #include "cli/cli.h"
 #include "lessons/lesson_file.h"
+#include "files/text_file.h"
 
 namespace swarmlab {
 namespace {

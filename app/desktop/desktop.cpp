@@ -18,6 +18,7 @@
 #include "ui/parallel_dom/items_json.h"
 #include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/preset_store.h"
+#include "files/text_file.h"
 
 namespace swarmlab {
 namespace {

@@ -3,12 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
+#include "files/text_file.h"
 #include "report/ensemble_figures.h"
 #include "swarm/measure/confidence.h"
 #include "swarm/measure/fit.h"
@@ -19,15 +18,6 @@ namespace {
 
 using json = nlohmann::json;
 namespace fs = std::filesystem;
-
-bool read_text(const std::string& path, std::string& out) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream s;
-  s << in.rdbuf();
-  out = s.str();
-  return bool(in) || in.eof();
-}
 
 json interval_json(const swarm::MeanInterval& m) {
   json j = {{"mean", m.mean}, {"sd", m.sd}, {"se", m.se}};
@@ -109,12 +99,13 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
   }
   for (long k = 0; k < runs; ++k) {
     const std::string path = run_path(dir, k);
-    std::string text;
     if (!fs::exists(path, ec)) {
       scan.missing.push_back(k);
       continue;
     }
-    if (!read_text(path, text)) {
+    std::string unreadable;
+    const std::string text = read_text_file(path, unreadable);
+    if (!unreadable.empty()) {
       scan.corrupted.push_back({k, "cannot be read"});
       continue;
     }
@@ -288,8 +279,9 @@ std::vector<long> of_point(const std::vector<long>& runs, const EnsemblePlan& pl
 
 MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
   MergeReport out;
-  std::string text;
-  if (!read_text(plan_path(dir), text)) {
+  std::string unreadable;
+  const std::string text = read_text_file(plan_path(dir), unreadable);
+  if (!unreadable.empty()) {
     out.error = plan_path(dir) +
                 ": missing: not an ensemble folder (swarmlab plan or swarmlab ensemble makes one)";
     return out;

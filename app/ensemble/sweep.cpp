@@ -1,9 +1,9 @@
 #include "ensemble/sweep.h"
 
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
+
+#include "files/text_file.h"
 
 
 namespace swarmlab::ensemble {
@@ -111,14 +111,13 @@ SweepRead read_sweep(const std::string& text, const std::string& sweep_path) {
   namespace fs = std::filesystem;
   const std::string base_path =
       (fs::path(sweep_path).parent_path() / j["preset"].get<std::string>()).string();
-  std::ifstream in(base_path, std::ios::binary);
-  if (!in) {
-    out.error = "preset: " + base_path + ": cannot open the file";
+  std::string unreadable;
+  const std::string base_text = read_text_file(base_path, unreadable);
+  if (!unreadable.empty()) {
+    out.error = "preset: " + unreadable;
     return out;
   }
-  std::ostringstream s;
-  s << in.rdbuf();
-  const json base = json::parse(s.str(), nullptr, false);
+  const json base = json::parse(base_text, nullptr, false);
   if (base.is_discarded() || !base.is_object()) {
     out.error = "preset: " + base_path + ": not valid JSON";
     return out;

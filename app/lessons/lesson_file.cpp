@@ -7,6 +7,7 @@
 
 #include "files/preset_file.h"
 #include "swarm/preset/printable_text.h"
+#include "files/text_file.h"
 
 namespace swarmlab {
 
@@ -29,18 +30,6 @@ PresetLookup shipped_preset_lookup(std::string directory) {
     out = read_preset_file(directory + "/" + name);
     return out;
   };
-}
-
-std::string read_text_file(const std::string& path, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = path + ": cannot open the file";
-    return {};
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) error = path + ": cannot read the file";
-  return text.str();
 }
 
 LessonParse read_lesson_file(const std::string& path, const PresetLookup& lookup) {

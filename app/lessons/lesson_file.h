@@ -22,7 +22,4 @@ LessonParse read_lesson_file(const std::string& path, const PresetLookup& lookup
 std::vector<Lesson> load_shipped_lessons(const std::string& directory, const PresetLookup& lookup,
                                          std::string& problems);
 
-/// The whole file as text, or an error message "PATH: cannot ..." in `error`.
-std::string read_text_file(const std::string& path, std::string& error);
-
 }  // namespace swarmlab

@@ -13,6 +13,7 @@
 #include "swarm/measure/thermometry.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
+#include "files/text_file.h"
 
 namespace swarmlab {
 namespace {
