@@ -49,8 +49,9 @@ if command -v parallel >/dev/null; then
   parallel --will-cite --joblog "$work/local/joblog" --resume-failed -S : <"$work/local/manifest.txt" &&
     same_runs "$work/local" && same_report "$work/local" && ok || bad "GNU parallel -S : gives other runs"
   # Two hosts: an ssh stand-in that runs the command here, whatever host it is given
-  # (parallel calls it as: HOST -- COMMAND...).
-  printf '#!/bin/sh\nshift\n[ "$1" = "--" ] && shift\nexec sh -c "$*"\n' >"$work/fake-ssh" && chmod +x "$work/fake-ssh"
+  # (parallel calls it as: HOST -- COMMAND...). A login over ssh sets SHELL, which parallel's
+  # remote wrapper execs; CI's environment may not have it (then every job silently does nothing).
+  printf '#!/bin/sh\nshift\n[ "$1" = "--" ] && shift\nexport SHELL=/bin/sh\nexec sh -c "$*"\n' >"$work/fake-ssh" && chmod +x "$work/fake-ssh"
   "$bin" plan "$work/gas.json" --seeds 6 --seed 11 --out "$work/hosts" --quiet &&
     parallel --will-cite --ssh "$work/fake-ssh" -S 1/host-a,1/host-b <"$work/hosts/manifest.txt" &&
     same_runs "$work/hosts" && same_report "$work/hosts" && ok || bad "GNU parallel on two hosts gives other runs"
