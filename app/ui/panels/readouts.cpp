@@ -61,13 +61,23 @@ void format_estimate(char* out, std::size_t size, double v, const std::optional<
     std::snprintf(out, size, "%.4g", v);
 }
 
-/// P and T over the plots' averaging window, with standard errors from its sub-windows.
+/// Where the ± comes from, in a few words for the row and a sentence for its tooltip.
+const char* error_source_words(const swarm::WallEstimate& w) {
+  switch (w.source) {
+    case swarm::WallErrorSource::history: return "± from past windows";
+    case swarm::WallErrorSource::blocking: return "± rough (blocking)";
+    case swarm::WallErrorSource::none: break;
+  }
+  return "no ± yet";
+}
+
+/// P and T over the plots' averaging window, with their standard errors.
 void wall_rows(const swarm::WallEstimate& w) {
-  char value[96], window[160];
+  char value[96], window[240];
   std::snprintf(window, sizeof window,
                 " over the last %.4g of time (%d samples; the plots' 'average over', 0: the "
-                "whole run). ±: standard error of the %d sub-windows' values.",
-                w.window, w.intervals, w.blocks);
+                "whole run). ±: the standard error of that window's mean (see 'P, T over').",
+                w.window, w.intervals);
   if (w.intervals == 0) {
     row("P", "waiting for samples", "Wall pressure, once the first samples arrive.");
     return;
@@ -84,11 +94,22 @@ void wall_rows(const swarm::WallEstimate& w) {
   row("T", value,
       (std::string("T = half the mean kinetic energy of the particles hitting the wall "
                    "(k_B = 1)") + window).c_str());
-  std::snprintf(value, sizeof value, "last %.4g, %d parts", w.window, w.blocks);
-  row("P, T over", value,
+  std::snprintf(value, sizeof value, "last %.4g; %s", w.window, error_source_words(w));
+  char help[640];
+  const char* general =
       "The averaging window of P and T: the plots' 'average over' (Wall P, T tab), or the "
-      "whole run when it is 0. \u00b1 is the standard error of the means of its parts (batch "
-      "means); parts shorter than about a period understate it.");
+      "whole run when it is 0.\n\n± is how much the mean of a window this long varies, "
+      "measured from every window of the same length in the run's recent past at this wall";
+  if (w.source == swarm::WallErrorSource::history)
+    std::snprintf(help, sizeof help, "%s: here the last %.4g of time.", general, w.history);
+  else
+    std::snprintf(help, sizeof help,
+                  "%s, once it holds %.0f windows' worth. Until then (and for the whole run) "
+                  "± comes from blocking the window's own samples, which is too large for "
+                  "regular motion: each particle hits the wall at steady intervals, so a long "
+                  "window's mean varies less than its parts suggest.",
+                  general, swarm::kWallHistoryWindows);
+  row("P, T over", value, help);
 }
 
 }  // namespace

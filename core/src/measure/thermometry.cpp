@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "swarm/measure/blocking.h"
+
 namespace swarm {
 namespace {
 
@@ -30,18 +32,6 @@ struct WallSums {
     return w;
   }
 };
-
-/// Standard deviation of the values (n - 1) over sqrt(n); none for fewer than two values.
-std::optional<double> standard_error(const std::vector<double>& values) {
-  const std::size_t n = values.size();
-  if (n < 2) return std::nullopt;
-  double mean = 0;
-  for (double v : values) mean += v;
-  mean /= double(n);
-  double squares = 0;
-  for (double v : values) squares += (v - mean) * (v - mean);
-  return std::sqrt(squares / double(n - 1) / double(n));
-}
 
 std::vector<WallSums> prefix_sums(const std::vector<WallInterval>& intervals) {
   std::vector<WallSums> prefix(intervals.size() + 1);
@@ -94,8 +84,83 @@ std::vector<WallReading> windowed_wall_averages(const std::vector<WallInterval>&
   return out;
 }
 
-WallEstimate wall_estimate(const std::vector<WallInterval>& intervals, double window,
-                           int blocks) {
+namespace {
+
+/// The standard deviation of overlapping windows' means, as the error of one window's mean:
+/// the variance is corrected by history / (history - window) for the mean they share. None
+/// for fewer than two values.
+std::optional<double> overlapping_windows_error(const std::vector<double>& means,
+                                                double history, double window) {
+  const std::size_t n = means.size();
+  if (n < 2) return std::nullopt;
+  double mean = 0;
+  for (double m : means) mean += m;
+  mean /= double(n);
+  double squares = 0;
+  for (double m : means) squares += (m - mean) * (m - mean);
+  return std::sqrt(squares / double(n) * history / (history - window));
+}
+
+/// The errors from the history before the window [first, end) (see wall_estimate); false when
+/// there is too little of it at the wall's present radius.
+bool errors_from_history(const std::vector<WallInterval>& intervals, std::size_t first,
+                         double window, WallEstimate& e) {
+  const std::size_t n = intervals.size();
+  const double R = intervals.back().R, end = intervals.back().t_end;
+  for (std::size_t i = first; i < n; ++i)
+    if (intervals[i].R != R) return false;
+  auto start_of = [&](std::size_t i) { return intervals[i].t_end - intervals[i].duration; };
+  std::size_t h = first;  // the history is [h, n)
+  while (h > 0 && intervals[h - 1].R == R && start_of(h - 1) >= end - kWallHistoryLimit * window)
+    --h;
+  const double history = end - start_of(h);
+  if (history < kWallHistoryWindows * window) return false;
+
+  std::vector<WallSums> prefix(n - h + 1);  // prefix[k]: the sums over [h, h + k)
+  for (std::size_t i = h; i < n; ++i) {
+    prefix[i - h + 1] = prefix[i - h];
+    prefix[i - h + 1].add(intervals[i]);
+  }
+  std::vector<double> P, T;
+  std::size_t from = h;  // the window ending at interval j is [from, j]
+  for (std::size_t j = h; j < n; ++j) {
+    const double t = intervals[j].t_end;
+    if (t - window < start_of(h) - 1e-9 * window) continue;  // no whole window ends here yet
+    while (intervals[from].t_end <= t - window) ++from;
+    const WallReading r = prefix[j - h + 1].since(prefix[from - h]);
+    P.push_back(r.P);
+    if (r.hits > 0) T.push_back(r.T);
+  }
+  e.P_stderr = overlapping_windows_error(P, history, window);
+  e.T_stderr = overlapping_windows_error(T, history, window);
+  if (!e.P_stderr) return false;
+  e.source = WallErrorSource::history;
+  e.history = history;
+  return true;
+}
+
+/// The errors by blocking over the window's intervals [first, end): P as impulse over time,
+/// T as hit energy over hits, each interval weighted as wall_average weighs it.
+void errors_by_blocking(const std::vector<WallInterval>& intervals, std::size_t first,
+                        WallEstimate& e) {
+  std::vector<double> impulse, duration, hit_energy, hits;
+  for (std::size_t i = first; i < intervals.size(); ++i) {
+    const WallInterval& w = intervals[i];
+    impulse.push_back(w.reading.P * w.duration);
+    duration.push_back(w.duration);
+    hit_energy.push_back(w.reading.T * double(w.reading.hits));
+    hits.push_back(double(w.reading.hits));
+  }
+  const auto P = blocking_error_of_ratio(impulse, duration);
+  if (!P) return;
+  e.source = WallErrorSource::blocking;
+  e.P_stderr = P->se;
+  if (const auto T = blocking_error_of_ratio(hit_energy, hits)) e.T_stderr = T->se;
+}
+
+}  // namespace
+
+WallEstimate wall_estimate(const std::vector<WallInterval>& intervals, double window) {
   WallEstimate e;
   if (intervals.empty()) return e;
   const double end = intervals.back().t_end;
@@ -104,33 +169,11 @@ WallEstimate wall_estimate(const std::vector<WallInterval>& intervals, double wi
     first = 0;
   else
     while (first > 0 && intervals[first - 1].t_end > end - window) --first;
-  const std::size_t count = intervals.size() - first;
   e.mean = wall_average(intervals, first, intervals.size());
-  const double start = intervals[first].t_end - intervals[first].duration;
-  e.window = end - start;
-  e.intervals = int(count);
-  e.blocks = int(std::min<std::size_t>(std::size_t(std::max(blocks, 1)), count));
-  if (e.blocks < 2 || !(e.window > 0)) return e;
-
-  // Each interval to the sub-window its end falls in; [begin[b], begin[b + 1]) is block b.
-  std::vector<std::size_t> begin(std::size_t(e.blocks) + 1, intervals.size());
-  std::size_t i = first;
-  for (int b = 0; b < e.blocks; ++b) {
-    begin[std::size_t(b)] = i;
-    const double block_end = start + e.window * double(b + 1) / double(e.blocks);
-    while (i < intervals.size() && (intervals[i].t_end <= block_end || b == e.blocks - 1)) ++i;
-  }
-  std::vector<double> P, T;
-  for (int b = 0; b < e.blocks; ++b) {
-    const std::size_t from = begin[std::size_t(b)], to = begin[std::size_t(b) + 1];
-    if (from == to) continue;
-    const WallReading r = wall_average(intervals, from, to);
-    P.push_back(r.P);
-    if (r.hits > 0) T.push_back(r.T);
-  }
-  e.blocks = int(P.size());
-  e.P_stderr = standard_error(P);
-  e.T_stderr = standard_error(T);
+  e.window = end - (intervals[first].t_end - intervals[first].duration);
+  e.intervals = int(intervals.size() - first);
+  if (window > 0 && errors_from_history(intervals, first, window, e)) return e;
+  errors_by_blocking(intervals, first, e);
   return e;
 }
 

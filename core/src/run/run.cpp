@@ -24,7 +24,7 @@ std::vector<WallInterval> wall_intervals(const std::vector<Sample>& samples) {
   std::vector<WallInterval> out;
   for (std::size_t i = 1; i < samples.size(); ++i) {
     const Sample& s = samples[i];
-    out.push_back({s.t, s.t - samples[i - 1].t, {s.P, s.T, s.hits}});
+    out.push_back({s.t, s.t - samples[i - 1].t, {s.P, s.T, s.hits}, s.R});
   }
   return out;
 }
