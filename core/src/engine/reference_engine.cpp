@@ -95,7 +95,8 @@ class ReferenceEngine final : public Engine {
         if (!(predicted.particles[i].r.squaredNorm() > R2)) continue;
         if (config_.wall_temperature) {
           if (moving_outward(p))
-            reemit_from_thermal_wall(p, *config_.wall_temperature, {steps_, i}, tally);
+            reemit_from_thermal_wall(p, *config_.wall_temperature,
+                                     {steps_, i, config_.wall_stream}, tally);
         } else if (path_) {
           if (p.v.dot(p.r.normalized()) > u) reflect_off_moving_wall(p, u, tally);
         } else if (moving_outward(p)) {

@@ -14,7 +14,9 @@ double unit_interval(std::uint64_t bits) { return double((bits >> 11) + 1) * 0x1
 }  // namespace
 
 void thermal_uniforms(const ThermalDraw& key, double u[3]) {
-  const std::uint64_t base = splitmix64_mix(splitmix64(key.step) ^ key.particle);
+  // The finaliser maps stream 0 to 0: a run without a stream draws as before streams existed.
+  const std::uint64_t base =
+      splitmix64_mix(splitmix64(key.step) ^ key.particle ^ splitmix64_mix(key.stream));
   for (int i = 0; i < 3; ++i)
     u[i] = unit_interval(splitmix64_mix(base + std::uint64_t(i + 1) * kSplitmix64Gamma));
 }

@@ -36,6 +36,8 @@ RunPlan run_plan(const Preset& p) {
   plan.engine.floor = p.floor;
   plan.engine.wall_moves = p.wall_moves;
   plan.engine.wall_temperature = p.wall_temperature;
+  // A generated swarm's seed is the run's: an ensemble's runs then draw their own wall noise.
+  if (const auto* swarm = std::get_if<SwarmSpec>(&p.particles)) plan.engine.wall_stream = swarm->seed;
   plan.engine.sphere_radius = p.sphere_radius;
   plan.dt = p.dt;
   plan.steps = step_count(p);

@@ -42,13 +42,15 @@ TEST_CASE("reemit_from_thermal_wall draws the flux-weighted Maxwellian, and book
 }
 
 TEST_CASE("thermal_uniforms: the same key gives the same draws, and neighbouring keys differ") {
-  double a[3], b[3], c[3];
+  double a[3], b[3], c[3], d[3];
   thermal_uniforms({5, 9}, a);
   thermal_uniforms({5, 9}, b);
   thermal_uniforms({5, 10}, c);
+  thermal_uniforms({5, 9, 1}, d);  // another run's stream
   for (int i = 0; i < 3; ++i) {
     CHECK(a[i] == b[i]);
     CHECK(a[i] != c[i]);
+    CHECK(a[i] != d[i]);
     CHECK(a[i] > 0);
     CHECK(a[i] <= 1);
   }

@@ -31,6 +31,9 @@ TEST_CASE("with_seed: a generated swarm takes the seed; listed particles need a 
   REQUIRE(b.preset);
   CHECK(std::get<SwarmSpec>(a.preset->particles).seed == 7);
   CHECK(initial_system(*a.preset).particles[0].r != initial_system(*b.preset).particles[0].r);
+  // A hot wall's noise is the run's own too: its draws are keyed on the seed.
+  CHECK(run_plan(*a.preset).engine.wall_stream == 7);
+  CHECK(run_plan(*b.preset).engine.wall_stream == 8);
 
   Preset listed;
   listed.particles = std::vector<Particle>{{1, {0.5, 0, 0}, {0, 1, 0}}, {1, {-0.5, 0, 0}, {0, -1, 0}}};

@@ -2,6 +2,7 @@
 /// The one interface behind which every way of running a system lives, with or without a
 /// container: the UI, the CLI and the benchmarks only talk to an Engine.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -35,6 +36,7 @@ struct EngineConfig {
   // collisions only): swarm/physics/wall_motion.h, swarm/physics/thermal_wall.h, swarm/physics/hard_spheres.h.
   std::vector<WallMove> wall_moves;        ///< the wall's path from container_radius at t = 0
   std::optional<double> wall_temperature;  ///< a thermal wall at this T (energy units, k_B = 1)
+  std::uint64_t wall_stream = 0;  ///< the thermal wall's draws are keyed on it (ThermalDraw)
   std::optional<double> sphere_radius;     ///< hard spheres of this radius (length)
 
   /// Whether energy comes or goes other than between the particles and their springs: a

@@ -14,11 +14,16 @@
 namespace swarm {
 
 /// The random numbers of one re-emission come from a counter-based generator keyed on the
-/// step and the particle, not from a stream: any engine, thread or order of hits gives the
-/// same draws, and they are the same bits natively and in wasm (the core's own log, sin, cos).
+/// run, the step and the particle, not from a stream: any engine, thread or order of hits
+/// gives the same draws, and they are the same bits natively and in wasm (the core's own log,
+/// sin, cos).
 struct ThermalDraw {
   std::uint64_t step = 0;      ///< the engine's step count
   std::uint64_t particle = 0;  ///< the particle's index
+  /// The run's own key (EngineConfig::wall_stream, a generated swarm's seed): the runs of an
+  /// ensemble differ in it, so the same particle hitting in the same step of two runs does not
+  /// draw the same velocity.
+  std::uint64_t stream = 0;
 };
 
 /// Three numbers uniform in (0, 1] for the re-emission keyed by `key`.
