@@ -2,6 +2,8 @@
 # so the desktop and the page carry their languages inside the binary.
 # Usage: cmake -DINPUT_DIR=assets/i18n -DOUTPUT=file.cpp -P embed_tables.cmake
 file(GLOB tables "${INPUT_DIR}/*.json")
+# English is the keys themselves: it needs no table in the binary.
+list(FILTER tables EXCLUDE REGEX "/en\\.json$")
 list(SORT tables)
 set(entries "")
 set(bodies "")
