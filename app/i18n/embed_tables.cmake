@@ -20,7 +20,7 @@ file(WRITE "${OUTPUT}.tmp"
   "#include \"i18n/embedded_tables.h\"\n\n"
   "namespace swarmlab {\nnamespace {\n${bodies}}  // namespace\n\n"
   "std::string_view embedded_table(std::string_view code) {\n"
-  "  static const struct { std::string_view code, text; } all[] = {\n${entries}  };\n"
+  "  static const struct { std::string_view code, text; } all[] = {\n${entries}    {{}, {}},  // the end (and the whole list while only English ships)\n  };\n"
   "  for (const auto& t : all)\n    if (t.code == code) return t.text;\n  return {};\n}\n\n"
   "}  // namespace swarmlab\n")
 # Only a changed table touches the source, so an unchanged build compiles nothing.
