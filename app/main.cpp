@@ -45,6 +45,11 @@ int main(int argc, char** argv) {
   app.add_flag("--lesson-summary", lesson_summary,
                "With a lesson file: open its summary, as after Finish (the screenshot test)");
 
+  std::string lang;
+  app.add_option("--lang", lang,
+                 "Speak this language: en, es, de, fr, pt-BR or zh-CN (default: the one chosen "
+                 "last in View > Language, else the system's; English with --frames)");
+
   std::string items;
   app.add_option("--items", items,
                  "After every frame, write its items (role, name, rectangle) to this JSON "
@@ -169,7 +174,7 @@ int main(int argc, char** argv) {
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop(
       {window_preset, frames, screenshot, select, presentation, plot_tab, sound, lesson_summary,
-       items});
+       items, lang});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

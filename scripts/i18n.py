@@ -21,8 +21,8 @@ root = pathlib.Path(__file__).resolve().parent.parent
 tables = root / "assets" / "i18n"
 sources = [root / "app" / "ui", root / "app" / "access", root / "app" / "lessons", root / "web"]
 
-# tr("..."), tr_id("...") and tr_plain("..."): one or more adjacent literals, as C++ joins them.
-call = re.compile(r'\btr(?:_id)?\s*\(\s*((?:"(?:[^"\\\n]|\\.)*"\s*)+)\)')
+# tr("..."), tr_id("...") and tr_noop("..."): one or more adjacent literals, as C++ joins them.
+call = re.compile(r'\btr(?:_id|_noop)?\s*\(\s*((?:"(?:[^"\\\n]|\\.)*"\s*)+)\)')
 literal = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
 escape = re.compile(r'\\(u[0-9a-fA-F]{4}|U[0-9a-fA-F]{8}|x[0-9a-fA-F]{1,2}|[0-7]{1,3}|.)')
 simple = {"n": "\n", "t": "\t", '"': '"', "'": "'", "\\": "\\", "?": "?", "a": "\a", "0": "\0"}
@@ -92,7 +92,7 @@ def from_assets():
     return {t for t in found if t.strip()}
 
 
-conversion = re.compile(r"%[-+ #0-9.*hlLzjt]*[a-zA-Z%]")
+conversion = re.compile(r"%[-+#0-9.*hlLzjt]*[a-zA-Z%]")  # "15 % of" is prose, not a conversion
 choice = re.compile(r"\{[^{}\n]*\|[^{}\n]*\}")
 
 

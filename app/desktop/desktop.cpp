@@ -11,12 +11,14 @@
 
 #include "desktop/screenshot.h"
 #include "files/atomic_file.h"
+#include "i18n/language.h"
 #include "lessons/lesson_file.h"
 #include "ui/classroom/presentation.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/main_loop.h"
 #include "ui/parallel_dom/items_json.h"
 #include "ui/parallel_dom/parallel_dom.h"
+#include "ui/platform/language_memory.h"
 #include "ui/platform/preset_store.h"
 #include "files/text_file.h"
 
@@ -66,6 +68,11 @@ int run_desktop(const DesktopOptions& options) {
         std::fprintf(stderr, "error: %s\n", e.c_str());
         return 1;
       }
+  if (!options.language.empty() && !find_language(options.language)) {
+    std::fprintf(stderr, "error: --lang: \"%s\" is not a language Swarm Lab speaks (en, es, de, "
+                 "fr, pt-BR, zh-CN)\n", options.language.c_str());
+    return 2;
+  }
   std::string error;
   Frontend f;
   f.window = open_window("Swarm Lab", 1280, 720, error);
@@ -119,6 +126,14 @@ int run_desktop(const DesktopOptions& options) {
   }
   if (options.plot_tab > 0) f.app->state().plots.tab = plot_tab_numbered(options.plot_tab);
   if (options.presentation) set_presentation(f.app->state(), true);
+  // The language: asked for, else English in scripted runs (screenshots the same on every
+  // machine), else the one chosen last or the system's. Only a choice in the app is remembered.
+  LanguageChoice& language = f.app->state().language;
+  language.remember = options.frames == 0;
+  if (!options.language.empty())
+    language.pending = options.language;
+  else if (options.frames == 0)
+    language.pending = startup_language();
   if (options.sound) f.app->state().presentation.sound = true;
 
   // The first frames build fonts and buffers; the timing summary leaves them out.

@@ -17,6 +17,9 @@ struct DesktopOptions {
   /// After every frame, write its number and its items here as JSON (the parallel DOM's
   /// items_json: role, name, rectangle), so a test finds what to press by role and name.
   std::string items_path;
+  /// The language to speak (a code of app/i18n/language.h); empty: the one remembered, else
+  /// the system's, English in scripted runs (frames > 0).
+  std::string language;
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

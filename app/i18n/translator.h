@@ -44,6 +44,10 @@ class Translator {
 /// against long translations and every placeholder still works.
 std::string pseudo_text(std::string_view english);
 
+/// Marks a text for the tables where it is defined (an array of labels, say) and shown through
+/// tr() or tr_id() later, as gettext's N_(): scripts/i18n.py extract finds it.
+constexpr const char* tr_noop(const char* english) { return english; }
+
 /// The front end's translator (one UI thread).
 Translator& translator();
 inline const char* tr(const char* english) { return translator().text(english); }

@@ -115,6 +115,16 @@ struct Presentation {
   Theme saved_theme = Theme::dark;
 };
 
+/// The language the UI speaks (app/i18n/), and the one asked for: a new language may need another
+/// font atlas, so the main loop switches between frames.
+struct LanguageChoice {
+  std::string code = "en";
+  std::string pending;  ///< "" when none is asked for
+  /// Remember the choice for the next visit (View > Language, a link's #lang=); a scripted or
+  /// tested run does not.
+  bool remember = true;
+};
+
 /// Which part of the controls an edit came from, to show a refusal next to it.
 enum class Section { none, scenario, system, container, simulation, forces, walls };
 
@@ -160,6 +170,7 @@ struct AppState {
   SaveDialog save_dialog;  ///< save, export and quit dialogs (save_request.h)
   Layout layout;
   Presentation presentation;
+  LanguageChoice language;
   FrameStats stats;
   /// Stopwatch, period meter, P and T (Instruments::update feeds them every frame).
   Instruments instruments;

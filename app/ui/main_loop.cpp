@@ -7,11 +7,15 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cstdio>
 #include <deque>
 
+#include "i18n/speak.h"
 #include "ui/input/keyboard_regions.h"
 #include "ui/parallel_dom/parallel_dom.h"
+#include "ui/platform/cjk_font.h"
 #include "ui/platform/fonts.h"
+#include "ui/platform/language_memory.h"
 #include "ui/platform/gl_api.h"
 #include "ui/plots/plot_export.h"
 
@@ -144,11 +148,27 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
       f.app->request_close();
   }
 
-  // A new UI scale rebuilds the font atlas, which only may happen between frames, and not
-  // while a slider is being dragged.
+  // A new UI scale or language rebuilds the font atlas, which only may happen between frames,
+  // and not while a slider is being dragged; so does a font that arrived (Chinese, fetched).
   Layout& layout = f.app->state().layout;
+  LanguageChoice& language = f.app->state().language;
+  bool new_fonts = cjk_font_arrived();
+  if (!language.pending.empty() && !ImGui::IsAnyItemActive()) {
+    std::string error;
+    if (speak(language.pending, error)) {
+      language.code = language.pending;
+      if (language.remember) remember_language(language.code);
+      new_fonts = true;
+    } else {
+      std::fprintf(stderr, "swarmlab: %s\n", error.c_str());
+    }
+    language.pending.clear();
+  }
   if (layout.pending_ui_scale != layout.ui_scale && !ImGui::IsAnyItemActive()) {
     layout.ui_scale = layout.pending_ui_scale;
+    new_fonts = true;
+  }
+  if (new_fonts) {
     layout.resize_panels = true;
     apply_ui_scale(layout.ui_scale);
     ImGui_ImplOpenGL3_DestroyFontsTexture();

@@ -3,8 +3,9 @@
 
 namespace swarmlab {
 
-/// Rebuilds ImGui's font atlas and style for a UI scale (1 = 16 px text). Call between frames;
-/// the renderer's font texture must be recreated afterwards.
+/// Rebuilds ImGui's font atlas and style for a UI scale (1 = 16 px text), with the glyphs of
+/// the language in use (translator()). Call between frames; the renderer's font texture must be
+/// recreated afterwards.
 void apply_ui_scale(float scale);
 
 }  // namespace swarmlab
