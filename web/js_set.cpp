@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "i18n/language.h"
 #include "ui/classroom/presentation.h"
 #include "web_app.h"
 
@@ -55,6 +56,12 @@ const Key kKeys[] = {
      }},
     // The projector and the classroom (app/ui/classroom/presentation.h). Presentation comes after the
     // theme, so {presentation: true, theme: "dark"} is presentation mode, light.
+    // Applied between frames (a new font atlas); state().language follows on the next frame.
+    {"language", "must be a language code: \"en\", \"es\", \"de\", \"fr\", \"pt-BR\" or \"zh-CN\"",
+     [](const AppState&, const json& v) {
+       return v.is_string() && swarmlab::find_language(v.get<std::string>()) != nullptr;
+     },
+     [](AppState& s, const json& v) { s.language.pending = v.get<std::string>(); }},
     {"theme", "must be \"dark\" or \"light\"",
      [](const AppState&, const json& v) { return v == "dark" || v == "light"; },
      [](AppState& s, const json& v) {

@@ -98,6 +98,7 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["measured_period"] = period ? nlohmann::json(*period) : nlohmann::json(nullptr);
   // The projector and the classroom (app/ui/classroom/presentation.h).
   j["theme"] = swarmlab::theme_name(s.presentation.theme);
+  j["language"] = s.language.code;
   j["presentation"] = s.presentation.on;
   j["sound"] = s.presentation.sound;
   j["fullscreen"] = s.presentation.fullscreen;
