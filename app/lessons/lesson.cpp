@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "i18n/language.h"
 #include "lessons/device_words.h"
 #include "swarm/preset/printable_text.h"
 #include "swarm/preset/strict_json.h"
@@ -110,6 +111,17 @@ void check_prose(const std::string& text, const std::string& path) {
     if (paragraph_end) stars = 0;
   }
   if (const std::string problem = device_words_problem(text); !problem.empty()) fail(path, problem);
+}
+
+/// How many alternatives each {a|b} choice of the text holds, in order.
+std::vector<std::size_t> device_choices(const std::string& text) {
+  std::vector<std::size_t> out;
+  for (std::size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1)) {
+    const std::size_t close = text.find('}', open);
+    if (close == std::string::npos) break;
+    out.push_back(std::size_t(std::count(text.begin() + long(open), text.begin() + long(close), '|')) + 1);
+  }
+  return out;
 }
 
 std::vector<std::string> option_list(const Fields& f, const char* key) {
@@ -291,8 +303,37 @@ LessonStep step_of(const json& j, const std::string& path, const PresetLookup& l
   return s;
 }
 
+/// The lesson's own translations: for each language the app speaks (not English), texts of this
+/// lesson to what to show instead, each keeping its text's device choices and emphasis.
+void read_translations(const Fields& f, Lesson& l) {
+  const json& all = f.at("translations");
+  require(all.is_object(), "translations",
+          "must be an object of language codes (es, de, fr, pt-BR, zh-CN) to tables");
+  const std::vector<std::string> texts = l.texts();
+  for (const auto& [code, table] : all.items()) {
+    const std::string path = "translations." + swarm::printable(code);
+    require(find_language(code) && code != "en" && code != pseudo_language().code, path,
+            "not a language the app speaks (es, de, fr, pt-BR, zh-CN)");
+    require(table.is_object(), path, "must be an object of this lesson's English texts to their translations");
+    for (const auto& [english, shown] : table.items()) {
+      const std::string at = path + ".\"" + swarm::printable(english.substr(0, 40)) + "\"";
+      require(std::find(texts.begin(), texts.end(), english) != texts.end(), at,
+              "not a text of this lesson (the key is the English text, exactly)");
+      require(shown.is_string() && !shown.get<std::string>().empty(), at,
+              "must be a non-empty string");
+      const std::string text = shown.get<std::string>();
+      require(text.size() <= kMaxTextBytes, at,
+              "must be at most " + std::to_string(kMaxTextBytes) + " bytes long");
+      check_prose(text, at);
+      require(device_choices(text) == device_choices(english), at,
+              "must keep the English text's {tap|click} choices, with as many alternatives each");
+      l.translations[code][english] = text;
+    }
+  }
+}
+
 Lesson lesson_of(const json& j, const PresetLookup& lookup) {
-  const Fields f(j, "", {"lesson", "id", "title", "summary", "steps"});
+  const Fields f(j, "", {"lesson", "id", "title", "summary", "steps", "translations"});
   if (!f.has("lesson"))
     fail("lesson", "missing the key \"lesson\": 1 (the lesson format's version)");
   require(f.at("lesson") == kLessonVersion, "lesson",
@@ -315,6 +356,7 @@ Lesson lesson_of(const json& j, const PresetLookup& lookup) {
     l.steps.push_back(step_of(steps[i], "steps[" + std::to_string(i) + "]", lookup, running));
     if (l.steps.back().preset) running = l.steps.back().preset;
   }
+  if (f.has("translations")) read_translations(f, l);
   return l;
 }
 
@@ -403,6 +445,26 @@ std::string_view name_of(LessonHidden hidden) {
     case LessonHidden::plots: return "plots";
   }
   return "";
+}
+
+std::vector<std::string> Lesson::texts() const {
+  std::vector<std::string> out = {title, summary};
+  for (const LessonStep& s : steps) {
+    out.push_back(s.text);
+    if (!s.task) continue;
+    out.push_back(s.task->prompt);
+    out.insert(out.end(), s.task->options.begin(), s.task->options.end());
+    out.insert(out.end(), s.task->feedback.begin(), s.task->feedback.end());
+    if (!s.task->outcome.empty()) out.push_back(s.task->outcome);
+  }
+  return out;
+}
+
+const std::string* Lesson::translation(const std::string& code, const std::string& english) const {
+  const auto language = translations.find(code);
+  if (language == translations.end()) return nullptr;
+  const auto it = language->second.find(english);
+  return it == language->second.end() ? nullptr : &it->second;
 }
 
 bool LessonStep::hides(LessonHidden what) const {

@@ -5,6 +5,7 @@
 /// caller measured from the running simulation. docs/lessons.md documents every field.
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -71,6 +72,15 @@ struct Lesson {
   std::string title;
   std::string summary;
   std::vector<LessonStep> steps;
+  /// The lesson's own translations (a teacher's lesson; the shipped ones are in the app's
+  /// tables): language code -> English text of this lesson -> the text in that language.
+  std::map<std::string, std::map<std::string, std::string>> translations;
+
+  /// Every text of the lesson a student reads: title, summary, and each step's text, prompt,
+  /// options, feedback and outcome.
+  std::vector<std::string> texts() const;
+  /// `english` (one of texts()) in the language `code`: the lesson's own translation, or null.
+  const std::string* translation(const std::string& code, const std::string& english) const;
 };
 
 /// Finds a shipped preset by file name ("two-body-circular.json"): the preset, or an error

@@ -351,3 +351,37 @@ TEST_CASE("lesson text without its emphasis marks reads as written") {
         "Open Controls → System, then Play.");
   CHECK(without_emphasis("no marks") == "no marks");
 }
+
+TEST_CASE("a lesson carries its own translations, each a text of the lesson in a language the app speaks") {
+  ojson l = base_lesson();
+  l["steps"][1]["text"] = "{Tap|Click} to pick.";
+  l["translations"] = {{"es", {{"Watch *this*.", "Mira *esto*."}, {"{Tap|Click} to pick.", "{Toca|Haz clic} para elegir."},
+                               {"no", "no"}, {"T", "T"}}},
+                       {"de", {{"it goes up", "es steigt"}}}};
+  const LessonParse parsed = parse_lesson(l.dump(), test_lookup);
+  REQUIRE_MESSAGE(parsed.lesson, parsed.error);
+  const Lesson& lesson = *parsed.lesson;
+  REQUIRE(lesson.translation("es", "Watch *this*."));
+  CHECK(*lesson.translation("es", "Watch *this*.") == "Mira *esto*.");
+  CHECK(*lesson.translation("de", "it goes up") == "es steigt");
+  CHECK_FALSE(lesson.translation("de", "Watch *this*."));
+  CHECK_FALSE(lesson.translation("fr", "it goes up"));
+  const std::vector<std::string> texts = lesson.texts();
+  CHECK(std::find(texts.begin(), texts.end(), "Which?") != texts.end());
+  CHECK(std::find(texts.begin(), texts.end(), "yes") != texts.end());
+
+  auto with = [&](const ojson& translations) {
+    ojson t = l;
+    t["translations"] = translations;
+    return error_of_json(t);
+  };
+  CHECK(with({{"ar", {{"T", "x"}}}}) == "translations.ar: not a language the app speaks (es, de, fr, pt-BR, zh-CN)");
+  CHECK(with({{"en", {{"T", "x"}}}}).find("translations.en: not a language") == 0);
+  CHECK(with({{"es", {{"Not in it", "x"}}}}) ==
+        "translations.es.\"Not in it\": not a text of this lesson (the key is the English text, exactly)");
+  CHECK(with({{"es", {{"T", ""}}}}) == "translations.es.\"T\": must be a non-empty string");
+  CHECK(with({{"es", {{"{Tap|Click} to pick.", "Toca para elegir."}}}}) ==
+        "translations.es.\"{Tap|Click} to pick.\": must keep the English text's {tap|click} choices, with as many alternatives each");
+  CHECK(with({{"es", {{"Watch *this*.", "Mira *esto."}}}}).find("an emphasis is not closed") != std::string::npos);
+  CHECK(with(ojson::array()) == "translations: must be an object of language codes (es, de, fr, pt-BR, zh-CN) to tables");
+}
