@@ -160,6 +160,8 @@ struct AppState {
   SaveDialog save_dialog;  ///< save, export and quit dialogs (save_request.h)
   Layout layout;
   Presentation presentation;
+  /// Inside a course page (?embed, ui/classroom/embedding.h): no menu bar, no welcome.
+  bool embedded = false;
   FrameStats stats;
   /// Stopwatch, period meter, P and T (Instruments::update feeds them every frame).
   Instruments instruments;
