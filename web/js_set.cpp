@@ -8,6 +8,7 @@
 #include <string>
 
 #include "i18n/language.h"
+#include "ui/classroom/embedding.h"
 #include "ui/classroom/presentation.h"
 #include "web_app.h"
 
@@ -72,6 +73,9 @@ const Key kKeys[] = {
      [](AppState& s, const json& v) { swarmlab::set_presentation(s, v.get<bool>()); }},
     {"sound", "must be true or false", [](const AppState&, const json& v) { return v.is_boolean(); },
      [](AppState& s, const json& v) { swarmlab::set_sound(s, v.get<bool>()); }},
+    // Inside a course page (app/ui/classroom/embedding.h); embed_bridge.js sets it for ?embed.
+    {"embed", "must be true or false", [](const AppState&, const json& v) { return v.is_boolean(); },
+     [](AppState& s, const json& v) { swarmlab::set_embedded(s, v.get<bool>()); }},
 };
 
 std::string set_error;

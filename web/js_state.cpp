@@ -102,6 +102,7 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["presentation"] = s.presentation.on;
   j["sound"] = s.presentation.sound;
   j["fullscreen"] = s.presentation.fullscreen;
+  j["embed"] = s.embedded;  // inside a course page: no menu bar (embedding.h)
   // The region keyboard navigation is in, by its window's title ("Controls", "Plots",
   // "Transport", "Read-outs", "Timeline", "Panels", "menu"), or null (the 3D view).
   const ImGuiContext* imgui = ImGui::GetCurrentContext();

@@ -388,7 +388,10 @@
     });
     // Leaving the page with edits asks first; without edits it does not (nothing is lost).
     window.addEventListener('beforeunload', function (e) {
-      if (!Module.swarmlabMainStarted || !api.state().edited) return;
+      // Inside a course page (?embed) never: the course page's own links leave without asking.
+      if (!Module.swarmlabMainStarted) return;
+      var now = api.state();
+      if (now.embed || !now.edited) return;
       e.preventDefault();
       e.returnValue = '';
     });

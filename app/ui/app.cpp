@@ -200,7 +200,7 @@ void App::layout_windows() {
     ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, kTouchTargetPx - font));
     ImGui::PushStyleVar(ImGuiStyleVar_ScrollbarSize, 1.1f * font);
   }
-  top += draw_menu_bar(s);
+  if (!s.embedded) top += draw_menu_bar(s);  // a course page wants no menu bar (embedding.h)
   if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(0.5f * font, 0.45f * font));
 
   ScreenLayoutInput in;

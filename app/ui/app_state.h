@@ -171,6 +171,8 @@ struct AppState {
   Layout layout;
   Presentation presentation;
   LanguageChoice language;
+  /// Inside a course page (?embed, ui/classroom/embedding.h): no menu bar, no welcome.
+  bool embedded = false;
   FrameStats stats;
   /// Stopwatch, period meter, P and T (Instruments::update feeds them every frame).
   Instruments instruments;

@@ -113,7 +113,8 @@ void draw_help_window(AppState& state) {
     ImGui::EndTable();
   }
   // The welcome (what is on the screen, three things to try, the lessons) stays reachable.
-  if (ImGui::Button("Welcome and lessons")) state.lessons.show_welcome = true;
+  // Embedded in a course page there is no welcome (it speaks of the menus).
+  if (!state.embedded && ImGui::Button("Welcome and lessons")) state.lessons.show_welcome = true;
   ImGui::End();
 }
 
