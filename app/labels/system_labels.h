@@ -2,6 +2,8 @@
 // Labels that say what the running system is now, not what the preset was when it shipped:
 // the title (name, "(edited)", the regime the force and container make), the clock's units,
 // and whether a preset opened from text is the shipped one. Pure text, tested without a window.
+// The texts are in the language the translator speaks (i18n/translator.h; English unless told,
+// as in tests/labels), the clock's numbers with its decimal separator.
 
 #include <string>
 #include <vector>

@@ -3,8 +3,9 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include <iterator>
+#include <array>
 
+#include "i18n/translator.h"
 #include "ui/input/region_cycle.h"
 
 namespace swarmlab {
@@ -15,9 +16,11 @@ namespace {
 /// time/timeline_strip.cpp): the menu bar, the controls or the compact layout's drawer, the
 /// transport bar, the 3D view (no window: there the keys go to the shortcuts), the read-outs,
 /// the timeline, the plots.
-constexpr const char* kRegions[] = {"##MainMenuBar", "Controls",    "###drawer",
-                                    "###transport",  nullptr,       "###readouts",
-                                    "###timeline",   "Plots"};
+/// The Controls and Plots windows are named with tr_id(), as panel_windows.cpp names them.
+std::array<const char*, 8> regions() {
+  return {"##MainMenuBar", tr_id("Controls"), "###drawer",   "###transport",
+          nullptr,         "###readouts",     "###timeline", tr_id("Plots")};
+}
 
 ImGuiWindow* window_of(const char* region) {
   return region ? ImGui::FindWindowByName(region) : nullptr;
@@ -27,16 +30,18 @@ ImGuiWindow* window_of(const char* region) {
 /// when no window does; none for a window outside the regions (a dialog, the help).
 std::optional<std::size_t> current_region() {
   const ImGuiWindow* nav = GImGui->NavWindow ? GImGui->NavWindow->RootWindow : nullptr;
-  for (std::size_t i = 0; i < std::size(kRegions); ++i)
-    if (kRegions[i] ? nav && nav == window_of(kRegions[i]) : !nav) return i;
+  const auto all = regions();
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all[i] ? nav && nav == window_of(all[i]) : !nav) return i;
   return std::nullopt;
 }
 
 }  // namespace
 
 void move_keyboard_region(int direction) {
+  const auto all = regions();
   std::vector<bool> shown;
-  for (const char* region : kRegions) {
+  for (const char* region : all) {
     const ImGuiWindow* w = window_of(region);
     shown.push_back(!region || (w && w->WasActive));  // drawn last frame
   }
@@ -44,7 +49,7 @@ void move_keyboard_region(int direction) {
   if (!next) return;
   ImGuiContext& g = *GImGui;
   ImGui::ClearActiveID();
-  ImGuiWindow* w = window_of(kRegions[*next]);
+  ImGuiWindow* w = window_of(all[*next]);
   // As ImGui's own window switch does: focus the window, its first control if none was
   // focused there before, and show the focus ring.
   ImGui::FocusWindow(w);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "i18n/translator.h"
 #include "ui/classroom/presentation.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/input/keyboard_regions.h"
@@ -81,7 +82,7 @@ void draw_help_window(AppState& state) {
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.5f),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);
-  if (!ImGui::Begin("Help: keys and mouse", &state.layout.help,
+  if (!ImGui::Begin(tr_id("Help: keys and mouse"), &state.layout.help,
                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
@@ -91,18 +92,20 @@ void draw_help_window(AppState& state) {
       if (!s.keys) continue;
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextColored(colour_vec4(current_palette().text_key), "%s", s.keys);
+      // The table is English (shortcut_table.cpp marks its texts for the string tables).
+      ImGui::TextColored(colour_vec4(current_palette().text_key), "%s", tr(s.keys));
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(s.action);
+      ImGui::TextUnformatted(tr(s.action));
     }
-    const char* mouse[][2] = {{"drag", "orbit the camera"},
-                              {"wheel", "zoom"},
-                              {"right-drag", "slide the view (Home: back)"},
-                              {"drag the timeline", "back or on to any time reached"},
-                              {"click", "select a particle (trail, orbit ahead)"},
-                              {"Ctrl+click", "type a value into a slider"},
-                              {"hover", "equations behind the read-outs, values on the plots"},
-                              {"arrows, Space", "keyboard: move to a control, press it"}};
+    const char* mouse[][2] = {
+        {tr("drag"), tr("orbit the camera")},
+        {tr("wheel"), tr("zoom")},
+        {tr("right-drag"), tr("slide the view (Home: back)")},
+        {tr("drag the timeline"), tr("back or on to any time reached")},
+        {tr("click"), tr("select a particle (trail, orbit ahead)")},
+        {tr("Ctrl+click"), tr("type a value into a slider")},
+        {tr("hover"), tr("equations behind the read-outs, values on the plots")},
+        {tr("arrows, Space"), tr("keyboard: move to a control, press it")}};
     for (const auto& m : mouse) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
@@ -114,7 +117,8 @@ void draw_help_window(AppState& state) {
   }
   // The welcome (what is on the screen, three things to try, the lessons) stays reachable.
   // Embedded in a course page there is no welcome (it speaks of the menus).
-  if (!state.embedded && ImGui::Button("Welcome and lessons")) state.lessons.show_welcome = true;
+  if (!state.embedded && ImGui::Button(tr_id("Welcome and lessons")))
+    state.lessons.show_welcome = true;
   ImGui::End();
 }
 

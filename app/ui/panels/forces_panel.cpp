@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "i18n/translator.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {
@@ -57,7 +58,7 @@ void draw_forces_panel(AppState& state) {
   const float width = 0.6f * ImGui::GetContentRegionAvail().x;
 
   bool gravity = d.gravity.has_value();
-  if (ImGui::Checkbox("gravity", &gravity)) {
+  if (ImGui::Checkbox(tr_id("gravity"), &gravity)) {
     changed = true;
     if (gravity)
       d.gravity = swarm::Vec3(0, 0, -9.8);
@@ -65,13 +66,13 @@ void draw_forces_panel(AppState& state) {
       d.gravity.reset();
   }
   help_marker(
-      "A uniform field g pulling every particle alike: the centre of mass falls like a "
-      "thrown ball, R = R0 + V0 t + g t^2 / 2, while the motion about it is unchanged. The "
-      "energy E includes the potential energy -sum m g.r.");
+      tr("A uniform field g pulling every particle alike: the centre of mass falls like a "
+         "thrown ball, R = R0 + V0 t + g t^2 / 2, while the motion about it is unchanged. The "
+         "energy E includes the potential energy -sum m g.r."));
   if (d.gravity) {
     double g[3] = {d.gravity->x(), d.gravity->y(), d.gravity->z()};
     ImGui::SetNextItemWidth(width);
-    ImGui::InputScalarN("g (x, y, z)", ImGuiDataType_Double, g, 3, nullptr, nullptr, "%.4g");
+    ImGui::InputScalarN(tr_id("g (x, y, z)"), ImGuiDataType_Double, g, 3, nullptr, nullptr, "%.4g");
     if (committed()) {
       d.gravity = swarm::Vec3(g[0], g[1], g[2]);
       changed = true;
@@ -79,7 +80,7 @@ void draw_forces_panel(AppState& state) {
   }
 
   bool floor = d.floor.has_value();
-  if (ImGui::Checkbox("floor", &floor)) {
+  if (ImGui::Checkbox(tr_id("floor"), &floor)) {
     changed = true;
     if (floor)
       d.floor = swarm::Floor{floor_below(d), 1.0};
@@ -87,30 +88,30 @@ void draw_forces_panel(AppState& state) {
       d.floor.reset();
   }
   help_marker(
-      "A hard horizontal plane z = h. A particle that reaches it moving down leaves with "
-      "v_z -> -e v_z (e = restitution: 1 elastic, 0 it stops falling). Each bounce kicks the "
-      "centre of mass; the energy an inelastic bounce takes is booked as work.");
+      tr("A hard horizontal plane z = h. A particle that reaches it moving down leaves with "
+         "v_z -> -e v_z (e = restitution: 1 elastic, 0 it stops falling). Each bounce kicks the "
+         "centre of mass; the energy an inelastic bounce takes is booked as work."));
   if (d.floor) {
     ImGui::SetNextItemWidth(width);
-    changed |= input_double("floor height z", &d.floor->z);
+    changed |= input_double(tr_id("floor height z"), &d.floor->z);
     ImGui::SetNextItemWidth(width);
-    changed |= input_double("restitution e", &d.floor->restitution, "%.3g");
+    changed |= input_double(tr_id("restitution e"), &d.floor->restitution, "%.3g");
   }
 
   int drag = !d.drag ? 0 : d.drag->mass_proportional() ? 1 : 2;
-  ImGui::TextUnformatted("Drag");
+  ImGui::TextUnformatted(tr("Drag"));
   ImGui::SameLine();
-  bool drag_changed = ImGui::RadioButton("none", &drag, 0);
+  bool drag_changed = ImGui::RadioButton(tr_id("none"), &drag, 0);
   ImGui::SameLine();
-  drag_changed |= ImGui::RadioButton("gamma", &drag, 1);
+  drag_changed |= ImGui::RadioButton(tr_id("gamma"), &drag, 1);
   ImGui::SameLine();
   drag_changed |= ImGui::RadioButton("b", &drag, 2);
   help_marker(
-      "gamma: a force -gamma m v on every particle (proportional to its mass): still solved "
-      "exactly; the CM velocity decays as exp(-gamma t) and every particle is a damped "
-      "oscillator about the CM. b: a force -b v on the listed particles only (indices from "
-      "0: the table's #1 is 0): needs a numerical method (Euler, Euler-Cromer, Verlet or "
-      "RK4).");
+      tr("gamma: a force -gamma m v on every particle (proportional to its mass): still solved "
+         "exactly; the CM velocity decays as exp(-gamma t) and every particle is a damped "
+         "oscillator about the CM. b: a force -b v on the listed particles only (indices from "
+         "0: the table's #1 is 0): needs a numerical method (Euler, Euler-Cromer, Verlet or "
+         "RK4)."));
   if (drag_changed) {
     changed = true;
     if (drag == 0) d.drag.reset();
@@ -119,10 +120,10 @@ void draw_forces_panel(AppState& state) {
   }
   if (d.drag && d.drag->mass_proportional()) {
     ImGui::SetNextItemWidth(width);
-    changed |= input_double("gamma (1/time)", &d.drag->gamma);
+    changed |= input_double(tr_id("gamma (1/time)"), &d.drag->gamma);
   } else if (d.drag) {
     ImGui::SetNextItemWidth(width);
-    changed |= input_double("b (mass/time)", &d.drag->b);
+    changed |= input_double(tr_id("b (mass/time)"), &d.drag->b);
     static char text[256];
     static std::string shown;
     if (shown != listed(d.drag->particles)) {
@@ -130,7 +131,7 @@ void draw_forces_panel(AppState& state) {
       std::snprintf(text, sizeof text, "%s", shown.c_str());
     }
     ImGui::SetNextItemWidth(width);
-    ImGui::InputText("particles", text, sizeof text);
+    ImGui::InputText(tr_id("particles"), text, sizeof text);
     if (committed()) {
       std::vector<std::size_t> indices;
       if (parse_indices(text, indices)) {
@@ -150,8 +151,11 @@ void draw_forces_panel(AppState& state) {
   if ((state.preset.floor || state.preset.drag) && !samples.empty()) {
     ImGui::Separator();
     const swarm::EnergyBooks& b = samples.back().books;
-    ImGui::Text("work by the floor %.5g, drag loss %.5g", b.wall_work, b.drag_loss);
-    help_marker("Energy from outside since t = 0: E - E0 = work + heat - drag loss.");
+    char text[160];
+    std::snprintf(text, sizeof text, tr("work by the floor %.5g, drag loss %.5g"), b.wall_work,
+                  b.drag_loss);
+    ImGui::TextUnformatted(translator().numbers(text).c_str());
+    help_marker(tr("Energy from outside since t = 0: E - E0 = work + heat - drag loss."));
   }
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "i18n/translator.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/wall.h"
@@ -18,8 +19,12 @@
 namespace swarmlab {
 namespace {
 
-/// One name and value: two cells of the table, which wraps to its next row by itself.
-void row(const char* name, const char* value, const char* equation) {
+/// One name and value: two cells of the table, which wraps to its next row by itself. The
+/// caller translates the name and the equation; the value's decimal points are written as the
+/// language writes them.
+void row(const char* name, const char* printed_value, const char* equation) {
+  const std::string shown = translator().numbers(printed_value);
+  const char* value = shown.c_str();
   // A screen reader reads the row as it is shown (the parallel DOM keeps it up to date).
   mirror_text(ItemRole::paragraph, std::string(name) + " = " + value);
   ImGui::TableNextColumn();
@@ -64,58 +69,70 @@ void format_estimate(char* out, std::size_t size, double v, const std::optional<
 /// Where the ± comes from, in a few words for the row and a sentence for its tooltip.
 const char* error_source_words(const swarm::WallEstimate& w) {
   switch (w.source) {
-    case swarm::WallErrorSource::history: return "± from past windows";
-    case swarm::WallErrorSource::blocking: return "± rough (blocking)";
+    case swarm::WallErrorSource::history:
+      return tr("± from past windows");
+    case swarm::WallErrorSource::blocking:
+      return tr("± rough (blocking)");
     case swarm::WallErrorSource::none: break;
   }
-  return "no ± yet";
+  return tr("no ± yet");
 }
 
 /// P and T over the plots' averaging window, with their standard errors.
 void wall_rows(const swarm::WallEstimate& w) {
-  char value[96], window[240];
-  std::snprintf(window, sizeof window,
-                " over the last %.4g of time (%d samples; the plots' 'average over', 0: the "
-                "whole run). ±: the standard error of that window's mean (see 'P, T over').",
-                w.window, w.intervals);
+  char value[160], help[900];
   if (w.intervals == 0) {
-    row("P", "waiting for samples", "Wall pressure, once the first samples arrive.");
+    row("P", tr("waiting for samples"), tr("Wall pressure, once the first samples arrive."));
     return;
   }
   format_estimate(value, sizeof value, w.mean.P, w.P_stderr);
-  row("P", value, (std::string("P = Σ |Δpᵣ| / (4π R² t)") + window).c_str());
+  // Each tooltip one whole text, the window's length and samples put into it.
+  std::snprintf(help, sizeof help,
+                tr("P = Σ |Δpᵣ| / (4π R² t) over the last %.4g of time (%d samples; the plots' "
+                   "'average over', 0: the whole run). ±: the standard error of that window's "
+                   "mean (see 'P, T over')."),
+                w.window, w.intervals);
+  row("P", value, translator().numbers(help).c_str());
   if (w.mean.hits > 0)
     format_estimate(value, sizeof value, w.mean.T, w.T_stderr);
   else
     // True whether none has hit yet or the swarm has drawn in from the wall since ("yet" was
     // read after a shrinking swarm's last hit long ago).
-    std::snprintf(value, sizeof value, "no wall hit in the last %.4g: the swarm stays inside",
+    std::snprintf(value, sizeof value, tr("no wall hit in the last %.4g: the swarm stays inside"),
                   w.window);
-  row("T", value,
-      (std::string("T = half the mean kinetic energy of the particles hitting the wall "
-                   "(k_B = 1)") + window).c_str());
-  std::snprintf(value, sizeof value, "last %.4g; %s", w.window, error_source_words(w));
-  char help[640];
-  const char* general =
-      "The averaging window of P and T: the plots' 'average over' (Wall P, T tab), or the "
-      "whole run when it is 0.\n\n± is how much the mean of a window this long varies, "
-      "measured from every window of the same length in the run's recent past at this wall";
+  std::snprintf(help, sizeof help,
+                tr("T = half the mean kinetic energy of the particles hitting the wall (k_B = 1) "
+                   "over the last %.4g of time (%d samples; the plots' 'average over', 0: the "
+                   "whole run). ±: the standard error of that window's mean (see 'P, T over')."),
+                w.window, w.intervals);
+  row("T", value, translator().numbers(help).c_str());
+  std::snprintf(value, sizeof value, tr("last %.4g; %s"), w.window, error_source_words(w));
+  // The two tooltips share their start, each one whole text for a translator.
   if (w.source == swarm::WallErrorSource::history)
-    std::snprintf(help, sizeof help, "%s: here the last %.4g of time.", general, w.history);
+    std::snprintf(help, sizeof help,
+                  tr("The averaging window of P and T: the plots' 'average over' (Wall P, T "
+                     "tab), or the whole run when it is 0.\n\n± is how much the mean of a "
+                     "window this long varies, measured from every window of the same length "
+                     "in the run's recent past at this wall: here the last %.4g of time."),
+                  w.history);
   else
     std::snprintf(help, sizeof help,
-                  "%s, once it holds %.0f windows' worth. Until then (and for the whole run) "
-                  "± comes from blocking the window's own samples, which is too large for "
-                  "regular motion: each particle hits the wall at steady intervals, so a long "
-                  "window's mean varies less than its parts suggest.",
-                  general, swarm::kWallHistoryWindows);
-  row("P, T over", value, help);
+                  tr("The averaging window of P and T: the plots' 'average over' (Wall P, T "
+                     "tab), or the whole run when it is 0.\n\n± is how much the mean of a "
+                     "window this long varies, measured from every window of the same length "
+                     "in the run's recent past at this wall, once it holds %.0f windows' "
+                     "worth. Until then (and for the whole run) ± comes from blocking the "
+                     "window's own samples, which is too large for regular motion: each "
+                     "particle hits the wall at steady intervals, so a long window's mean "
+                     "varies less than its parts suggest."),
+                  swarm::kWallHistoryWindows);
+  row(tr("P, T over"), value, translator().numbers(help).c_str());
 }
 
 }  // namespace
 
 void draw_readouts(AppState& state) {
-  if (!ImGui::CollapsingHeader("Read-outs", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr_id("Read-outs"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (draw_hidden_by_lesson(state, LessonHidden::readouts)) return;
   // The O(N) diagnostics below only run while the section is open.
   const swarm::System& s = state.run->system();
@@ -134,69 +151,69 @@ void draw_readouts(AppState& state) {
   const int pairs = std::clamp(int(ImGui::GetContentRegionAvail().x / (14 * ImGui::GetFontSize())), 1, 6);
   if (!ImGui::BeginTable("readouts", 2 * pairs, flags)) return;
   std::snprintf(value, sizeof value, "%zu", s.particles.size());
-  row("N", value, "Number of particles.");
+  row("N", value, tr("Number of particles."));
   std::snprintf(value, sizeof value, "%.5g", M);
   row("M", value,
-      "M = \u03a3 m\u1d62, the total mass. Every particle feels one spring "
-      "k\u1d62 = J M m\u1d62 to the centre of mass.");
+      tr("M = \u03a3 m\u1d62, the total mass. Every particle feels one spring "
+         "k\u1d62 = J M m\u1d62 to the centre of mass."));
   if (regime == swarm::Regime::attractive) {
     std::snprintf(value, sizeof value, "%.5g", rate);
     row("\u03c9", value,
-        "\u03c9 = \u221a(J M): the one angular frequency of every particle "
-        "about the centre of mass (J > 0).");
+        tr("\u03c9 = \u221a(J M): the one angular frequency of every particle "
+           "about the centre of mass (J > 0)."));
     std::snprintf(value, sizeof value, "%.5g", swarm::period_of(k));
-    row("period", value,
-        "2\u03c0 / \u03c9 = 2\u03c0 / \u221a(J M): every orbit closes after "
-        "this time, whatever its size and mass.");
+    row(tr("period"), value,
+        tr("2\u03c0 / \u03c9 = 2\u03c0 / \u221a(J M): every orbit closes after "
+           "this time, whatever its size and mass."));
   } else if (regime == swarm::Regime::repulsive) {
     std::snprintf(value, sizeof value, "%.5g", rate);
     row("\u03a9", value,
-        "\u03a9 = \u221a(\u2212J M) (J < 0): distances from the centre of mass "
-        "grow as e^(\u03a9t); no period.");
+        tr("\u03a9 = \u221a(\u2212J M) (J < 0): distances from the centre of mass "
+           "grow as e^(\u03a9t); no period."));
   } else {
-    row("\u03c9", "0", "J = 0: no force, every particle moves in a straight line.");
+    row("\u03c9", "0", tr("J = 0: no force, every particle moves in a straight line."));
   }
   std::snprintf(value, sizeof value, "%.6g", E);
   row("E", value,
-      "E = \u03a3 \u00bd m\u1d62 v\u1d62\u00b2 + \u00bd J M \u03a3 m\u1d62 "
-      "|r\u1d62 \u2212 R|\u00b2: kinetic plus the springs' potential energy (eq. 13), "
-      "and \u2212\u03a3 m\u1d62 g\u00b7r\u1d62 under gravity. "
-      "Conserved by the exact solution and by elastic wall hits; drag and an inelastic "
-      "floor take energy out (Gravity, floor, drag panel).");
+      tr("E = \u03a3 \u00bd m\u1d62 v\u1d62\u00b2 + \u00bd J M \u03a3 m\u1d62 "
+         "|r\u1d62 \u2212 R|\u00b2: kinetic plus the springs' potential energy (eq. 13), "
+         "and \u2212\u03a3 m\u1d62 g\u00b7r\u1d62 under gravity. "
+         "Conserved by the exact solution and by elastic wall hits; drag and an inelastic "
+         "floor take energy out (Gravity, floor, drag panel)."));
   std::snprintf(value, sizeof value, "%+.2e",
                 swarm::relative_energy_change(state.run->primary().samples().front(), E));
   row("\u0394E/|E\u2080|", value,
-      "Relative change of the energy since t = 0 (over KE\u2080 + |PE\u2080| when "
-      "E\u2080 = 0). Euler's grows, Euler-Cromer's wobbles. The analytic method's orbits "
-      "are exact but for rounding, yet E = KE + PE is a difference: for J < 0 both grow as "
-      "e^(2\u03a9t) while E stays put, so their rounding (10\u207b\u00b9\u2076 of KE + |PE|) "
-      "shows as a \u0394E of percents once \u03a9t passes about 17. Walls stop the growth.");
+      tr("Relative change of the energy since t = 0 (over KE\u2080 + |PE\u2080| when "
+         "E\u2080 = 0). Euler's grows, Euler-Cromer's wobbles. The analytic method's orbits "
+         "are exact but for rounding, yet E = KE + PE is a difference: for J < 0 both grow as "
+         "e^(2\u03a9t) while E stays put, so their rounding (10\u207b\u00b9\u2076 of KE + |PE|) "
+         "shows as a \u0394E of percents once \u03a9t passes about 17. Walls stop the growth."));
   std::snprintf(value, sizeof value, "%.5g", p);
   row("|p|", value,
-      "p = \u03a3 m\u1d62 v\u1d62 = M V: constant for an isolated system; wall "
-      "hits exchange momentum with the container.");
+      tr("p = \u03a3 m\u1d62 v\u1d62 = M V: constant for an isolated system; wall "
+         "hits exchange momentum with the container."));
   std::snprintf(value, sizeof value, "%.5g", L);
   row("|L|", value,
-      "L = \u03a3 m\u1d62 (r\u1d62 \u2212 R) \u00d7 (v\u1d62 \u2212 V) about the "
-      "centre of mass: conserved by the central springs, changed by wall hits "
-      "only through the moving centre of mass.");
+      tr("L = \u03a3 m\u1d62 (r\u1d62 \u2212 R) \u00d7 (v\u1d62 \u2212 V) about the "
+         "centre of mass: conserved by the central springs, changed by wall hits "
+         "only through the moving centre of mass."));
   if (const auto R = state.run->primary().engine().container_radius()) {
     std::snprintf(value, sizeof value, "%.4g   V = %.4g", *R, swarm::sphere_volume(*R));
-    row("R", value, "Container radius and volume V = 4/3 \u03c0 R\u00b3.");
+    row("R", value, tr("Container radius and volume V = 4/3 \u03c0 R\u00b3."));
     wall_rows(state.instruments.wall);
     std::snprintf(value, sizeof value, "%.4g", hit_rate(*state.run, state.plots.average_window));
-    row("hits/time", value,
-        "Wall hits per unit of simulated time, over the plots' averaging "
-        "window. P = \u03a3 |\u0394p\u1d63| / (4\u03c0 R\u00b2 t).");
+    row(tr("hits/time"), value,
+        tr("Wall hits per unit of simulated time, over the plots' averaging "
+           "window. P = \u03a3 |\u0394p\u1d63| / (4\u03c0 R\u00b2 t)."));
   }
   std::snprintf(value, sizeof value, "%.0f  (%.1f ms)", 1000.0 / state.stats.frame_ms,
                 state.stats.frame_ms);
-  row("FPS", value, "Frames per second and the time of one frame.");
+  row("FPS", value, tr("Frames per second and the time of one frame."));
   std::snprintf(value, sizeof value, "%.1f + %.1f ms", state.stats.simulation_ms,
                 state.stats.scene_ms);
-  row("step + draw", value,
-      "Time per frame spent advancing the simulation, and preparing the "
-      "particles for drawing (colours, sizes, upload).");
+  row(tr("step + draw"), value,
+      tr("Time per frame spent advancing the simulation, and preparing the "
+         "particles for drawing (colours, sizes, upload)."));
   ImGui::EndTable();
 }
 

@@ -5,8 +5,10 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
+#include "i18n/translator.h"
 #include "labels/system_labels.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/input/touch_target.h"
@@ -20,13 +22,13 @@ namespace swarmlab {
 void show_refusal(AppState& state, Section section) {
   if (state.draft_error.empty() || state.draft_error_section != section) return;
   ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
-  ImGui::TextWrapped("Not applied: %s", state.draft_error.c_str());
+  // The preset rules' message stays English (the CLI's), after a translated sentence.
+  ImGui::TextWrapped(tr("Not applied: %s"), state.draft_error.c_str());
   ImGui::PopStyleColor();
-  if (ImGui::Button("Undo the edit", ImVec2(target_width("Undo the edit"), 0)))
+  if (ImGui::Button(tr_id("Undo the edit"), ImVec2(target_width(tr_id("Undo the edit")), 0)))
     state.revert_draft();
-  item_tooltip(
-        "Show the running values again. Until then the run goes on with the "
-        "last valid preset.");
+  item_tooltip("%s", tr("Show the running values again. Until then the run goes on with the "
+                        "last valid preset."));
 }
 
 void help_marker(const char* text) {
@@ -45,13 +47,16 @@ void help_marker(const char* text) {
 bool committed() { return ImGui::IsItemDeactivatedAfterEdit(); }
 
 void draw_scenario_panel(AppState& state) {
-  ImGui::TextDisabled("Shipped presets");
+  ImGui::TextDisabled("%s", tr("Shipped presets"));
   const float list_height = ImGui::GetTextLineHeightWithSpacing() *
                             (float(std::min<std::size_t>(state.shipped.size(), 7)) + 0.4f);
   if (ImGui::BeginListBox("##presets", ImVec2(-1, list_height))) {
     for (const ShippedPreset& s : state.shipped) {
       const bool current = state.shipped_id == s.id;
-      const std::string label = (s.preset.name.empty() ? s.id : s.preset.name) + "##" + s.id;
+      // A shipped preset's name and description are keys of the string tables; the ID is the
+      // file's, whatever the language.
+      const std::string label =
+          (s.preset.name.empty() ? s.id : std::string(tr(s.preset.name.c_str()))) + "###" + s.id;
       if (ImGui::Selectable(label.c_str(), current)) {
         // Saving goes to a copy in the working directory, never over the shipped file.
         state.open(s.preset, "my-" + s.id);
@@ -60,7 +65,7 @@ void draw_scenario_panel(AppState& state) {
       if (ImGui::IsItemHovered() && !s.preset.description.empty()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
-        ImGui::TextUnformatted(s.preset.description.c_str());
+        ImGui::TextUnformatted(tr(s.preset.description.c_str()));
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
       }
@@ -74,19 +79,23 @@ void draw_scenario_panel(AppState& state) {
   ImGui::PopStyleColor();
   // The description was written for the preset as shipped; after an edit it may no longer hold.
   if (state.modified && !state.preset.description.empty())
-    ImGui::TextDisabled("As shipped (before the edits):");
+    ImGui::TextDisabled("%s", tr("As shipped (before the edits):"));
   if (!state.preset.description.empty()) {
     // ImGui wraps the whole text every frame: a description of a million characters (from a
     // link or a file) would take the frame rate down to one a second, so a long one is cut.
     constexpr std::size_t kShown = 2000;  // bytes of UTF-8
-    const std::string& text = state.preset.description;
+    // A shipped description is a key of the string tables (and short); a long one from a link
+    // is shown as written, not looked up every frame.
+    const std::string& written = state.preset.description;
+    const std::string translated = written.size() <= kShown ? tr(written.c_str()) : std::string();
+    const std::string& text = written.size() <= kShown ? translated : written;
     std::size_t end = std::min(text.size(), kShown);
     while (end < text.size() && end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80)
       --end;  // not inside a character
     const std::string shown = end < text.size() ? text.substr(0, end) + "..." : text;
     ImGui::TextWrapped("%s", shown.c_str());
   }
-  if (state.modified && ImGui::Button("Reset to preset")) {
+  if (state.modified && ImGui::Button(tr_id("Reset to preset"))) {
     state.draft = state.origin;
     state.apply_draft(Section::scenario);
   }
@@ -97,11 +106,15 @@ void draw_scenario_panel(AppState& state) {
   } else {
     ImGui::SetNextItemWidth(-1);
     ImGui::InputTextWithHint("##location", state.store->location_hint(), &state.location);
-    if (ImGui::Button("Open")) {
+    if (ImGui::Button(tr_id("Open"))) {
       const swarm::PresetParse parsed = state.store->open(state.location);
       if (parsed.preset) {
         state.open(*parsed.preset, state.location);
-        state.status = "Opened " + state.location;
+        // One sentence with the location in it, as long as the location needs.
+        const char* format = tr("Opened %s");
+        const int length = std::snprintf(nullptr, 0, format, state.location.c_str());
+        state.status.assign(std::size_t(std::max(length, 0)), '\0');
+        std::snprintf(state.status.data(), state.status.size() + 1, format, state.location.c_str());
         state.status_is_error = false;
       } else {
         state.status = parsed.error;
@@ -109,16 +122,16 @@ void draw_scenario_panel(AppState& state) {
       }
     }
     ImGui::SameLine();
-    if (ImGui::Button("Save...")) request_save_preset(state);
+    if (ImGui::Button(tr_id("Save..."))) request_save_preset(state);
     help_marker(
-        "Open reads a preset file; Save asks for a name, folder and file name and writes the "
-        "running preset (every edit you made) as a preset file that 'swarmlab run' and the "
-        "browser run identically. Files are written whole or not at all.");
+        tr("Open reads a preset file; Save asks for a name, folder and file name and writes the "
+           "running preset (every edit you made) as a preset file that 'swarmlab run' and the "
+           "browser run identically. Files are written whole or not at all."));
   }
-  if (ImGui::Button("Export samples CSV")) request_samples_csv(state);
+  if (ImGui::Button(tr_id("Export samples CSV"))) request_samples_csv(state);
   if (!state.run->primary().stages().empty()) {
     ImGui::SameLine();
-    if (ImGui::Button("Export stages CSV")) request_stages_csv(state);
+    if (ImGui::Button(tr_id("Export stages CSV"))) request_stages_csv(state);
   }
   if (!state.status.empty()) {
     const Palette& colours = current_palette();

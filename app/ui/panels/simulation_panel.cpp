@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
+#include "i18n/translator.h"
 #include "labels/system_labels.h"
 #include "swarm/physics/regime.h"
 #include "ui/classroom/presentation.h"
@@ -21,11 +23,20 @@ namespace swarmlab {
 namespace {
 
 /// The method's row of the core's table as a tooltip: what it does, its order and its cost.
+/// The core's name and description go through tr() as they are (they are not in the tables
+/// unless a translator adds them); the sentence around them is one text per case.
 std::string describe(swarm::Method m) {
   const swarm::MethodInfo& info = swarm::info_of(m);
-  std::string text = std::string(info.display_name) + ": " + std::string(info.description) + ". ";
-  text += info.order == 0 ? std::string("Exact") : "Order " + std::to_string(info.order);
-  text += info.pairwise ? ", O(N^2) per step." : ", O(N) per step.";
+  const std::string name(info.display_name), description(info.description);
+  const char* format = info.order == 0 ? (info.pairwise ? tr("%s: %s. Exact, O(N^2) per step.")
+                                                        : tr("%s: %s. Exact, O(N) per step."))
+                                       : (info.pairwise ? tr("%s: %s. Order %d, O(N^2) per step.")
+                                                        : tr("%s: %s. Order %d, O(N) per step."));
+  const char* shown_name = tr(name.c_str());
+  const char* shown_description = tr(description.c_str());
+  const int length = std::snprintf(nullptr, 0, format, shown_name, shown_description, info.order);
+  std::string text(std::size_t(std::max(length, 0)), '\0');
+  std::snprintf(text.data(), text.size() + 1, format, shown_name, shown_description, info.order);
   return text;
 }
 
@@ -41,7 +52,7 @@ void draw_simulation_panel(AppState& state) {
   bool changed = false;
   const float width = 0.55f * ImGui::GetContentRegionAvail().x;
   ImGui::SetNextItemWidth(width);
-  if (ImGui::BeginCombo("method", std::string(swarm::name_of(d.method)).c_str())) {
+  if (ImGui::BeginCombo(tr_id("method"), std::string(swarm::name_of(d.method)).c_str())) {
     for (const swarm::MethodInfo& info : swarm::method_table()) {
       const swarm::Method m = info.id;
       if (ImGui::Selectable(std::string(swarm::name_of(m)).c_str(), m == d.method)) {
@@ -58,19 +69,19 @@ void draw_simulation_panel(AppState& state) {
   ImGui::InputDouble("dt", &d.dt, 0, 0, "%.6g");
   changed |= committed();
   help_marker(
-      "The time step. The analytic map is exact for any dt; the numerical methods' "
-      "errors shrink as dt^order. Wall hits are placed to within one step (paper rule).");
+      tr("The time step. The analytic map is exact for any dt; the numerical methods' "
+         "errors shrink as dt^order. Wall hits are placed to within one step (paper rule)."));
   if (!d.expansion) {
     ImGui::SetNextItemWidth(width);
-    ImGui::InputDouble("duration", &d.duration, 0, 0, "%.6g");
+    ImGui::InputDouble(tr_id("duration"), &d.duration, 0, 0, "%.6g");
     changed |= committed();
   }
 
-  ImGui::TextUnformatted("Side by side with");
+  ImGui::TextUnformatted(tr("Side by side with"));
   help_marker(
-      "Run other methods from the same initial state in lockstep. With 'analytic' "
-      "among them, its positions are drawn as hollow ghosts and the Compare plots show "
-      "each numerical method's position and energy errors.");
+      tr("Run other methods from the same initial state in lockstep. With 'analytic' "
+         "among them, its positions are drawn as hollow ghosts and the Compare plots show "
+         "each numerical method's position and energy errors."));
   for (const swarm::MethodInfo& info : swarm::method_table()) {
     const swarm::Method m = info.id;
     if (m == d.method) continue;
@@ -93,17 +104,18 @@ void draw_simulation_panel(AppState& state) {
 
   ImGui::Separator();
   const swarm::RunPlan& plan = state.run->primary().plan();
-  ImGui::TextDisabled("%ld steps, a sample every %ld steps", plan.steps, plan.sample_every);
-  ImGui::TextDisabled("one step: %.3g ms", state.stats.step_ms);
+  ImGui::TextDisabled(tr("%ld steps, a sample every %ld steps"), plan.steps, plan.sample_every);
+  char text[160];
+  std::snprintf(text, sizeof text, tr("one step: %.3g ms"), state.stats.step_ms);
+  ImGui::TextDisabled("%s", translator().numbers(text).c_str());
   const bool pairwise =
       swarm::is_pairwise(state.preset.method) ||
       std::any_of(state.preset.compare.begin(), state.preset.compare.end(), swarm::is_pairwise);
   if (pairwise && state.run->system().particles.size() > 2000) {
     ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
-    ImGui::TextWrapped(
-        "The numerical methods sum over all %zu^2 / 2 pairs every step: expect a "
-        "slow simulation. The analytic method is O(N).",
-        state.run->system().particles.size());
+    ImGui::TextWrapped(tr("The numerical methods sum over all %zu^2 / 2 pairs every step: expect a "
+                          "slow simulation. The analytic method is O(N)."),
+                       state.run->system().particles.size());
     ImGui::PopStyleColor();
   }
 }
@@ -111,27 +123,27 @@ void draw_simulation_panel(AppState& state) {
 void draw_transport_bar(AppState& state) {
   const float font = ImGui::GetFontSize();
   const bool at_end = !state.playing && state.run->finished();
-  // One ID for every label, so keyboard focus stays on the button when its label changes.
-  if (ImGui::Button(state.playing  ? "\u2016 Pause###play"
-                    : at_end       ? "\u25b6 Continue###play"
-                                   : "\u25b6 Play###play",
-                    ImVec2(6.5f * font, 0)))
-    play_or_continue(state);
-  item_tooltip(at_end ? "Space: the run is over; continue it for another run length"
-                             : "Space");
-  same_line_if_fits(button_width("Step"));
-  if (ImGui::Button("Step")) state.step_once = true, state.playing = false;
-  item_tooltip("S: one step of dt");
-  same_line_if_fits(button_width("Reset"));
-  if (ImGui::Button("Reset")) state.restart();
-  item_tooltip("R: back to t = 0");
+  // One ID for every label, so keyboard focus stays on the button when its label changes; the
+  // symbol stays outside the word a translator sees.
+  const std::string play = state.playing ? std::string("\u2016 ") + tr("Pause") + "###play"
+                           : at_end      ? std::string("\u25b6 ") + tr("Continue") + "###play"
+                                         : std::string("\u25b6 ") + tr("Play") + "###play";
+  if (ImGui::Button(play.c_str(), ImVec2(6.5f * font, 0))) play_or_continue(state);
+  item_tooltip("%s", at_end ? tr("Space: the run is over; continue it for another run length")
+                            : tr("Space"));
+  same_line_if_fits(button_width(tr("Step")));
+  if (ImGui::Button(tr_id("Step"))) state.step_once = true, state.playing = false;
+  item_tooltip("%s", tr("S: one step of dt"));
+  same_line_if_fits(button_width(tr("Reset")));
+  if (ImGui::Button(tr_id("Reset"))) state.restart();
+  item_tooltip("%s", tr("R: back to t = 0"));
   same_line_if_fits(9 * font);
   ImGui::SetNextItemWidth(9 * font);
   const double lo = 1e-3, hi = 1e4;
-  ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, "speed %.3g /s",
+  ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, tr("speed %.3g /s"),
                       ImGuiSliderFlags_Logarithmic);
-  item_tooltip("Simulated time per second of real time (+ and - keys: x2, /2).");
-  same_line_if_fits(ImGui::GetFrameHeight() + button_width("Sound"));
+  item_tooltip("%s", tr("Simulated time per second of real time (+ and - keys: x2, /2)."));
+  same_line_if_fits(ImGui::GetFrameHeight() + button_width(tr("Sound")));
   draw_sound_toggle(state);
 
   draw_time_buttons(state);
@@ -142,18 +154,18 @@ void draw_transport_bar(AppState& state) {
   const double k_shown = state.lessons.hides(LessonHidden::readouts) ? 0 : k;
   ImGui::TextUnformatted(labels::clock_text(state.preset, k_shown, t).c_str());
   item_tooltip(
-        "Simulated time; for an isolated system also in periods of the common oscillation "
-        "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "
-        "wall changes the motion and neither applies.");
+      "%s", tr("Simulated time; for an isolated system also in periods of the common oscillation "
+               "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "
+               "wall changes the motion and neither applies."));
   if (state.run->finished()) {
-    same_line_if_fits(ImGui::CalcTextSize("end of run").x);
-    ImGui::TextColored(colour_vec4(current_palette().text_warning), "end of run");
-    item_tooltip("Continue (Space) runs on for as long again.");
+    same_line_if_fits(ImGui::CalcTextSize(tr("end of run")).x);
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", tr("end of run"));
+    item_tooltip("%s", tr("Continue (Space) runs on for as long again."));
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
     ImGui::SameLine();
-    ImGui::TextColored(colour_vec4(current_palette().text_warning), "(%.0f%% of the speed)",
+    ImGui::TextColored(colour_vec4(current_palette().text_warning), tr("(%.0f%% of the speed)"),
                        100 * state.stats.speed_ratio);
-    item_tooltip("The steps of this speed do not fit in a frame on this machine.");
+    item_tooltip("%s", tr("The steps of this speed do not fit in a frame on this machine."));
   }
 }
 

@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 
+#include "i18n/translator.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
 #include "ui/classroom/theme_style.h"
@@ -30,7 +32,9 @@ bool input_vec3(const char* id, swarm::Vec3& v, const char* quantity, std::size_
     ImGui::SetNextItemWidth(width);
     ImGui::PushID(k);
     changed |= input_double("##c", &v[k], "%.3g");
-    name_item(std::string(quantity) + " " + "xyz"[k] + " of particle " + std::to_string(particle));
+    char name[128];
+    std::snprintf(name, sizeof name, tr("%s %c of particle %zu"), quantity, "xyz"[k], particle);
+    name_item(name);
     ImGui::PopID();
   }
   ImGui::PopID();
@@ -47,21 +51,21 @@ using ParticleList = std::vector<swarm::Particle>;
 
 void draw_coupling(AppState& state) {
   swarm::Preset& d = state.draft;
-  ImGui::TextUnformatted("Coupling J");
+  ImGui::TextUnformatted(tr("Coupling J"));
   help_marker(
-      "Every pair pulls (J > 0) or pushes (J < 0) with F = -J m1 m2 r. Summed over the partners "
-      "this is one spring k_i = J M m_i to the centre of mass: all particles share "
-      "omega = sqrt(J M) (J > 0) or run away as exp(Omega t), Omega = sqrt(-J M) (J < 0).");
+      tr("Every pair pulls (J > 0) or pushes (J < 0) with F = -J m1 m2 r. Summed over the partners "
+         "this is one spring k_i = J M m_i to the centre of mass: all particles share "
+         "omega = sqrt(J M) (J > 0) or run away as exp(Omega t), Omega = sqrt(-J M) (J < 0)."));
   // The magnitude survives a trip through J = 0, so "zero" and back restores the old value.
   static double magnitude = 1.0;
   if (d.J != 0) magnitude = std::abs(d.J);
   int sign = d.J > 0 ? 0 : d.J == 0 ? 1 : 2;
   bool changed = false;
-  changed |= ImGui::RadioButton("attractive", &sign, 0);
+  changed |= ImGui::RadioButton(tr_id("attractive"), &sign, 0);
   ImGui::SameLine();
-  changed |= ImGui::RadioButton("zero", &sign, 1);
+  changed |= ImGui::RadioButton(tr_id("zero"), &sign, 1);
   ImGui::SameLine();
-  changed |= ImGui::RadioButton("repulsive", &sign, 2);
+  changed |= ImGui::RadioButton(tr_id("repulsive"), &sign, 2);
   if (changed) d.J = sign == 0 ? magnitude : sign == 1 ? 0.0 : -magnitude;
 
   double shown = std::abs(d.J);
@@ -73,7 +77,7 @@ void draw_coupling(AppState& state) {
   changed |= committed();
   ImGui::EndDisabled();
   ImGui::SetNextItemWidth(-4.5f * ImGui::GetFontSize());
-  changed |= input_double("J (typed)", &d.J);
+  changed |= input_double(tr_id("J (typed)"), &d.J);
   if (changed) state.apply_draft(Section::system);
 }
 
@@ -104,13 +108,15 @@ void draw_table(AppState& state, ParticleList& list) {
         ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().selected_row.packed());
       ImGui::TableNextColumn();
       if (ImGui::Button("x", ImVec2(target_width("x"), 0))) remove = i;
-      item_tooltip("Remove particle %zu", i + 1);
+      item_tooltip(tr("Remove particle %zu"), i + 1);
       ImGui::SameLine();
       ImGui::Text("%zu", i + 1);
       ImGui::TableNextColumn();
       ImGui::SetNextItemWidth(-1);
       changed |= input_double("##m", &list[i].m, "%.4g");
-      name_item("m of particle " + std::to_string(i + 1));
+      char name[128];
+      std::snprintf(name, sizeof name, tr("m of particle %zu"), i + 1);
+      name_item(name);
       ImGui::TableNextColumn();
       changed |= input_vec3("##r", list[i].r, "r", i + 1);
       ImGui::TableNextColumn();
@@ -135,7 +141,7 @@ void draw_table(AppState& state, ParticleList& list) {
     list.erase(list.begin() + std::ptrdiff_t(*remove));
     changed = true;
   }
-  if (list.size() < kTableLimit && ImGui::Button("Add particle")) {
+  if (list.size() < kTableLimit && ImGui::Button(tr_id("Add particle"))) {
     // A new particle starts at rest beside the last one, so the system stays compact.
     swarm::Particle p = list.back();
     p.r += swarm::Vec3(0.5, 0.5, 0.0);
@@ -157,15 +163,15 @@ void draw_generator(AppState& state, swarm::SwarmSpec& g) {
   g.count = long(std::clamp<std::int64_t>(count, 1, 1'000'000'000));
   changed |= committed();
   help_marker(
-      "Number of particles. Ctrl+click the slider to type any value (up to 10 million); "
-      "the analytic method costs O(N) per step, the numerical ones O(N^2).");
+      tr("Number of particles. Ctrl+click the slider to type any value (up to 10 million); "
+         "the analytic method costs O(N) per step, the numerical ones O(N^2)."));
 
   int mass_kind = g.mass_min == g.mass_max ? 0 : 1;
-  ImGui::TextUnformatted("Masses");
+  ImGui::TextUnformatted(tr("Masses"));
   ImGui::SameLine();
-  if (ImGui::RadioButton("equal", &mass_kind, 0)) g.mass_max = g.mass_min, changed = true;
+  if (ImGui::RadioButton(tr_id("equal"), &mass_kind, 0)) g.mass_max = g.mass_min, changed = true;
   ImGui::SameLine();
-  if (ImGui::RadioButton("uniform in [a, b]", &mass_kind, 1) && g.mass_max == g.mass_min)
+  if (ImGui::RadioButton(tr_id("uniform in [a, b]"), &mass_kind, 1) && g.mass_max == g.mass_min)
     g.mass_max = g.mass_min * 1.25, changed = true;
   const float half = 0.5f * (ImGui::GetContentRegionAvail().x - 2 * ImGui::GetFontSize());
   if (mass_kind == 0) {
@@ -180,33 +186,33 @@ void draw_generator(AppState& state, swarm::SwarmSpec& g) {
   }
 
   ImGui::SetNextItemWidth(half);
-  changed |= input_double("initial radius", &g.position_radius);
-  help_marker("Positions are drawn uniformly in a ball of this radius about the origin.");
+  changed |= input_double(tr_id("initial radius"), &g.position_radius);
+  help_marker(tr("Positions are drawn uniformly in a ball of this radius about the origin."));
   int velocity_kind = g.velocities == swarm::SwarmSpec::Velocities::ball ? 0 : 1;
-  ImGui::TextUnformatted("Velocities");
+  ImGui::TextUnformatted(tr("Velocities"));
   ImGui::SameLine();
-  changed |= ImGui::RadioButton("uniform ball", &velocity_kind, 0);
+  changed |= ImGui::RadioButton(tr_id("uniform ball"), &velocity_kind, 0);
   ImGui::SameLine();
-  changed |= ImGui::RadioButton("Maxwellian", &velocity_kind, 1);
+  changed |= ImGui::RadioButton(tr_id("Maxwellian"), &velocity_kind, 1);
   g.velocities = velocity_kind == 0 ? swarm::SwarmSpec::Velocities::ball
                                     : swarm::SwarmSpec::Velocities::maxwell;
   ImGui::SetNextItemWidth(half);
   if (velocity_kind == 0)
-    changed |= input_double("max speed", &g.speed);
+    changed |= input_double(tr_id("max speed"), &g.speed);
   else
-    changed |= input_double("temperature", &g.temperature);
-  changed |= ImGui::Checkbox("centre of mass at rest", &g.cm_at_rest);
+    changed |= input_double(tr_id("temperature"), &g.temperature);
+  changed |= ImGui::Checkbox(tr_id("centre of mass at rest"), &g.cm_at_rest);
 
   ImGui::SetNextItemWidth(half);
-  ImGui::InputScalar("seed", ImGuiDataType_U64, &g.seed);
+  ImGui::InputScalar(tr_id("seed"), ImGuiDataType_U64, &g.seed);
   changed |= committed();
   ImGui::SameLine();
-  if (ImGui::Button("New seed")) {
+  if (ImGui::Button(tr_id("New seed"))) {
     g.seed = g.seed * 6364136223846793005ull + 1442695040888963407ull;
     g.seed %= (1ull << 53);  // the preset format keeps seeds exact in a double
     changed = true;
   }
-  help_marker("The same seed gives the same swarm on every machine and in the browser.");
+  help_marker(tr("The same seed gives the same swarm on every machine and in the browser."));
   if (changed) state.apply_draft(Section::system);
 }
 
@@ -217,7 +223,7 @@ void draw_system_panel(AppState& state) {
   int kind = std::holds_alternative<ParticleList>(d.particles) ? 1 : 0;
   const swarm::System& running = state.run->system();
   const bool small = running.particles.size() <= kTableLimit;
-  ImGui::RadioButton("generated swarm", &kind, 0);
+  ImGui::RadioButton(tr_id("generated swarm"), &kind, 0);
   if (ImGui::IsItemClicked() && std::holds_alternative<ParticleList>(d.particles)) {
     swarm::SwarmSpec g;
     g.count = long(std::get<ParticleList>(d.particles).size());
@@ -226,7 +232,7 @@ void draw_system_panel(AppState& state) {
   }
   ImGui::SameLine();
   ImGui::BeginDisabled(!small && !std::holds_alternative<ParticleList>(d.particles));
-  ImGui::RadioButton("particle table", &kind, 1);
+  ImGui::RadioButton(tr_id("particle table"), &kind, 1);
   if (ImGui::IsItemClicked() && std::holds_alternative<swarm::SwarmSpec>(d.particles)) {
     // The table starts from the swarm as generated, so nothing jumps.
     d.particles = swarm::initial_system(state.preset).particles;
@@ -234,8 +240,8 @@ void draw_system_panel(AppState& state) {
   }
   ImGui::EndDisabled();
   help_marker(
-      "A table lists every particle's m, r and v (up to 20 particles). A generated "
-      "swarm is drawn at random from a seed.");
+      tr("A table lists every particle's m, r and v (up to 20 particles). A generated "
+         "swarm is drawn at random from a seed."));
 
   if (auto* list = std::get_if<ParticleList>(&d.particles))
     draw_table(state, *list);

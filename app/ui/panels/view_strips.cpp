@@ -1,5 +1,6 @@
 #include <imgui.h>
 
+#include "i18n/translator.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/window_placement.h"
 #include "ui/panels/windows.h"
@@ -13,13 +14,13 @@ void draw_view_strips(AppState& state, const ScreenLayout& layout) {
                                  ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing;
   place(l.transport);
-  if (ImGui::Begin("Transport###transport", nullptr, strip)) draw_transport_bar(s);
+  if (ImGui::Begin(tr_id("Transport###transport"), nullptr, strip)) draw_transport_bar(s);
   s.layout.transport_height = content_height();
   record_panel(s, "Transport");
   ImGui::End();
   if (l.readouts.shown()) {
     place(l.readouts);
-    if (ImGui::Begin("Read-outs###readouts", nullptr, strip)) draw_readouts(s);
+    if (ImGui::Begin(tr_id("Read-outs###readouts"), nullptr, strip)) draw_readouts(s);
     s.layout.readouts_height = content_height();
     record_panel(s, "Read-outs");
     ImGui::End();

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
+#include "i18n/translator.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/wall_motion.h"
 #include "ui/input/touch_target.h"
@@ -41,10 +43,10 @@ bool draw_moves(swarm::Preset& d, float width) {
     ImGui::Text("%zu.", i + 1);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(0.5f * width);
-    changed |= input_double("to R", &d.wall_moves[i].to, "%.4g");
+    changed |= input_double(tr_id("to R"), &d.wall_moves[i].to, "%.4g");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(0.5f * width);
-    changed |= input_double("at u", &d.wall_moves[i].speed, "%.4g");
+    changed |= input_double(tr_id("at u"), &d.wall_moves[i].speed, "%.4g");
     if (d.wall_moves.size() > 1) {
       ImGui::SameLine();
       if (ImGui::Button("x", ImVec2(target_width("x"), 0))) drop = i;
@@ -55,7 +57,7 @@ bool draw_moves(swarm::Preset& d, float width) {
     d.wall_moves.erase(d.wall_moves.begin() + long(drop));
     changed = true;
   }
-  if (ImGui::Button("+ move", ImVec2(target_width("+ move"), 0))) {
+  if (ImGui::Button(tr_id("+ move"), ImVec2(target_width(tr_id("+ move")), 0))) {
     const swarm::WallMove last = d.wall_moves.back();
     d.wall_moves.push_back({d.container_radius.value_or(1.0), last.speed});
     changed = true;
@@ -71,35 +73,35 @@ void draw_walls_panel(AppState& state) {
   const float width = 0.45f * ImGui::GetContentRegionAvail().x;
 
   if (!d.container_radius) {
-    ImGui::TextDisabled("A moving or hot wall needs the container (above).");
+    ImGui::TextDisabled("%s", tr("A moving or hot wall needs the container (above)."));
   } else {
     int kind = wall_kind(d);
-    ImGui::TextUnformatted("Wall");
+    ImGui::TextUnformatted(tr("Wall"));
     ImGui::SameLine();
-    bool picked = ImGui::RadioButton("still", &kind, still);
+    bool picked = ImGui::RadioButton(tr_id("still"), &kind, still);
     ImGui::SameLine();
-    picked |= ImGui::RadioButton("moving", &kind, moving);
+    picked |= ImGui::RadioButton(tr_id("moving"), &kind, moving);
     ImGui::SameLine();
-    picked |= ImGui::RadioButton("hot", &kind, hot);
+    picked |= ImGui::RadioButton(tr_id("hot"), &kind, hot);
     if (picked && kind != wall_kind(d)) {
       set_wall_kind(d, WallKind(kind));
       changed = true;
     }
     help_marker(
-        "moving: the wall travels to each radius in turn at its speed u, then stays. A "
-        "particle bounces off it with its velocity relative to the wall reversed, so "
-        "squeezing does work on the gas (W) and letting out takes it back. hot: a particle "
-        "that hits the wall is sent back with a random velocity from the Maxwell "
-        "distribution at the wall's temperature Tw; the energy it gains is heat (Q).");
+        tr("moving: the wall travels to each radius in turn at its speed u, then stays. A "
+           "particle bounces off it with its velocity relative to the wall reversed, so "
+           "squeezing does work on the gas (W) and letting out takes it back. hot: a particle "
+           "that hits the wall is sent back with a random velocity from the Maxwell "
+           "distribution at the wall's temperature Tw; the energy it gains is heat (Q)."));
     if (!d.wall_moves.empty()) changed |= draw_moves(d, width);
     if (d.wall_temperature) {
       ImGui::SetNextItemWidth(width);
-      changed |= input_double("wall temperature Tw", &*d.wall_temperature, "%.4g");
+      changed |= input_double(tr_id("wall temperature Tw"), &*d.wall_temperature, "%.4g");
     }
   }
 
   bool spheres = d.sphere_radius.has_value();
-  if (ImGui::Checkbox("hard spheres", &spheres)) {
+  if (ImGui::Checkbox(tr_id("hard spheres"), &spheres)) {
     changed = true;
     if (spheres)
       d.sphere_radius = 0.02 * d.container_radius.value_or(1.0);
@@ -107,12 +109,12 @@ void draw_walls_panel(AppState& state) {
       d.sphere_radius.reset();
   }
   help_marker(
-      "Every particle is a ball of radius a; two balls that touch bounce elastically, "
-      "sharing energy and momentum, and a ball reaches the wall when its centre is at R - a. "
-      "The balls are drawn at their true size.");
+      tr("Every particle is a ball of radius a; two balls that touch bounce elastically, "
+         "sharing energy and momentum, and a ball reaches the wall when its centre is at R - a. "
+         "The balls are drawn at their true size."));
   if (d.sphere_radius) {
     ImGui::SetNextItemWidth(width);
-    changed |= input_double("sphere radius a", &*d.sphere_radius, "%.4g");
+    changed |= input_double(tr_id("sphere radius a"), &*d.sphere_radius, "%.4g");
   }
   if (changed) state.apply_draft(Section::walls);
   show_refusal(state, Section::walls);
@@ -124,15 +126,21 @@ void draw_walls_panel(AppState& state) {
   ImGui::Separator();
   const swarm::System& s = state.run->system();
   const swarm::SpeedCheck speeds = swarm::check_speeds(s);
-  ImGui::Text("gas temperature T = %.4g", speeds.T);
-  if (p.wall_temperature) ImGui::Text("wall temperature Tw = %.4g", *p.wall_temperature);
+  char text[160];
+  std::snprintf(text, sizeof text, tr("gas temperature T = %.4g"), speeds.T);
+  ImGui::TextUnformatted(translator().numbers(text).c_str());
+  if (p.wall_temperature) {
+    std::snprintf(text, sizeof text, tr("wall temperature Tw = %.4g"), *p.wall_temperature);
+    ImGui::TextUnformatted(translator().numbers(text).c_str());
+  }
   if (speeds.T > 0 && speeds.n >= 20) {
-    ImGui::Text("speeds vs Maxwell: KS sqrt(N) D = %.3g",
-                std::sqrt(double(speeds.n)) * speeds.ks_distance);
+    std::snprintf(text, sizeof text, tr("speeds vs Maxwell: KS sqrt(N) D = %.3g"),
+                  std::sqrt(double(speeds.n)) * speeds.ks_distance);
+    ImGui::TextUnformatted(translator().numbers(text).c_str());
     help_marker(
-        "The Kolmogorov-Smirnov distance between the particles' speeds and the Maxwell "
-        "distribution at T, times sqrt(N). Below about 1.4 the speeds are as Maxwellian as "
-        "a true sample of N would be.");
+        tr("The Kolmogorov-Smirnov distance between the particles' speeds and the Maxwell "
+           "distribution at T, times sqrt(N). Below about 1.4 the speeds are as Maxwellian as "
+           "a true sample of N would be."));
   }
 }
 
