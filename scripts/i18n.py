@@ -19,7 +19,8 @@ import sys
 
 root = pathlib.Path(__file__).resolve().parent.parent
 tables = root / "assets" / "i18n"
-sources = [root / "app" / "ui", root / "app" / "access", root / "app" / "lessons", root / "web"]
+sources = [root / "app" / "ui", root / "app" / "access", root / "app" / "labels", root / "app" / "lessons",
+           root / "web"]
 
 # tr("..."), tr_id("...") and tr_noop("..."): one or more adjacent literals, as C++ joins them.
 call = re.compile(r'\btr(?:_id|_noop)?\s*\(\s*((?:"(?:[^"\\\n]|\\.)*"\s*)+)\)')

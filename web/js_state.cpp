@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "i18n/translator.h"
 #include "ui/parallel_dom/parallel_dom.h"
 #include "web_app.h"
 
@@ -108,7 +109,11 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   const ImGuiContext* imgui = ImGui::GetCurrentContext();
   const ImGuiWindow* nav = imgui ? imgui->NavWindow : nullptr;
   if (nav && imgui->NavLayer == ImGuiNavLayer_Menu) j["keyboard_focus"] = "menu";
-  else if (nav) j["keyboard_focus"] = std::string(nav->RootWindow->Name).substr(0, std::string(nav->RootWindow->Name).find("##"));
+  else if (nav) {
+    // The English name in every language (the API's), without its "##" ID.
+    const std::string name(swarmlab::translator().english_label(nav->RootWindow->Name));
+    j["keyboard_focus"] = name.substr(0, name.find("##"));
+  }
   else j["keyboard_focus"] = nullptr;
   // The item the keyboard is on (its name as the parallel DOM gives it), or null.
   j["keyboard_item"] = nullptr;

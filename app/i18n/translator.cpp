@@ -77,6 +77,7 @@ void Translator::use(const Language& language, StringTable table) {
   table_ = std::move(table);
   pseudo_.clear();
   labels_.clear();
+  english_labels_.clear();
 }
 
 const char* Translator::text(const char* english) {
@@ -105,7 +106,13 @@ const char* Translator::label(const char* english) {
     else
       made += "###" + std::string(whole);
   }
+  english_labels_.emplace(made, english);
   return labels_.emplace(english, std::move(made)).first->second.c_str();
+}
+
+std::string_view Translator::english_label(std::string_view shown) const {
+  const auto it = english_labels_.find(std::string(shown));
+  return it == english_labels_.end() ? shown : std::string_view(it->second);
 }
 
 std::string Translator::numbers(std::string printed) const {

@@ -26,6 +26,9 @@ class Translator {
   /// keeps one ID (its open state, its focus, the parallel DOM's identity) in every language.
   /// "Open##preset" shows text("Open") with the ID of "###Open##preset".
   const char* label(const char* english);
+  /// The English label a label() came from (a window's name as ImGui keeps it), or `shown`
+  /// itself when label() did not make it: what swarmlab.state() reports, in every language.
+  std::string_view english_label(std::string_view shown) const;
   /// Printed text with every decimal point between two digits written as the language's
   /// separator: "t = 7.5" reads "t = 7,5" in Spanish.
   std::string numbers(std::string printed) const;
@@ -36,6 +39,7 @@ class Translator {
   // Made on first use and kept until the language changes; unordered_map keeps its values in
   // place as it grows, so the pointers handed out stay valid.
   std::unordered_map<std::string, std::string> pseudo_, labels_;
+  std::unordered_map<std::string, std::string> english_labels_;  // label() -> its English
 };
 
 /// The pseudo-language's text for `english`: letters accented, the text padded to about 1.6x

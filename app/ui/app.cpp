@@ -9,6 +9,7 @@
 #include <limits>
 #include <utility>
 
+#include "i18n/translator.h"
 #include "swarm/physics/system.h"
 #include "ui/classroom/presentation.h"
 #include "ui/input/shortcuts.h"
@@ -40,7 +41,8 @@ void record_floating_windows(AppState& s) {
     if (w->Flags & ImGuiWindowFlags_ChildWindow) continue;
     if ((w->Flags & ImGuiWindowFlags_NoMove) && !(w->Flags & ImGuiWindowFlags_Popup)) continue;
     if (w->Flags & ImGuiWindowFlags_Tooltip) continue;
-    Layout::FloatingWindow f{w->Name, {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}, {}, w->Scroll.y};
+    Layout::FloatingWindow f{std::string(translator().english_label(w->Name)),
+                             {w->Pos.x, w->Pos.y, w->Size.x, w->Size.y}, {}, w->Scroll.y};
     if (w->HasCloseButton && !(w->Flags & ImGuiWindowFlags_NoTitleBar)) {
       const float side = g.FontSize + 2 * style.FramePadding.x;
       f.close = {w->Pos.x + w->Size.x - 2 * style.FramePadding.x - g.FontSize, w->Pos.y, side,

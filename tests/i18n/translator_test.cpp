@@ -36,6 +36,8 @@ TEST_CASE("labels keep the English ID in every language") {
   CHECK(std::string(t.label("Open###file")) == "Abrir###file");
   CHECK(std::string(t.label("##speed")) == "##speed");
   CHECK(std::string(t.label("Reset")) == "Reset###Reset");
+  CHECK(t.english_label("Abrir###Open##preset") == "Open##preset");
+  CHECK(t.english_label("Controls") == "Controls");  // not made by label(): as it is
   Translator plain;
   CHECK(std::string(plain.label("Pause")) == "Pause###Pause");  // the same ID as in Spanish
 }
