@@ -142,7 +142,8 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
   const float buttons = ImGui::GetFrameHeightWithSpacing();
   height = std::max(height - buttons, (top - origin.y) + kMinFrameLines * font + 2.4f * font);
   const float bottom = origin.y + height - 2.4f * font;
-  ImGui::InvisibleButton("plot", ImVec2(width, height));
+  // Named "plot" for a screen reader (the parallel DOM), in the language in use.
+  ImGui::InvisibleButton(tr_id("plot"), ImVec2(width, height));
   const bool hovered = ImGui::IsItemHovered();
   const bool right_clicked = ImGui::IsItemClicked(ImGuiMouseButton_Right);
   ImDrawList* draw = ImGui::GetWindowDrawList();
