@@ -4,6 +4,7 @@
 
 #include "ui/lesson_player/lesson_panel.h"
 
+#include "i18n/translator.h"
 #include "lessons/device_words.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/lesson_player/input_kind.h"
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -24,6 +26,19 @@
 namespace swarmlab {
 namespace {
 
+/// Text printed as `format` (translated) says.
+std::string printed(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string text(std::size_t(n > 0 ? n : 0) + 1, '\0');
+  std::vsnprintf(text.data(), text.size(), format, again);
+  va_end(again);
+  text.pop_back();
+  return text;
+}
 
 /// Keeps the current window inside the main viewport (after the browser window shrinks, a
 /// phone turns, or the student drags it off), no wider or taller than the viewport.
@@ -103,8 +118,14 @@ void draw_prose(const std::string& text) {
 
 namespace {
 
+/// A lesson's text (its step, prompt, option, feedback or outcome) in the language in use, its
+/// device words chosen for this device: the translation keeps the {tap|click} choices.
+std::string lesson_words(const AppState& state, const std::string& text) {
+  return device_words(tr(text.c_str()), input_kind(state));
+}
+
 void draw_lesson_prose(const AppState& state, const std::string& text) {
-  draw_prose(device_words(text, input_kind(state)));
+  draw_prose(lesson_words(state, text));
 }
 
 ImVec4 marking_colour(const std::optional<bool>& correct) {
@@ -155,7 +176,7 @@ bool draw_task(AppState& state, const LessonTask& task) {
   draw_lesson_prose(state, task.prompt);
   if (task.kind == LessonTask::Kind::measure) {
     ImGui::SetNextItemWidth(8 * ImGui::GetFontSize());
-    const bool entered = ImGui::InputText("Your answer##answer", &lessons.typed,
+    const bool entered = ImGui::InputText(tr_id("Your answer##answer"), &lessons.typed,
                                           ImGuiInputTextFlags_CharsScientific |
                                               ImGuiInputTextFlags_EnterReturnsTrue);
     // Enter in the field checks, whichever Enter key it was (the field may give up its focus
@@ -163,7 +184,7 @@ bool draw_task(AppState& state, const LessonTask& task) {
     const bool enter = entered || (ImGui::IsItemFocused() && enter_pressed()) ||
                        (ImGui::IsItemDeactivated() && enter_pressed());
     ImGui::SameLine();
-    if (ImGui::Button("Check") || enter) {
+    if (ImGui::Button(tr_id("Check")) || enter) {
       char* end = nullptr;
       const double value = std::strtod(lessons.typed.c_str(), &end);
       lessons.answer_number(*state.run, end != lessons.typed.c_str() ? value : NAN);
@@ -171,9 +192,11 @@ bool draw_task(AppState& state, const LessonTask& task) {
   } else if (task.kind == LessonTask::Kind::choice) {
     for (std::size_t i = 0; i < task.options.size(); ++i) {
       ImGui::PushID(int(i));
-      const std::string label = "Pick " + std::string(1, char('A' + i)) + "##pick";
+      const char letter = char('A' + i);
+      // Shown in the language in use, with the English label as its ID (as tr_id gives it).
+      const std::string label = printed(tr("Pick %c"), letter) + "###Pick " + letter + "##pick";
       if (ImGui::Button(label.c_str())) answer_lesson_option(state, i);
-      name_item(label.substr(0, 6) + ": " + device_words(task.options[i], input_kind(state)));
+      name_item(printed(tr("Pick %c: %s"), letter, lesson_words(state, task.options[i]).c_str()));
       ImGui::SameLine();
       draw_lesson_prose(state, task.options[i]);
       ImGui::PopID();
@@ -181,22 +204,26 @@ bool draw_task(AppState& state, const LessonTask& task) {
   } else {
     const std::optional<std::size_t> predicted = lessons.prediction();
     if (!predicted) {
-      mirror_text(ItemRole::paragraph, "The run waits for your prediction.");
-      ImGui::TextDisabled("The run waits for your prediction.");
+      const char* waits = tr("The run waits for your prediction.");
+      mirror_text(ItemRole::paragraph, waits);
+      ImGui::TextDisabled("%s", waits);
       for (std::size_t i = 0; i < task.options.size(); ++i) {
         ImGui::PushID(int(i));
-        const std::string label = "Predict " + std::string(1, char('A' + i)) + "##predict";
+        const char letter = char('A' + i);
+        const std::string label =
+            printed(tr("Predict %c"), letter) + "###Predict " + letter + "##predict";
         if (ImGui::Button(label.c_str())) answer_lesson_option(state, i);
-        name_item(label.substr(0, 9) + ": " + device_words(task.options[i], input_kind(state)));
+        name_item(
+            printed(tr("Predict %c: %s"), letter, lesson_words(state, task.options[i]).c_str()));
         ImGui::SameLine();
         draw_lesson_prose(state, task.options[i]);
         ImGui::PopID();
       }
     } else {
-      coloured_line(colour_vec4(palette.feedback_note), "Your prediction:");
+      coloured_line(colour_vec4(palette.feedback_note), tr("Your prediction:"));
       draw_lesson_prose(state, task.options[*predicted]);
       if (!task.outcome.empty()) {
-        coloured_line(colour_vec4(palette.feedback_note), "Now compare:");
+        coloured_line(colour_vec4(palette.feedback_note), tr("Now compare:"));
         draw_lesson_prose(state, task.outcome);
       }
       return true;  // the outcome is already shown beside the prediction
@@ -220,20 +247,19 @@ void draw_summary(AppState& state, float box_height) {
   const Lesson& lesson = *lessons.open_lesson();
   const LessonProgress* progress = lessons.progress_of(lesson.id);
   const std::string finished = lessons.finished_line();
-  heading("Summary");
+  heading(tr("Summary"));
   mirror_text(ItemRole::paragraph, finished);
   ImGui::PushTextWrapPos(0);  // a narrow panel wraps it rather than cut it off
   ImGui::TextUnformatted(finished.c_str());
   ImGui::PopTextWrapPos();
-  char line[96];
   ImGui::BeginChild("summary", ImVec2(0, box_height), true);
   std::size_t number = 0;
   for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
     const LessonStep& step = lesson.steps[i];
     if (!step.task) continue;
     ImGui::PushID(int(i));
-    std::snprintf(line, sizeof line, "Task %zu (step %zu)", ++number, i + 1);
-    heading(line);
+    ++number;
+    heading(printed(tr("Task %zu (step %zu)"), number, i + 1).c_str());
     draw_lesson_prose(state, step.task->prompt);
     const StepAnswer* a = nullptr;
     if (progress) {
@@ -241,14 +267,25 @@ void draw_summary(AppState& state, float box_height) {
       if (found != progress->answers.end()) a = &found->second;
     }
     if (!a) {
-      mirror_text(ItemRole::paragraph, "Not answered.");
-      ImGui::TextDisabled("Not answered.");
+      const char* not_answered = tr("Not answered.");
+      mirror_text(ItemRole::paragraph, not_answered);
+      ImGui::TextDisabled("%s", not_answered);
     } else {
-      const std::string verdict = !a->correct ? "recorded (a prediction is not marked)"
-                                  : *a->correct ? "right"
-                                                : "not right yet";
-      std::string text = "Your answer: " + a->answer + " \u2014 " + verdict;
-      if (a->tries > 1) text += " (after " + std::to_string(a->tries) + " tries)";
+      // The answer: a number typed, or an option's text (a key, as the lesson's texts are).
+      const std::string answer = step.task->kind == LessonTask::Kind::measure
+                                     ? translator().numbers(a->answer)
+                                     : std::string(tr(a->answer.c_str()));
+      const char* format;
+      if (a->tries > 1)
+        format = !a->correct    ? tr("Your answer: %s \u2014 recorded (a prediction is not marked) "
+                                     "(after %zu tries)")
+                 : *a->correct ? tr("Your answer: %s \u2014 right (after %zu tries)")
+                               : tr("Your answer: %s \u2014 not right yet (after %zu tries)");
+      else
+        format = !a->correct    ? tr("Your answer: %s \u2014 recorded (a prediction is not marked)")
+                 : *a->correct ? tr("Your answer: %s \u2014 right")
+                               : tr("Your answer: %s \u2014 not right yet");
+      const std::string text = printed(format, answer.c_str(), a->tries);
       ImGui::PushStyleColor(ImGuiCol_Text, marking_colour(a->correct));
       draw_prose(text);
       ImGui::PopStyleColor();
@@ -257,9 +294,10 @@ void draw_summary(AppState& state, float box_height) {
     ImGui::PopID();
   }
   ImGui::EndChild();
-  if (ImGui::Button("Restart lesson")) show_lesson_scene(state, lessons.restart());
+  if (ImGui::Button(tr_id("Restart lesson"))) show_lesson_scene(state, lessons.restart());
   if (const Lesson* next = lessons.next_lesson()) {
-    const std::string label = "Next lesson: " + next->title + "##next-lesson";
+    const std::string label = printed(tr("Next lesson: %s"), tr(next->title.c_str())) +
+                              "###Next lesson: " + next->title + "##next-lesson";
     if (button_in_row(label.c_str())) open_lesson(state, *next);
   }
 }
@@ -268,12 +306,15 @@ void draw_summary(AppState& state, float box_height) {
 
 bool draw_hidden_by_lesson(const AppState& state, LessonHidden what) {
   if (!state.lessons.hides(what)) return false;
-  const char* name = what == LessonHidden::readouts ? "The read-outs are"
-                     : what == LessonHidden::card   ? "The particle's card is"
-                                                    : "The plots are";
-  const std::string text = std::string(name) +
-                           " hidden until you answer the lesson's question: it would give the "
-                           "answer away.";
+  const std::string text =
+      what == LessonHidden::readouts
+          ? tr("The read-outs are hidden until you answer the lesson's question: it would give "
+               "the answer away.")
+      : what == LessonHidden::card
+          ? tr("The particle's card is hidden until you answer the lesson's question: it would "
+               "give the answer away.")
+          : tr("The plots are hidden until you answer the lesson's question: it would give the "
+               "answer away.");
   mirror_text(ItemRole::paragraph, text);
   ImGui::PushTextWrapPos(0);
   ImGui::TextDisabled("%s", text.c_str());
@@ -298,18 +339,18 @@ void draw_lesson(AppState& state, float height) {
   last_shown = shown, last_lesson = int(lesson_key);
   if (new_page) ImGui::SetScrollY(0);
 
-  mirror_text(ItemRole::heading, lesson->title);
+  const char* title = tr(lesson->title.c_str());
+  mirror_text(ItemRole::heading, title);
   ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette.lesson_title));
   ImGui::PushTextWrapPos(0);
-  ImGui::TextUnformatted(lesson->title.c_str());
+  ImGui::TextUnformatted(title);
   ImGui::PopTextWrapPos();
   ImGui::PopStyleColor();
   const std::size_t step = lessons.step(), steps = lesson->steps.size();
   if (!lessons.showing_summary()) {
-    char progress[48];
-    std::snprintf(progress, sizeof progress, "step %zu of %zu", step + 1, steps);
-    mirror_text(ItemRole::paragraph, "Step " + std::to_string(step + 1) + " of " + std::to_string(steps));
-    ImGui::ProgressBar(float(step + 1) / float(steps), ImVec2(-1, 0), progress);
+    const std::string progress = printed(tr("step %zu of %zu"), step + 1, steps);
+    mirror_text(ItemRole::paragraph, printed(tr("Step %zu of %zu"), step + 1, steps));
+    ImGui::ProgressBar(float(step + 1) / float(steps), ImVec2(-1, 0), progress.c_str());
   }
   if (!lessons.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette.feedback_wrong));
@@ -324,7 +365,7 @@ void draw_lesson(AppState& state, float height) {
   bool close = false;
   if (lessons.showing_summary()) {
     draw_summary(state, box);
-    if (button_in_row("Close lesson")) close = true;
+    if (button_in_row(tr_id("Close lesson"))) close = true;
   } else {
     const LessonStep& s = lesson->steps[step];
     ImGui::BeginChild("step", ImVec2(0, box), true);
@@ -343,18 +384,19 @@ void draw_lesson(AppState& state, float height) {
     if (feedback && int(lessons.answer_count()) != last_answers) ImGui::SetScrollHereY(1.0f);
     last_answers = int(lessons.answer_count());
     ImGui::BeginDisabled(step == 0);
-    if (ImGui::Button("\u2190 Back")) show_lesson_scene(state, lessons.back());
+    if (ImGui::Button(tr_id("\u2190 Back"))) show_lesson_scene(state, lessons.back());
     ImGui::EndDisabled();
     if (step + 1 < steps) {
-      if (button_in_row("Next \u2192")) show_lesson_scene(state, lessons.next());
-    } else if (button_in_row("Finish")) {
+      if (button_in_row(tr_id("Next \u2192"))) show_lesson_scene(state, lessons.next());
+    } else if (button_in_row(tr_id("Finish"))) {
       lessons.finish();
     }
-    if (button_in_row("Close lesson")) close = true;
+    if (button_in_row(tr_id("Close lesson"))) close = true;
   }
   if (lessons.share) {
-    if (button_in_row("Share lesson")) lessons.share(lessons.share_fragment());
-    item_tooltip("A link that opens this lesson for a student: copied, and shown on the page");
+    if (button_in_row(tr_id("Share lesson"))) lessons.share(lessons.share_fragment());
+    item_tooltip("%s",
+                 tr("A link that opens this lesson for a student: copied, and shown on the page"));
   }
   // What is not the text box, for the next frame's box height.
   chrome_height() = ImGui::GetCursorPosY() - top - box + 0.25f * font;
@@ -365,15 +407,15 @@ void draw_lesson(AppState& state, float height) {
 // [SECTION] the welcome window and the Lessons menu ---------------------------------------------
 
 void draw_lessons_menu(AppState& state) {
-  if (!ImGui::BeginMenu("Lessons")) return;
+  if (!ImGui::BeginMenu(tr_id("Lessons"))) return;
   for (const Lesson& l : state.lessons.shipped()) {
     const std::string done = progress_note(l, state.lessons.progress_of(l.id));
     const Lesson* open = state.lessons.open_lesson();
-    if (ImGui::MenuItem(l.title.c_str(), done.c_str(), open && open->id == l.id))
+    if (ImGui::MenuItem(tr_id(l.title.c_str()), done.c_str(), open && open->id == l.id))
       open_lesson(state, l);
   }
   ImGui::Separator();
-  if (ImGui::MenuItem("Welcome...")) state.lessons.show_welcome = true;
+  if (ImGui::MenuItem(tr_id("Welcome..."))) state.lessons.show_welcome = true;
   ImGui::EndMenu();
 }
 
@@ -389,52 +431,54 @@ void draw_welcome_window(AppState& state) {
   ImGui::SetNextWindowSize(ImVec2(width, std::min(30 * font, 0.9f * viewport->Size.y)),
                            ImGuiCond_Appearing);
   bool open = true;
-  if (ImGui::Begin("Welcome", &open,
+  if (ImGui::Begin(tr_id("Welcome"), &open,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     keep_inside_viewport();
     ImGui::PushTextWrapPos(0);
-    heading("Welcome to Swarm Lab");
-    draw_prose(
+    heading(tr("Welcome to Swarm Lab"));
+    draw_prose(tr(
         "Particles that pull on each other like springs (F = J m\u2081 m\u2082 r), solved "
         "exactly. The *3D view*: drag to turn it, scroll or pinch to zoom, right-drag or "
         "drag two fingers to slide it, click or tap a particle to follow it. Above it the "
         "play buttons and the clock, below it the "
         "*read-outs* (hover one for its equation) and the timeline. Beside it (on a phone, in "
         "the tabs below) the *Controls* (the scenario, the masses, the container, the method) "
-        "and live *Plots* with the *Instruments*: a stopwatch and a period meter.");
+        "and live *Plots* with the *Instruments*: a stopwatch and a period meter."));
     ImGui::Spacing();
-    heading("Three things to try");
-    draw_prose("1. Press *Space* to pause and play; click a ball and watch all four close their "
-               "orbits together.");
-    draw_prose("2. Open *Scenario* and pick the repulsive fireball: the push turns into a gas "
-               "pressing on its wall.");
-    draw_prose("3. In *Controls \u2192 System*, change a mass and see the period in the "
-               "read-outs change.");
+    heading(tr("Three things to try"));
+    draw_prose(tr("1. Press *Space* to pause and play; click a ball and watch all four close "
+                  "their orbits together."));
+    draw_prose(tr("2. Open *Scenario* and pick the repulsive fireball: the push turns into a gas "
+                  "pressing on its wall."));
+    draw_prose(tr("3. In *Controls \u2192 System*, change a mass and see the period in the "
+                  "read-outs change."));
     ImGui::Spacing();
-    heading("Lessons (10 to 20 minutes each)");
+    heading(tr("Lessons (10 to 20 minutes each)"));
     for (const Lesson& l : lessons.shipped()) {
       ImGui::PushID(l.id.c_str());
-      if (ImGui::Button("Start")) {
+      if (ImGui::Button(tr_id("Start"))) {
         open_lesson(state, l);
         lessons.dismiss_welcome();
       }
-      name_item("Start: " + l.title);
-      describe_item(l.summary);
+      const char* title = tr(l.title.c_str());
+      const char* summary = tr(l.summary.c_str());
+      name_item(printed(tr("Start: %s"), title));
+      describe_item(summary);
       ImGui::SameLine();
-      ImGui::TextUnformatted(l.title.c_str());
+      ImGui::TextUnformatted(title);
       if (ImGui::IsItemHovered()) {
         ImGui::BeginTooltip();
         ImGui::PushTextWrapPos(24 * font);
-        ImGui::TextUnformatted(l.summary.c_str());
+        ImGui::TextUnformatted(summary);
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
       }
       ImGui::PopID();
     }
     ImGui::Spacing();
-    if (ImGui::Button("Just the simulation")) lessons.dismiss_welcome();
+    if (ImGui::Button(tr_id("Just the simulation"))) lessons.dismiss_welcome();
     ImGui::SameLine();
-    ImGui::TextDisabled("(this window is in Lessons \u2192 Welcome)");
+    ImGui::TextDisabled("%s", tr("(this window is in Lessons \u2192 Welcome)"));
     ImGui::PopTextWrapPos();
   }
   ImGui::End();

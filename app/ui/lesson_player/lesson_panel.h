@@ -10,7 +10,8 @@ namespace swarmlab {
 /// step_height tall: at the top of the Controls panel in the wide layout and as the drawer's
 /// first tab in the compact ones, so that it never covers the swarm. Nothing without a lesson.
 void draw_lesson(AppState& state, float step_height);
-/// The welcome window, on the first start and from Help. Its ImGui name is "Welcome".
+/// The welcome window, on the first start and from Help. Its ImGui name is tr_id("Welcome"):
+/// "Welcome" in the language in use, with "###Welcome" as its ID.
 void draw_welcome_window(AppState& state);
 /// The Lessons menu of the menu bar: every shipped lesson, and the welcome.
 void draw_lessons_menu(AppState& state);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files/atomic_file.h"
+#include "i18n/translator.h"
 #include "lessons/lesson_file.h"
 #include "lessons/lesson_link.h"
 #include "swarm/measure/thermometry.h"
@@ -78,14 +79,16 @@ std::unique_ptr<ProgressStore> make_file_progress_store() {
 
 std::string progress_note(const Lesson& lesson, const LessonProgress* p) {
   if (!p) return {};
-  if (p->finished) return "done";
+  if (p->finished) return tr("done");
   std::size_t tasks = 0, right = 0;
   for (std::size_t i = 0; i < lesson.steps.size(); ++i)
     if (lesson.steps[i].task) {
       ++tasks;
       right += p->solved.count(i);
     }
-  return std::to_string(right) + "/" + std::to_string(tasks) + " tasks";
+  char note[128];
+  std::snprintf(note, sizeof note, tr("%zu/%zu tasks"), right, tasks);
+  return note;
 }
 
 void LessonSession::load(const std::string& lesson_directory, std::unique_ptr<ProgressStore> store,
@@ -258,8 +261,11 @@ std::size_t LessonSession::answered_count() const {
 }
 
 std::string LessonSession::finished_line() const {
-  return "Finished: " + std::to_string(answered_count()) + " of " +
-         std::to_string(task_count()) + " tasks done (answered right, or predicted).";
+  char line[512];
+  std::snprintf(line, sizeof line,
+                tr("Finished: %zu of %zu tasks done (answered right, or predicted)."),
+                answered_count(), task_count());
+  return line;
 }
 
 std::string LessonSession::share_fragment() const {

@@ -2,13 +2,33 @@
 
 #include "ui/lesson_player/lesson_session.h"
 
+#include <cstdarg>
+#include <cstdio>
+
+#include "i18n/translator.h"
+
 namespace swarmlab {
 namespace {
 
-/// The text as it is read: device words chosen, emphasis marks dropped, paragraphs joined.
+/// A sentence printed as `format` (translated) says.
+std::string sentence(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string text(std::size_t(n > 0 ? n : 0) + 1, '\0');
+  std::vsnprintf(text.data(), text.size(), format, again);
+  va_end(again);
+  text.pop_back();
+  return text;
+}
+
+/// A lesson's text as it is read: in the language in use (translated before its device words
+/// are chosen, as the key holds the choices), emphasis marks dropped, paragraphs joined.
 std::string plain(const std::string& text, InputKind input) {
   std::string out;
-  for (const char c : without_emphasis(device_words(text, input))) {
+  for (const char c : without_emphasis(device_words(tr(text.c_str()), input))) {
     if (c == '\n') {
       if (!out.empty() && out.back() != ' ') out += ' ';
       continue;
@@ -30,21 +50,23 @@ std::string step_words(const LessonSession& lessons, InputKind input) {
   const Lesson& lesson = *lessons.open_lesson();
   const std::size_t i = lessons.step();
   const LessonStep& step = lesson.steps[i];
-  std::string words = lesson.title + ", step " + std::to_string(i + 1) + " of " +
-                      std::to_string(lesson.steps.size()) + ".";
+  std::string words =
+      sentence(tr("%s, step %zu of %zu."), tr(lesson.title.c_str()), i + 1, lesson.steps.size());
   add(words, plain(step.text, input));
   if (!step.task) return words;
   add(words, plain(step.task->prompt, input));
   const bool predict = step.task->kind == LessonTask::Kind::predict;
   if (predict && lessons.prediction()) {
     // Made on an earlier visit: the panel shows it and the outcome, not the options.
-    add(words, "Your prediction: " + plain(step.task->options[*lessons.prediction()], input) + ".");
-    if (!step.task->outcome.empty()) add(words, "Now compare: " + plain(step.task->outcome, input));
+    add(words, sentence(tr("Your prediction: %s."),
+                        plain(step.task->options[*lessons.prediction()], input).c_str()));
+    if (!step.task->outcome.empty())
+      add(words, sentence(tr("Now compare: %s"), plain(step.task->outcome, input).c_str()));
     return words;
   }
   for (std::size_t k = 0; k < step.task->options.size(); ++k)
-    add(words, std::string(predict ? "Predict " : "Pick ") + char('A' + k) + ": " +
-                   plain(step.task->options[k], input) + ".");
+    add(words, sentence(predict ? tr("Predict %c: %s.") : tr("Pick %c: %s."), char('A' + k),
+                        plain(step.task->options[k], input).c_str()));
   return words;
 }
 
@@ -58,14 +80,16 @@ LessonSpeech lesson_speech(const LessonSession& lessons, InputKind input) {
     // The welcome, over the simulation; a lesson opened from the menu is read before it.
     if (!lessons.show_welcome) return speech;
     speech.place = "welcome";
-    speech.words = "Welcome to Swarm Lab. Lessons:";
-    for (const Lesson& l : lessons.shipped()) add(speech.words, l.title + ".");
-    add(speech.words, "Or just the simulation.");
+    speech.words = tr("Welcome to Swarm Lab. Lessons:");
+    for (const Lesson& l : lessons.shipped())
+      add(speech.words, std::string(tr(l.title.c_str())) + ".");
+    add(speech.words, tr("Or just the simulation."));
     return speech;
   }
   if (lessons.showing_summary()) {
     speech.place = lesson->id + "/summary";
-    speech.words = lesson->title + ": summary. " + lessons.finished_line();
+    speech.words =
+        sentence(tr("%s: summary."), tr(lesson->title.c_str())) + " " + lessons.finished_line();
     return speech;
   }
   speech.place = lesson->id + "/" + std::to_string(lessons.step());

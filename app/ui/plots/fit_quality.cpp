@@ -3,6 +3,9 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+
+#include "i18n/translator.h"
 #include "ui/plots/plot_widget.h"
 #include "ui/classroom/theme_style.h"
 
@@ -17,28 +20,31 @@ void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm:
   for (int i : fit.used) used_x.push_back(x[std::size_t(i)]);
 
   PlotSpec r;
-  r.title = "Residuals";
+  r.title = tr("Residuals");
+  r.file_title = "Residuals";
   r.x = {"", log_x, std::nullopt, std::nullopt};
-  r.y = {"ln y \u2212 fit", false, std::nullopt, std::nullopt};
+  r.y = {tr("ln y \u2212 fit"), false, std::nullopt, std::nullopt};
   r.y_from_zero = true;  // the zero line is in view: a wave or a trend about it shows
-  r.series = {{"residual", &used_x, &fit.residuals, current_palette().residual.packed(), true,
+  r.series = {{tr("residual"), &used_x, &fit.residuals, current_palette().residual.packed(), true,
                2.0f}};
   draw_plot(id, r, height);
 
-  ImGui::Text("R\u00b2 = %.4f   Durbin-Watson = %.2f   (%zu stages)", fit.r_squared,
-              judged.durbin_watson, fit.used.size());
-  item_tooltip(
+  char line[256];
+  std::snprintf(line, sizeof line, tr("R\u00b2 = %.4f   Durbin-Watson = %.2f   (%zu stages)"),
+                fit.r_squared, judged.durbin_watson, fit.used.size());
+  ImGui::TextUnformatted(translator().numbers(line).c_str());
+  item_tooltip("%s", tr(
         "R\u00b2: the share of the variance of ln y the line explains. Durbin-Watson: about 2 "
         "when the residuals scatter at random, near 0 when neighbours share their sign (a wave "
-        "or a trend the power law does not follow).");
+        "or a trend the power law does not follow)."));
   if (judged.poor()) {
     ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
     ImGui::TextWrapped("%s",
                        judged.systematic
-                           ? "The residuals wave or trend: a power law does not describe these "
-                             "stages, whatever the exponent (paper, Appendix C)."
-                           : "The stages scatter far from any line (R\u00b2 < 0.9): the "
-                             "exponent means little.");
+                           ? tr("The residuals wave or trend: a power law does not describe "
+                                "these stages, whatever the exponent (paper, Appendix C).")
+                           : tr("The stages scatter far from any line (R\u00b2 < 0.9): the "
+                                "exponent means little."));
     ImGui::PopStyleColor();
   }
 }

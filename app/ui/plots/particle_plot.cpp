@@ -3,6 +3,9 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+
+#include "i18n/translator.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/plot_widget.h"
 #include "ui/classroom/theme_style.h"
@@ -12,9 +15,9 @@ namespace swarmlab {
 void draw_particle_tab(AppState& state, float plot_height) {
   const std::optional<ParticleTrack>& track = state.instruments.track;
   if (!track) {
-    ImGui::TextWrapped(
+    ImGui::TextWrapped("%s", tr(
         "Click a particle in the view (or call swarmlab.select(i) in the browser) to plot its "
-        "x(t) about the centre of mass.");
+        "x(t) about the centre of mass."));
     return;
   }
   // The start marker and a level line at the starting value, from the first frame to now.
@@ -24,18 +27,22 @@ void draw_particle_tab(AppState& state, float plot_height) {
   level_t = {start_t[0], track->t.empty() ? start_t[0] : track->t.back()};
   level_x.assign(2, track->x_start);
   PlotSpec p;
-  p.title = "Particle " + std::to_string(track->particle + 1) + ": x(t) \u2212 X_cm(t)";
-  p.x = {"t (time)", false, std::nullopt, std::nullopt};
-  p.y = {"x about the CM (length)", false, std::nullopt, std::nullopt};
+  char title[256];
+  std::snprintf(title, sizeof title, tr("Particle %zu: x(t) \u2212 X_cm(t)"),
+                track->particle + 1);
+  p.title = title;
+  p.file_title = "Particle " + std::to_string(track->particle + 1) + ": x(t) \u2212 X_cm(t)";
+  p.x = {tr("t (time)"), false, std::nullopt, std::nullopt};
+  p.y = {tr("x about the CM (length)"), false, std::nullopt, std::nullopt};
   const Palette& colours = current_palette();
   p.series = {
-      {"starting value", &level_t, &level_x, colours.starting_value.packed(), false, 1.0f},
+      {tr("starting value"), &level_t, &level_x, colours.starting_value.packed(), false, 1.0f},
       {"x(t)", &track->t, &track->x, colours.particle_track.packed(), false, 2.0f},
-      {"start", &start_t, &start_x, colours.particle_start.packed(), true, 2.0f}};
+      {tr("start"), &start_t, &start_x, colours.particle_start.packed(), true, 2.0f}};
   draw_plot("particle_x", p, plot_height);
-  ImGui::TextWrapped(
+  ImGui::TextWrapped("%s", tr(
       "Each time x(t) crosses its starting value in the same direction, one period has passed. "
-      "The period meter (Instruments, above the plots) times these returns.");
+      "The period meter (Instruments, above the plots) times these returns."));
 }
 
 }  // namespace swarmlab

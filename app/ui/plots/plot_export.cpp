@@ -3,10 +3,12 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "i18n/translator.h"
 #include "ui/app_state.h"
 #include "ui/platform/gl_api.h"
 #include "ui/platform/save_dialog.h"
@@ -22,20 +24,31 @@ namespace {
 std::optional<PlotExport> png_capture;  // a PNG waiting for a frame without the menu
 int png_frames_to_wait = 0;
 
+/// `format` (translated, with one %s) with the plot's title.
+std::string with_title(const char* format, const std::string& title) {
+  const int n = std::snprintf(nullptr, 0, format, title.c_str());
+  std::string text(std::size_t(std::max(n, 0)) + 1, '\0');
+  std::snprintf(text.data(), text.size(), format, title.c_str());
+  text.pop_back();
+  return text;
+}
+
 }  // namespace
 
 void handle_plot_export(AppState& state) {
   std::optional<PlotExport> pending = take_plot_export();
   if (!pending) return;
-  const std::string stem = file_stem_of(state.preset.name) + "-" + file_stem_of(pending->title);
+  const std::string stem =
+      file_stem_of(state.preset.name) + "-" + file_stem_of(pending->file_title);
   SaveRequest r;
   switch (pending->kind) {
     case PlotExport::Kind::svg:
-      r = {"the plot \u201c" + pending->title + "\u201d as SVG", stem + ".svg",
+      r = {with_title(tr("the plot \u201c%s\u201d as SVG"), pending->title), stem + ".svg",
            std::move(pending->content), "image/svg+xml", false};
       break;
     case PlotExport::Kind::csv:
-      r = {"the numbers of \u201c" + pending->title + "\u201d as CSV (panel,series,x,y)",
+      r = {with_title(tr("the numbers of \u201c%s\u201d as CSV (panel,series,x,y)"),
+                      pending->title),
            stem + ".csv", std::move(pending->content), "text/csv", false};
       break;
     case PlotExport::Kind::png:
@@ -64,16 +77,17 @@ void capture_plot_png(AppState& state) {
     glReadPixels(x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     png = png_of_gl_pixels(pixels.data(), w, h);
   }
-  const std::string stem = file_stem_of(state.preset.name) + "-" + file_stem_of(png_capture->title);
+  const std::string stem =
+      file_stem_of(state.preset.name) + "-" + file_stem_of(png_capture->file_title);
   const std::string title = png_capture->title;
   png_capture.reset();
   if (png.empty()) {
-    state.status = "The plot could not be read from the screen for a PNG";
+    state.status = tr("The plot could not be read from the screen for a PNG");
     state.status_is_error = true;
     return;
   }
-  request_save(state, {"the plot \u201c" + title + "\u201d as PNG (as on screen)", stem + ".png",
-                       std::move(png), "image/png", false});
+  request_save(state, {with_title(tr("the plot \u201c%s\u201d as PNG (as on screen)"), title),
+                       stem + ".png", std::move(png), "image/png", false});
 }
 
 std::string png_of_gl_pixels(const unsigned char* rgba, int width, int height) {

@@ -4,6 +4,7 @@
 #include <iterator>
 #include <utility>
 
+#include "i18n/translator.h"
 #include "report/figure_csv.h"
 #include "report/svg_plot.h"
 #include "ui/classroom/theme_style.h"
@@ -18,6 +19,7 @@ void request_plot_export(const PlotSpec& spec, PlotExport::Kind kind, ImVec2 min
   PlotExport e;
   e.kind = kind;
   e.title = spec.title;
+  e.file_title = spec.file_title.empty() ? spec.title : spec.file_title;
   e.min = min;
   e.max = max;
   // SVG and CSV from the plot's own numbers, in the colours on screen; PNG is read from the
@@ -37,20 +39,24 @@ void plot_export_buttons(const PlotSpec& spec, ImVec2 min, ImVec2 max) {
     PlotExport::Kind kind;
     const char* tip;
   } kButtons[] = {
-      {"Export CSV", PlotExport::Kind::csv, "Export CSV: this plot's numbers (panel,series,x,y)"},
-      {"Export PNG", PlotExport::Kind::png, "Export PNG: this plot as on screen"},
-      {"Export SVG", PlotExport::Kind::svg, "Export SVG: this plot as a drawing, in its colours"},
+      {tr_id("Export CSV"), PlotExport::Kind::csv,
+       tr("Export CSV: this plot's numbers (panel,series,x,y)")},
+      {tr_id("Export PNG"), PlotExport::Kind::png, tr("Export PNG: this plot as on screen")},
+      {tr_id("Export SVG"), PlotExport::Kind::svg,
+       tr("Export SVG: this plot as a drawing, in its colours")},
   };
   const ImGuiStyle& style = ImGui::GetStyle();
   float width = 0;
   for (const auto& b : kButtons)
-    width += ImGui::CalcTextSize(b.label).x + 2 * style.FramePadding.x + style.ItemSpacing.x;
+    width += ImGui::CalcTextSize(b.label, nullptr, true).x + 2 * style.FramePadding.x +
+             style.ItemSpacing.x;
   // Right-aligned under the plot, where a saved file is looked for; they wrap on a narrow one.
   const float room = ImGui::GetContentRegionAvail().x;
   if (width < room) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + room - width + style.ItemSpacing.x);
   for (std::size_t i = 0; i < std::size(kButtons); ++i) {
-    if (i > 0 && ImGui::GetContentRegionAvail().x > ImGui::CalcTextSize(kButtons[i].label).x +
-                                                         2 * style.FramePadding.x + style.ItemSpacing.x)
+    if (i > 0 && ImGui::GetContentRegionAvail().x >
+                     ImGui::CalcTextSize(kButtons[i].label, nullptr, true).x +
+                         2 * style.FramePadding.x + style.ItemSpacing.x)
       ImGui::SameLine();
     if (ImGui::Button(kButtons[i].label)) request_plot_export(spec, kButtons[i].kind, min, max);
     item_tooltip("%s", kButtons[i].tip);
@@ -61,9 +67,9 @@ void plot_export_menu(const PlotSpec& spec, ImVec2 min, ImVec2 max, bool open) {
   if (open) ImGui::OpenPopup("plot menu");
   if (!ImGui::BeginPopup("plot menu")) return;
   ImGui::TextDisabled("%s", spec.title.c_str());
-  if (ImGui::MenuItem("Export SVG...")) request_plot_export(spec, PlotExport::Kind::svg, min, max);
-  if (ImGui::MenuItem("Export PNG...")) request_plot_export(spec, PlotExport::Kind::png, min, max);
-  if (ImGui::MenuItem("Export CSV...")) request_plot_export(spec, PlotExport::Kind::csv, min, max);
+  if (ImGui::MenuItem(tr_id("Export SVG..."))) request_plot_export(spec, PlotExport::Kind::svg, min, max);
+  if (ImGui::MenuItem(tr_id("Export PNG..."))) request_plot_export(spec, PlotExport::Kind::png, min, max);
+  if (ImGui::MenuItem(tr_id("Export CSV..."))) request_plot_export(spec, PlotExport::Kind::csv, min, max);
   ImGui::EndPopup();
 }
 

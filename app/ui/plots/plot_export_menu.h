@@ -16,7 +16,8 @@ namespace swarmlab {
 
 struct PlotExport {
   enum class Kind { svg, png, csv } kind = Kind::svg;
-  std::string title;    ///< the plot's title, for the file name
+  std::string title;       ///< the plot's title as shown, for the save dialog
+  std::string file_title;  ///< the plot's title in English, for the file name
   std::string content;  ///< SVG or CSV text; empty for PNG, read from the screen
   ImVec2 min, max;      ///< the plot's rectangle on screen (logical pixels), for PNG
 };

@@ -33,12 +33,13 @@ struct PlotAxis {
 };
 
 struct PlotSpec {
-  std::string title;
+  std::string title;       ///< as shown, in the language in use
+  std::string file_title;  ///< the title in English, which names the saved files (empty: title)
   PlotAxis x, y;
   std::vector<PlotSeries> series;
   std::vector<PowerLawLine> fits;
   bool y_from_zero = false;  ///< include 0 in a linear y range (pressures, temperatures)
-  std::string empty_message = "no data yet";
+  std::string empty_message;  ///< shown in an empty plot (empty: "no data yet")
 };
 
 }  // namespace swarmlab

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
+#include <cstdio>
 #include <limits>
 
+#include "i18n/translator.h"
 #include "plotting/axis_ticks.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/plots/plot_export_menu.h"
@@ -78,6 +81,17 @@ plotting::RangeOptions range_options(const PlotAxis& axis, bool from_zero,
   return options;
 }
 
+/// A line of text with values, printed as `format` says, in the language's decimal separator.
+void value_text(const char* format, ...) IM_FMTARGS(1);
+void value_text(const char* format, ...) {
+  char text[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(text, sizeof text, format, args);
+  va_end(args);
+  ImGui::TextUnformatted(translator().numbers(text).c_str());
+}
+
 }  // namespace
 
 bool draw_plot(const char* id, const PlotSpec& spec, float height) {
@@ -114,7 +128,8 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
   // The y axis's label goes beside the title, or on a line of its own below it when the two
   // (with room for a scale like "x 10^-14") do not fit side by side.
   const float title_width = ImGui::CalcTextSize(spec.title.c_str()).x;
-  const std::string y_label_base = spec.y.label + (spec.y.log ? "  [log]" : "");
+  const std::string log_mark = std::string("  ") + tr("[log]");
+  const std::string y_label_base = spec.y.label + (spec.y.log ? log_mark : "");
   const bool y_label_below =
       title_width + 1.5f * font + ImGui::CalcTextSize(y_label_base.c_str()).x + 5.0f * font >
       width - 0.5f * font;
@@ -127,7 +142,8 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
   const float buttons = ImGui::GetFrameHeightWithSpacing();
   height = std::max(height - buttons, (top - origin.y) + kMinFrameLines * font + 2.4f * font);
   const float bottom = origin.y + height - 2.4f * font;
-  ImGui::InvisibleButton("plot", ImVec2(width, height));
+  // Named "plot" for a screen reader (the parallel DOM), in the language in use.
+  ImGui::InvisibleButton(tr_id("plot"), ImVec2(width, height));
   const bool hovered = ImGui::IsItemHovered();
   const bool right_clicked = ImGui::IsItemClicked(ImGuiMouseButton_Right);
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -150,12 +166,12 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
   plotting::AxisRoom x_room, y_room;
   x_room.length = right - left;
   x_room.label_length = [](const std::string& label, const void*) {
-    return double(ImGui::CalcTextSize(label.c_str()).x);
+    return double(ImGui::CalcTextSize(translator().numbers(label).c_str()).x);
   };
   x_room.gap = 1.0 * font;
   y_room.length = bottom - top;
   y_room.label_length = [](const std::string& label, const void*) {
-    return double(ImGui::CalcTextSize(label.c_str()).y);
+    return double(ImGui::CalcTextSize(translator().numbers(label).c_str()).y);
   };
   y_room.gap = 0.3 * font;
   const plotting::AxisTicks xt =
@@ -167,7 +183,8 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
     if (px < left - 0.5f || px > right + 0.5f) continue;
     draw->AddLine(ImVec2(px, top), ImVec2(px, bottom), kGrid);
     draw->AddLine(ImVec2(px, bottom), ImVec2(px, bottom + 0.3f * font), kAxis);
-    const char* label = xt.labels[i].c_str();
+    const std::string shown = translator().numbers(xt.labels[i]);
+    const char* label = shown.c_str();
     const float w = ImGui::CalcTextSize(label).x;
     draw->AddText(ImVec2(px - 0.5f * w, bottom + 0.3f * font), kDimText, label);
   }
@@ -176,16 +193,18 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
     if (py < top - 0.5f || py > bottom + 0.5f) continue;
     draw->AddLine(ImVec2(left, py), ImVec2(right, py), kGrid);
     draw->AddLine(ImVec2(left - 0.3f * font, py), ImVec2(left, py), kAxis);
-    const char* label = yt.labels[i].c_str();
+    const std::string shown = translator().numbers(yt.labels[i]);
+    const char* label = shown.c_str();
     const ImVec2 size = ImGui::CalcTextSize(label);
     draw->AddText(ImVec2(left - 0.4f * font - size.x, py - 0.5f * size.y), kDimText, label);
   }
   draw->AddLine(ImVec2(left, bottom), ImVec2(right, bottom), kAxis);
   draw->AddLine(ImVec2(left, top), ImVec2(left, bottom), kAxis);
   // A power of ten taken out of the tick labels is part of the axis label, as in the figures.
-  auto axis_label = [](const PlotAxis& axis, const std::string& scale_suffix) {
-    return axis.label + (scale_suffix.empty() ? "" : "  " + scale_suffix) +
-           (axis.log ? "  [log]" : "");
+  auto axis_label = [&log_mark](const PlotAxis& axis, const std::string& scale_suffix) {
+    return axis.label +
+           (scale_suffix.empty() ? "" : "  " + scale_suffix) +
+           (axis.log ? log_mark : "");
   };
   const std::string x_label = axis_label(spec.x, xt.scale_suffix);
   const float x_label_width = ImGui::CalcTextSize(x_label.c_str()).x;
@@ -201,7 +220,8 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
   if (!has_data) {
     // Wrapped to the frame: a phone's narrow plot must not cut the sentence off.
     const float wrap = std::max(right - left - font, 4 * font);
-    const char* text = spec.empty_message.c_str();
+    const char* text =
+        spec.empty_message.empty() ? tr("no data yet") : spec.empty_message.c_str();
     const ImVec2 size = ImGui::CalcTextSize(text, nullptr, false, wrap);
     draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
                   ImVec2(0.5f * (left + right - size.x), 0.5f * (top + bottom - size.y)), kDimText,
@@ -298,8 +318,8 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
     ImGui::SetNextWindowPos(ImVec2(mouse.x + (right_half ? -1.5f : 1.5f) * font, origin.y),
                             ImGuiCond_Always, ImVec2(right_half ? 1.0f : 0.0f, 1.0f));
     ImGui::BeginTooltip();
-    ImGui::Text("%s = %.5g", spec.x.label.c_str(), xs.value(mouse.x));
-    ImGui::Text("cursor: %s = %.5g", spec.y.label.c_str(), ys.value(mouse.y));
+    value_text("%s = %.5g", spec.x.label.c_str(), xs.value(mouse.x));
+    value_text(tr("cursor: %s = %.5g"), spec.y.label.c_str(), ys.value(mouse.y));
     for (const PlotSeries& s : spec.series) {
       const std::size_t n = std::min(s.x->size(), s.y->size());
       float best = 1e30f;
@@ -322,7 +342,7 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
                                           3.0f);
       ImGui::Dummy(ImVec2(1.5f * font, font));
       ImGui::SameLine();
-      ImGui::Text("%s: %.5g at %.5g", s.label.c_str(), (*s.y)[best_i], (*s.x)[best_i]);
+      value_text(tr("%s: %.5g at %.5g"), s.label.c_str(), (*s.y)[best_i], (*s.x)[best_i]);
     }
     ImGui::EndTooltip();
   }

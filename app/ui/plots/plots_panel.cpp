@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iterator>
 
+#include "i18n/translator.h"
 #include "swarm/physics/regime.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/lesson_player/lesson_panel.h"
@@ -78,43 +79,47 @@ std::optional<double> window_start(const AppState& state, double now) {
 void draw_wall_tab(AppState& state, float plot_height) {
   if (!state.preset.container_radius) {
     // Without a wall there is nothing to measure: no plots of zeros and blanks.
-    ImGui::TextWrapped(
+    ImGui::TextWrapped("%s", tr(
         "No container: pressure and temperature are measured where the particles hit the "
-        "wall. Switch one on under Container (in the Controls) to measure them.");
+        "wall. Switch one on under Container (in the Controls) to measure them."));
     return;
   }
   const float width = 0.42f * ImGui::GetContentRegionAvail().x;
   ImGui::SetNextItemWidth(width);
-  ImGui::InputDouble("average over", &state.plots.average_window, 0, 0, "%.4g");
+  ImGui::InputDouble(tr_id("average over"), &state.plots.average_window, 0, 0, "%.4g");
   state.plots.average_window = std::max(0.0, state.plots.average_window);
   help_marker(
-      "Running average of P and T over this much simulated time (0: none). P and T "
-      "from a single interval are noisy: few particles hit the wall in each one.");
+      tr("Running average of P and T over this much simulated time (0: none). P and T "
+         "from a single interval are noisy: few particles hit the wall in each one."));
   ImGui::SetNextItemWidth(width);
-  ImGui::InputDouble("show last", &state.plots.scroll_window, 0, 0, "%.4g");
+  ImGui::InputDouble(tr_id("show last"), &state.plots.scroll_window, 0, 0, "%.4g");
   state.plots.scroll_window = std::max(0.0, state.plots.scroll_window);
-  help_marker("Scroll: show only this much of the most recent time (0: the whole run).");
+  help_marker(tr("Scroll: show only this much of the most recent time (0: the whole run)."));
 
   series.update(*state.run, state.plots.average_window);
-  const std::string empty = "waiting for the first samples";
+  const std::string empty = tr("waiting for the first samples");
   PlotSpec p;
-  p.title = "Wall pressure";
-  p.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
-  p.y = {"P (force/area)", false, std::nullopt, std::nullopt};
+  p.title = tr("Wall pressure");
+  p.file_title = "Wall pressure";
+  p.x = {tr("t (time)"), false, window_start(state, state.run->time()), std::nullopt};
+  p.y = {tr("P (force/area)"), false, std::nullopt, std::nullopt};
   p.y_from_zero = true;
   p.empty_message = empty;
   p.series = {
-      {"each sample", &series.t, &series.P, colours().pressure_each_sample.packed(), false, 1.0f},
-      {"running average", &series.t, &series.P_mean, colours().pressure.packed(), false, 2.5f}};
+      {tr("each sample"), &series.t, &series.P, colours().pressure_each_sample.packed(), false,
+       1.0f},
+      {tr("running average"), &series.t, &series.P_mean, colours().pressure.packed(), false,
+       2.5f}};
   draw_plot("pressure", p, plot_height);
 
   PlotSpec t = p;
-  t.title = "Wall temperature";
-  t.y = {"T (energy, k_B = 1)", false, std::nullopt, std::nullopt};
+  t.title = tr("Wall temperature");
+  t.file_title = "Wall temperature";
+  t.y = {tr("T (energy, k_B = 1)"), false, std::nullopt, std::nullopt};
   t.series = {
-      {"each sample", &series.t, &series.T, colours().temperature_each_sample.packed(), false,
+      {tr("each sample"), &series.t, &series.T, colours().temperature_each_sample.packed(), false,
        1.0f},
-      {"running average", &series.t, &series.T_mean, colours().temperature.packed(), false, 2.5f}};
+      {tr("running average"), &series.t, &series.T_mean, colours().temperature.packed(), false, 2.5f}};
   draw_plot("temperature", t, plot_height);
 }
 
@@ -123,12 +128,13 @@ void draw_energy_tab(AppState& state, float plot_height) {
   // Timing the energy plot's swings gives half the period, a trap worth naming.
   if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
     ImGui::TextColored(colour_vec4(colours().text_warning),
-                       "KE and PE swing at 2ω: one swing is half a period.");
+                       "%s", tr("KE and PE swing at 2ω: one swing is half a period."));
   const std::vector<double>& t_all = series.t_all;
   PlotSpec e;
-  e.title = "KE, PE and E";
-  e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
-  e.y = {"energy", false, std::nullopt, std::nullopt};
+  e.title = tr("KE, PE and E");
+  e.file_title = "KE, PE and E";
+  e.x = {tr("t (time)"), false, window_start(state, state.run->time()), std::nullopt};
+  e.y = {tr("energy"), false, std::nullopt, std::nullopt};
   e.y_from_zero = true;
   e.series = {{"KE", &t_all, &series.KE, colours().kinetic.packed(), false, 2.0f},
               {"PE", &t_all, &series.PE, colours().potential.packed(), false, 2.0f},
@@ -136,7 +142,8 @@ void draw_energy_tab(AppState& state, float plot_height) {
   draw_plot("energies", e, plot_height);
 
   PlotSpec d;
-  d.title = "Energy change";
+  d.title = tr("Energy change");
+  d.file_title = "Energy change";
   d.x = e.x;
   d.y = {"(E - E\u2080) / |E\u2080|", false, std::nullopt, std::nullopt};
   d.series = {{std::string(swarm::name_of(state.preset.method)), &t_all, &series.drift,
@@ -146,16 +153,16 @@ void draw_energy_tab(AppState& state, float plot_height) {
 
 void draw_expansion_tab(AppState& state, float plot_height) {
   if (!state.preset.expansion && state.run->primary().stages().empty()) {
-    ImGui::TextWrapped(
+    ImGui::TextWrapped("%s", tr(
         "No stages yet. With a container, each Expand now (E) ends a stage, averaged like "
         "the protocol's, and plots it here; or under Container switch on the stepwise "
-        "expansion.");
+        "expansion."));
     return;
   }
-  ImGui::Checkbox("log-log axes", &state.plots.log_log);
+  ImGui::Checkbox(tr_id("log-log axes"), &state.plots.log_log);
   help_marker(
-      "On log-log axes a power law y = a x^b is a straight line of slope b. The fit is "
-      "least squares of ln y on ln x over the stages with P, T > 0 (paper Appendix C).");
+      tr("On log-log axes a power law y = a x^b is a straight line of slope b. The fit is "
+         "least squares of ln y on ln x over the stages with P, T > 0 (paper Appendix C)."));
   const auto& stages = state.run->primary().stages();
   static std::vector<double> V, P, T;
   V.clear(), P.clear(), T.clear();
@@ -166,53 +173,62 @@ void draw_expansion_tab(AppState& state, float plot_height) {
   }
   const swarm::StageFits fits = state.run->primary().fits();
   const bool log = state.plots.log_log;
-  char first_stage[96] = "the first stage ends with Expand now (E)";
-  if (state.preset.expansion)
-    std::snprintf(first_stage, sizeof first_stage, "the first stage ends at t = tau = %.4g",
+  std::string first_stage = tr("the first stage ends with Expand now (E)");
+  if (state.preset.expansion) {
+    char text[256];
+    std::snprintf(text, sizeof text, tr("the first stage ends at t = tau = %.4g"),
                   state.preset.expansion->tau);
-  auto plot = [&](const char* id, const char* title, const char* x_label,
+    first_stage = translator().numbers(text);
+  }
+  // title: in the language in use; file_title: in English, for the saved files' names.
+  auto plot = [&](const char* id, const char* title, const char* file_title, const char* x_label,
                   const std::vector<double>& x, const char* y_label, const std::vector<double>& y,
                   const swarm::PowerLawFit& fit, const char* law, std::uint32_t colour) {
     PlotSpec s;
     s.title = title;
+    s.file_title = file_title;
     s.x = {x_label, log, std::nullopt, std::nullopt};
     s.y = {y_label, log, std::nullopt, std::nullopt};
     s.y_from_zero = !log;
     s.empty_message = first_stage;
-    s.series = {{"stages", &x, &y, colour, true, 2.0f}};
+    s.series = {{tr("stages"), &x, &y, colour, true, 2.0f}};
     if (fit.valid) {
       char label[96];
       std::snprintf(label, sizeof label, "%s^%.3f \u00b1 %.3f", law, fit.slope, fit.slope_stderr);
-      s.fits.push_back({label, std::exp(fit.intercept), fit.slope, colours().fit.packed()});
+      s.fits.push_back({translator().numbers(label), std::exp(fit.intercept), fit.slope, colours().fit.packed()});
     }
     if (draw_plot(id, s, plot_height) && fit.valid) {
       ImGui::BeginTooltip();
-      ImGui::Text("ln y = %.4g + (%.4g \u00b1 %.2g) ln x,  R\u00b2 = %.4f over %zu stages",
-                  fit.intercept, fit.slope, fit.slope_stderr, fit.r_squared, fit.used.size());
+      char line[256];
+      std::snprintf(line, sizeof line,
+                    tr("ln y = %.4g + (%.4g \u00b1 %.2g) ln x,  R\u00b2 = %.4f over %zu stages"),
+                    fit.intercept, fit.slope, fit.slope_stderr, fit.r_squared, fit.used.size());
+      ImGui::TextUnformatted(translator().numbers(line).c_str());
       ImGui::EndTooltip();
     }
     draw_fit_quality((std::string(id) + " residuals").c_str(), x, fit, log, 0.45f * plot_height);
   };
-  plot("pv", "P against V", "V (length\u00b3)", V, "P (force/area)", P, fits.P_V, "P \u221d V",
-       colours().pressure.packed());
-  plot("tv", "T against V", "V (length\u00b3)", V, "T (energy)", T, fits.T_V, "T \u221d V",
-       colours().temperature.packed());
-  plot("pt", "P against T", "T (energy)", T, "P (force/area)", P, fits.P_T, "P \u221d T",
-       colours().pressure_against_temperature.packed());
+  plot("pv", tr("P against V"), "P against V", tr("V (length\u00b3)"), V, tr("P (force/area)"), P,
+       fits.P_V, "P \u221d V", colours().pressure.packed());
+  plot("tv", tr("T against V"), "T against V", tr("V (length\u00b3)"), V, tr("T (energy)"), T,
+       fits.T_V, "T \u221d V", colours().temperature.packed());
+  plot("pt", tr("P against T"), "P against T", tr("T (energy)"), T, tr("P (force/area)"), P,
+       fits.P_T, "P \u221d T", colours().pressure_against_temperature.packed());
 }
 
 void draw_compare_tab(AppState& state, float plot_height) {
   const auto& errors = state.run->errors();
   if (state.preset.compare.empty()) {
-    ImGui::TextWrapped(
+    ImGui::TextWrapped("%s", tr(
         "Nothing runs side by side. Under Simulation, tick 'analytic' next to a "
-        "numerical method (or the other way round) to compare them here.");
+        "numerical method (or the other way round) to compare them here."));
     return;
   }
   static std::vector<std::vector<double>> energy_t, energy;
   PlotSpec e;
-  e.title = "Energy error";
-  e.x = {"t (time)", false, window_start(state, state.run->time()), std::nullopt};
+  e.title = tr("Energy error");
+  e.file_title = "Energy error";
+  e.x = {tr("t (time)"), false, window_start(state, state.run->time()), std::nullopt};
   e.y = {"(E - E\u2080) / |E\u2080|", false, std::nullopt, std::nullopt};
   // Every run's energy from its own samples, so methods compare even without 'analytic'.
   const std::size_t runs = 1 + state.run->compared_count();
@@ -233,11 +249,12 @@ void draw_compare_tab(AppState& state, float plot_height) {
   draw_plot("energy_error", e, plot_height);
 
   PlotSpec p;
-  p.title = "Position error";
+  p.title = tr("Position error");
+  p.file_title = "Position error";
   p.x = e.x;
-  p.y = {"max |\u0394r| from the exact orbit (length)", false, std::nullopt, std::nullopt};
+  p.y = {tr("max |\u0394r| from the exact orbit (length)"), false, std::nullopt, std::nullopt};
   p.y_from_zero = true;
-  p.empty_message = "tick 'analytic' under Side by side to measure position errors";
+  p.empty_message = tr("tick 'analytic' under Side by side to measure position errors");
   for (const swarm::ErrorFromExact& track : errors)
     p.series.push_back({std::string(swarm::name_of(track.method)), &track.t, &track.position_error,
                         colour_of(track.method), false, 2.0f});
@@ -248,7 +265,7 @@ void draw_compare_tab(AppState& state, float plot_height) {
 /// and what draws them. One row per PlotTab, in its order.
 struct PlotTabDescriptor {
   PlotTab tab;
-  const char* label;
+  const char* (*label)();  ///< the tab's label in the language in use (tr_id)
   float option_rows;  ///< in frame heights
   int (*plot_count)(const AppState& state);
   void (*draw)(AppState& state, float plot_height);
@@ -261,12 +278,12 @@ int projects(const AppState& state) { return std::max(1, project_plot_count(stat
 
 // Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
 constexpr PlotTabDescriptor kPlotTabs[] = {
-    {PlotTab::wall, "Wall P, T", 2.6f, two, draw_wall_tab},
-    {PlotTab::energy, "Energy", 1.0f, two, draw_energy_tab},
-    {PlotTab::expansion, "Expansion", 1.4f, three, draw_expansion_tab},
-    {PlotTab::compare, "Compare", 0.0f, two, draw_compare_tab},
-    {PlotTab::particle, "Particle", 3.0f, one, draw_particle_tab},
-    {PlotTab::projects, "Projects", 0.0f, projects, draw_projects_tab},
+    {PlotTab::wall, [] { return tr_id("Wall P, T"); }, 2.6f, two, draw_wall_tab},
+    {PlotTab::energy, [] { return tr_id("Energy"); }, 1.0f, two, draw_energy_tab},
+    {PlotTab::expansion, [] { return tr_id("Expansion"); }, 1.4f, three, draw_expansion_tab},
+    {PlotTab::compare, [] { return tr_id("Compare"); }, 0.0f, two, draw_compare_tab},
+    {PlotTab::particle, [] { return tr_id("Particle"); }, 3.0f, one, draw_particle_tab},
+    {PlotTab::projects, [] { return tr_id("Projects"); }, 0.0f, projects, draw_projects_tab},
 };
 // The rows follow the enum, so that --plot-tab's numbers are the tabs' places on screen.
 constexpr bool in_plot_tab_order() {
@@ -288,7 +305,7 @@ void draw_plots_panel(AppState& state) {
   if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
   for (const PlotTabDescriptor& d : kPlotTabs) {
     const ImGuiTabItemFlags flags = state.plots.tab == d.tab ? ImGuiTabItemFlags_SetSelected : 0;
-    if (!ImGui::BeginTabItem(d.label, nullptr, flags)) continue;
+    if (!ImGui::BeginTabItem(d.label(), nullptr, flags)) continue;
     state.plots.shown_tab = d.tab;
     const float available =
         ImGui::GetContentRegionAvail().y - d.option_rows * ImGui::GetFrameHeightWithSpacing();

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
+#include "i18n/translator.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/input/touch_target.h"
 #include "ui/time/time_controls.h"
@@ -14,11 +16,12 @@
 namespace swarmlab {
 namespace {
 
-const char* travel_name(TimeTravel::Kind kind) {
+/// The progress bar's text for a travel: where it goes and how far it got (%.0f%%).
+const char* travel_progress(TimeTravel::Kind kind) {
   switch (kind) {
-    case TimeTravel::Kind::to_stage_end: return "to the end of the stage";
-    case TimeTravel::Kind::to_run_end: return "to the end of the run";
-    default: return "seeking";
+    case TimeTravel::Kind::to_stage_end: return tr("to the end of the stage %.0f%%");
+    case TimeTravel::Kind::to_run_end: return tr("to the end of the run %.0f%%");
+    default: return tr("seeking %.0f%%");
   }
 }
 
@@ -39,23 +42,28 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
                                  ImGuiWindowFlags_NoSavedSettings |
                                  ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
-  if (!ImGui::Begin("Timeline###timeline", nullptr, flags)) {
+  if (!ImGui::Begin(tr_id("Timeline###timeline"), nullptr, flags)) {
     ImGui::End();
     return;
   }
   const float font = ImGui::GetFontSize();
-  char clock[96];
-  std::snprintf(clock, sizeof clock, "t = %.4g / %.4g reached", state.run->time(),
+  const char* clock_format = tr("t = %.4g / %.4g reached");
+  char clock[256];
+  std::snprintf(clock, sizeof clock, clock_format, state.run->time(),
                 double(timeline.reached()) * dt);
   // The clock's text keeps one width, so the bar after it never moves under the pointer.
   const ImVec2 clock_at = ImGui::GetCursorScreenPos();
   ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted(clock);
-  item_tooltip(
+  ImGui::TextUnformatted(translator().numbers(clock).c_str());
+  item_tooltip("%s", tr(
         "The present time and the furthest time computed. Drag on the bar to go back to any "
-        "moment: the same state to the last bit, recomputed from snapshots.");
+        "moment: the same state to the last bit, recomputed from snapshots."));
+  // As wide as the clock with two values of five digits ("t = 00.000 / 00.000 reached").
+  std::string widest = clock_format;
+  for (std::size_t at = widest.find("%.4g"); at != std::string::npos; at = widest.find("%.4g", at))
+    widest.replace(at, 4, "00.000");
   const float clock_width =
-      std::max(ImGui::CalcTextSize("t = 00.000 / 00.000 reached").x, ImGui::GetItemRectSize().x);
+      std::max(ImGui::CalcTextSize(widest.c_str()).x, ImGui::GetItemRectSize().x);
   ImGui::SameLine();
   ImGui::SetCursorScreenPos(ImVec2(clock_at.x + clock_width + ImGui::GetStyle().ItemSpacing.x,
                                    ImGui::GetCursorScreenPos().y));
@@ -80,9 +88,12 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
     if (!travel.active() || travel.target != target)
       travel_to(state, TimeTravel::Kind::seek, target);
   }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("t = %.4g", double(scale.step_at(ImGui::GetIO().MousePos.x)) * dt);
-  name_item("Timeline: the present and the time reached; drag to go back to any moment");
+  if (ImGui::IsItemHovered()) {
+    char at[64];
+    std::snprintf(at, sizeof at, "t = %.4g", double(scale.step_at(ImGui::GetIO().MousePos.x)) * dt);
+    ImGui::SetTooltip("%s", translator().numbers(at).c_str());
+  }
+  name_item(tr("Timeline: the present and the time reached; drag to go back to any moment"));
 
   const Palette& colours = current_palette();
   const ImU32 track = colours.timeline_track.packed(), reached = colours.timeline_reached.packed(),
@@ -106,39 +117,41 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
 
   if (travel.active() && travel.kind != TimeTravel::Kind::seek) {
     ImGui::SameLine();
-    char label[64];
+    char label[256];
     const double progress = travel.progress(timeline.step());
-    std::snprintf(label, sizeof label, "%s %.0f%%", travel_name(travel.kind), 100 * progress);
+    std::snprintf(label, sizeof label, travel_progress(travel.kind), 100 * progress);
     ImGui::ProgressBar(float(progress), ImVec2(12 * font, 0), label);
     FastForwardRecord& record = state.last_fast_forward;
     ++record.frames;
     if (record.progress.size() < FastForwardRecord::kKept) record.progress.push_back(progress);
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) cancel_travel(state);
-    item_tooltip("Esc: stop here");
+    if (ImGui::Button(tr_id("Cancel"))) cancel_travel(state);
+    item_tooltip("%s", tr("Esc: stop here"));
   }
   ImGui::End();
 }
 
 void draw_time_buttons(AppState& state) {
   if (ImGui::Button("\u25c0|", ImVec2(target_width("\u25c0|"), 0))) step_back(state, false);
-  item_tooltip("B: one step back");
+  item_tooltip("%s", tr("B: one step back"));
   same_line_if_fits(target_width("\u25c0\u25c0"));
   if (ImGui::Button("\u25c0\u25c0", ImVec2(target_width("\u25c0\u25c0"), 0)))
     step_back(state, true);
-  item_tooltip("Left: back by 1/100 of a period");
+  item_tooltip("%s", tr("Left: back by 1/100 of a period"));
   same_line_if_fits(target_width("\u25b6\u25b6"));
   if (ImGui::Button("\u25b6\u25b6", ImVec2(target_width("\u25b6\u25b6"), 0)))
     step_forward_coarse(state);
-  item_tooltip("Right: on by 1/100 of a period");
-  same_line_if_fits(target_width("\u25b6| stage"));
-  if (ImGui::Button("\u25b6| stage", ImVec2(target_width("\u25b6| stage"), 0)))
+  item_tooltip("%s", tr("Right: on by 1/100 of a period"));
+  const char* to_stage_end = tr_id("\u25b6| stage");
+  same_line_if_fits(target_width(to_stage_end));
+  if (ImGui::Button(to_stage_end, ImVec2(target_width(to_stage_end), 0)))
     fast_forward_to_stage_end(state);
-  item_tooltip("N: fast-forward to the end of this stage, as fast as the machine allows");
-  same_line_if_fits(target_width("\u25b6| end"));
-  if (ImGui::Button("\u25b6| end", ImVec2(target_width("\u25b6| end"), 0)))
+  item_tooltip("%s", tr("N: fast-forward to the end of this stage, as fast as the machine allows"));
+  const char* to_run_end = tr_id("\u25b6| end");
+  same_line_if_fits(target_width(to_run_end));
+  if (ImGui::Button(to_run_end, ImVec2(target_width(to_run_end), 0)))
     fast_forward_to_run_end(state);
-  item_tooltip("End: fast-forward to the end of the run (Esc cancels)");
+  item_tooltip("%s", tr("End: fast-forward to the end of the run (Esc cancels)"));
 }
 
 }  // namespace swarmlab
