@@ -75,12 +75,26 @@ Translator::Translator() : language_(languages().front()) {}
 void Translator::use(const Language& language, StringTable table) {
   language_ = language;
   table_ = std::move(table);
+  lesson_source_.clear();  // another language: the lesson's texts in it are set again
+  lesson_texts_.clear();
   pseudo_.clear();
   labels_.clear();
   english_labels_.clear();
 }
 
+void Translator::use_lesson_texts(const std::string& source,
+                                  const std::map<std::string, std::string>* texts) {
+  if (source == lesson_source_) return;
+  lesson_source_ = source;
+  lesson_texts_ = texts ? *texts : std::map<std::string, std::string>{};
+  labels_.clear();  // labels made from the old texts
+  english_labels_.clear();
+}
+
 const char* Translator::text(const char* english) {
+  if (!lesson_texts_.empty())
+    if (const auto it = lesson_texts_.find(english); it != lesson_texts_.end())
+      return it->second.c_str();
   if (language_.code == pseudo_language().code) {
     auto it = pseudo_.find(english);
     if (it == pseudo_.end()) it = pseudo_.emplace(english, pseudo_text(english)).first;

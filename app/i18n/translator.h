@@ -3,6 +3,7 @@
 /// shows passes through tr() (text) or tr_id() (an ImGui item's label); the tables are
 /// assets/i18n/<code>.json, whose keys are the English texts (docs/i18n.md).
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -18,6 +19,10 @@ class Translator {
   /// Speaks `language` from `table` (English needs none; the pseudo-language makes its own).
   void use(const Language& language, StringTable table);
   const Language& language() const { return language_; }
+  /// Texts consulted before the table: an open lesson's own translations into this language
+  /// (docs/lessons.md), kept as a copy; `source` names them (the lesson's id), so passing the
+  /// same source again costs nothing. An empty source removes them.
+  void use_lesson_texts(const std::string& source, const std::map<std::string, std::string>* texts);
 
   /// The text to show for `english`: its translation, or `english` itself when the table has
   /// none. The pointer stays valid until the next use().
@@ -40,6 +45,8 @@ class Translator {
   // place as it grows, so the pointers handed out stay valid.
   std::unordered_map<std::string, std::string> pseudo_, labels_;
   std::unordered_map<std::string, std::string> english_labels_;  // label() -> its English
+  std::string lesson_source_;
+  std::map<std::string, std::string> lesson_texts_;
 };
 
 /// The pseudo-language's text for `english`: letters accented, the text padded to about 1.6x

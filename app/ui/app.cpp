@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <map>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -127,6 +129,16 @@ void App::update(double real_seconds) {
   FrameStats& stats = state_.stats;
   smooth(stats.frame_ms, real_seconds * 1000);
   ++stats.frames;
+  // An open lesson's own translations into the language in use come before the tables.
+  const Lesson* lesson = state_.lessons.open_lesson();
+  const std::map<std::string, std::string>* own = nullptr;
+  if (lesson)
+    if (const auto it = lesson->translations.find(translator().language().code);
+        it != lesson->translations.end())
+      own = &it->second;
+  // Named by the lesson and where its texts live, so a lesson opened again is read again.
+  translator().use_lesson_texts(
+      own ? lesson->id + "@" + std::to_string(reinterpret_cast<std::uintptr_t>(own)) : "", own);
   handle_shortcuts(state_);
   advance_simulation(state_.fixed_frame_time ? kFixedFrameSeconds : real_seconds);
   state_.instruments.update(*state_.run, state_.selected, state_.plots.average_window,

@@ -97,7 +97,7 @@ TEST_CASE("every rule of the lesson format is refused with the field and the rul
       {"/title", "\"\"", "title: must not be empty"},
       {"/title", "3", "title: must be a string"},
       {"/summary", "", "summary: missing (one or two sentences on what it teaches)"},
-      {"/extra", "1", "extra: unknown key (allowed here: lesson, id, title, summary, steps)"},
+      {"/extra", "1", "extra: unknown key (allowed here: lesson, id, title, summary, steps, translations)"},
       {"/steps", "[]", "steps: must be a list of 1 to 100 steps"},
       {"/steps/0/text", "", "steps[0].text: missing (what the step says)"},
       {"/steps/0/text", "\"an *open emphasis\"",
