@@ -11,6 +11,7 @@
 #include <deque>
 
 #include "i18n/speak.h"
+#include "i18n/translator.h"
 #include "ui/input/keyboard_regions.h"
 #include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/cjk_font.h"
@@ -169,6 +170,8 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
     new_fonts = true;
   }
   if (new_fonts) {
+    // Numbers in fields and on sliders as the language writes them (imgui_hooks.cmake).
+    ImGui::GetCurrentContext()->PlatformLocaleDecimalPoint = translator().language().decimal_separator;
     layout.resize_panels = true;
     apply_ui_scale(layout.ui_scale);
     ImGui_ImplOpenGL3_DestroyFontsTexture();

@@ -68,6 +68,27 @@ function(swarmlab_imgui_widgets_with_hooks imgui_dir out_var)
     "    if (g.TestEngineHookItems) ${hook}(&g, id, 6, selected ? \"1\" : \"0\");\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    return pressed; //-V1020\n"
     1)
 
+  # Not a hook: the language's decimal separator (app/i18n). ImGui 1.86 formats and reads
+  # numbers with the C library in the "C" locale; Swarm Lab shows a float or double in a field
+  # or on a slider with the context's PlatformLocaleDecimalPoint (',' in German) and reads a
+  # typed '.' or ',' alike, in every language.
+  _swarmlab_hook_edit(
+    "int ImGui::DataTypeFormatString(char* buf, int buf_size, ImGuiDataType data_type, const void* p_data, const char* format)\n{\n"
+    "static int SwarmlabDecimalPoint(char* buf, int length)  // Swarm Lab: '.' between digits as the language writes it\n{\n    const char point = GImGui->PlatformLocaleDecimalPoint;\n    for (int i = 1; point != '.' && i + 1 < length; i++)\n        if (buf[i] == '.' && buf[i - 1] >= '0' && buf[i - 1] <= '9' && buf[i + 1] >= '0' && buf[i + 1] <= '9')\n            buf[i] = point;\n    return length;\n}\n\nint ImGui::DataTypeFormatString(char* buf, int buf_size, ImGuiDataType data_type, const void* p_data, const char* format)\n{\n"
+    1)
+  _swarmlab_hook_edit(
+    "        return ImFormatString(buf, buf_size, format, *(const float*)p_data);\n    if (data_type == ImGuiDataType_Double)\n        return ImFormatString(buf, buf_size, format, *(const double*)p_data);\n"
+    "        return SwarmlabDecimalPoint(buf, ImFormatString(buf, buf_size, format, *(const float*)p_data));\n    if (data_type == ImGuiDataType_Double)\n        return SwarmlabDecimalPoint(buf, ImFormatString(buf, buf_size, format, *(const double*)p_data));\n"
+    1)
+  _swarmlab_hook_edit(
+    "bool ImGui::DataTypeApplyOpFromText(const char* buf, const char* initial_value_buf, ImGuiDataType data_type, void* p_data, const char* format)\n{\n"
+    "bool ImGui::DataTypeApplyOpFromText(const char* buf, const char* initial_value_buf, ImGuiDataType data_type, void* p_data, const char* format)\n{\n    char swarmlab_buf[64], swarmlab_initial[64];  // Swarm Lab: a typed ',' reads as '.'\n    ImStrncpy(swarmlab_buf, buf, IM_ARRAYSIZE(swarmlab_buf));\n    ImStrncpy(swarmlab_initial, initial_value_buf ? initial_value_buf : \"\", IM_ARRAYSIZE(swarmlab_initial));\n    for (char* c = swarmlab_buf; *c; c++) if (*c == ',') *c = '.';\n    for (char* c = swarmlab_initial; *c; c++) if (*c == ',') *c = '.';\n    buf = swarmlab_buf;\n    if (initial_value_buf) initial_value_buf = swarmlab_initial;\n"
+    1)
+  _swarmlab_hook_edit(
+    "(c != c_decimal_point) && (c != '-')"
+    "(c != c_decimal_point) && (c != '.') && (c != ',') && (c != '-')"
+    2)
+
   file(WRITE "${out}.tmp" "${src}")
   file(COPY_FILE "${out}.tmp" "${out}" ONLY_IF_DIFFERENT)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${imgui_dir}/imgui_widgets.cpp")
