@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <utility>
 
+#include "i18n/translator.h"
 #include "swarm/physics/system.h"
 #include "ui/classroom/presentation.h"
 #include "ui/input/shortcuts.h"
@@ -175,7 +177,9 @@ void App::advance_simulation(double seconds) {
     s.playing = false;
     // Validation keeps a preset's numbers finite; should one still overflow, say so.
     if (const std::string& failure = s.run->primary().failure(); !failure.empty()) {
-      s.status = "The run stopped: " + failure;
+      char text[800];
+      std::snprintf(text, sizeof text, tr("The run stopped: %s"), failure.c_str());
+      s.status = text;
       s.status_is_error = true;
     }
   }
