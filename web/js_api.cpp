@@ -3,9 +3,11 @@
 
 #include <emscripten.h>
 
+#include <cstdio>
 #include <optional>
 #include <string>
 
+#include "i18n/translator.h"
 #include "storage_controls.h"
 #include "ui/platform/save_dialog.h"
 #include "web_app.h"
@@ -23,7 +25,9 @@ std::string open_preset_json(AppState& state, const std::string& json, const std
     state.status_is_error = true;
     return error;
   }
-  state.status = "Opened " + source;
+  char text[600];
+  std::snprintf(text, sizeof text, tr("Opened %s"), source.c_str());
+  state.status = text;
   state.status_is_error = false;
   return {};
 }
@@ -31,7 +35,9 @@ std::string open_preset_json(AppState& state, const std::string& json, const std
 std::string download_preset(AppState& state) {
   const std::string name = download_file_name(state.location);
   const std::string error = state.store->save(name, swarm::preset_to_json(state.preset));
-  state.status = error.empty() ? "Downloaded " + name + " (see the browser's downloads)" : error;
+  char text[600];
+  std::snprintf(text, sizeof text, tr("Downloaded %s (see the browser's downloads)"), name.c_str());
+  state.status = error.empty() ? std::string(text) : error;
   state.status_is_error = !error.empty();
   return name;
 }

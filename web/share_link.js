@@ -21,12 +21,25 @@ var SwarmlabLink = (function () {
   // inflater never runs long between two checks of the size.
   var inflateSlice = 1024;
 
+  // The page's language (web/page_text.js); a page without it shows the English.
+  var pageText = typeof window !== 'undefined' && window.pageText || englishText;
+  function englishText(text) {
+    var values = Array.prototype.slice.call(arguments, 1);
+    return text.replace(/%[-+ #0-9.]*[sdf%]/g, function (c) { return c === '%%' ? '%' : String(values.shift()); });
+  }
+  /// A refusal: { error } in English (what the JS API returns) and { shown } in the page's
+  /// language, from `say`, which writes its sentence with the pageText it is given.
+  function refusal(say) { return { error: say(englishText), shown: say(pageText) }; }
+
   /// "5.2 MB" for a count of bytes.
   function sizeText(bytes) { return (bytes / 1e6).toFixed(1).replace(/\.0$/, '') + ' MB'; }
 
-  /// The message for a preset of `bytes` bytes over the limit; `what` names where it came from.
+  /// The refusal of a preset of `bytes` bytes over the limit, { error, shown }; `what` names
+  /// where it came from.
   function tooLarge(what, bytes) {
-    return what + ' is ' + sizeText(bytes) + '; a preset may be at most ' + sizeText(maxPresetBytes);
+    return refusal(function (pageText) {
+      return pageText('%s is %s; a preset may be at most %s', what, sizeText(bytes), sizeText(maxPresetBytes));
+    });
   }
 
   function toBase64url(bytes) {
@@ -112,7 +125,8 @@ var SwarmlabLink = (function () {
 
   /// The preset in a fragment ('#preset=...', '#z=...', possibly among other key=value pairs
   /// separated by '&'): null when there is none, else a Promise that always resolves, to
-  /// { json } or to { error } (a message for the page, "share link: ...").
+  /// { json } or to { error, shown } (the message in English, as the JS API returns it, and in
+  /// the page's language: "share link: ...").
   function read(hash) {
     var parts = String(hash || '').replace(/^#/, '').split('&');
     for (var i = 0; i < parts.length; ++i) {
@@ -125,8 +139,10 @@ var SwarmlabLink = (function () {
       // ({ lessonLink }); #lz= (deflate-raw) is inflated here ({ json, lesson: true }).
       if (key === 'lesson') {
         if (value.length > Math.ceil(maxPresetBytes / 3) * 4)
-          return Promise.resolve({ error: 'lesson link: the text after #lesson= is ' +
-                                          sizeText(value.length * 3 / 4) + '; a lesson may be at most ' + sizeText(maxPresetBytes) });
+          return Promise.resolve(refusal(function (pageText) {
+            return pageText('lesson link: the text after #lesson= is %s; a lesson may be at most %s',
+                            sizeText(value.length * 3 / 4), sizeText(maxPresetBytes));
+          }));
         return Promise.resolve({ lessonLink: value });
       }
       if (key === 'lz')
@@ -137,36 +153,43 @@ var SwarmlabLink = (function () {
   }
 
   function decode(key, value) {
-    var what = 'share link: the text after #' + key + '= ';
     // base64url carries 3 bytes in 4 characters; a deflated preset is never much longer than
     // the preset, so either form over the limit is refused before it is decoded.
     var characters = value.replace(/\s+/g, '').length;
     if (characters > Math.ceil(maxPresetBytes / 3) * 4)
-      return Promise.resolve({ error: tooLarge('share link: the preset in #' + key + '=',
-                                               Math.floor(characters * 3 / 4)) });
+      return Promise.resolve(tooLarge('share link: the preset in #' + key + '=', Math.floor(characters * 3 / 4)));
     var bytes;
     try {
       bytes = fromBase64url(value);
     } catch (e) {
-      return Promise.resolve({ error: what + 'is not base64url (the link may have been cut short)' });
+      return Promise.resolve(refusal(function (pageText) {
+        return pageText('share link: the text after #%s= is not base64url (the link may have been cut short)', key);
+      }));
     }
     var inflated = key === 'preset' || key === 'lesson' ? Promise.resolve(bytes)
       : !canCompress() ? null
       : inflateLimited(bytes, maxPresetBytes);
     if (!inflated)
-      return Promise.resolve({ error: what + 'needs a browser that can decompress (DecompressionStream); ' +
-                                      'a #preset= link works everywhere' });
+      return Promise.resolve(refusal(function (pageText) {
+        return pageText('share link: the text after #%s= needs a browser that can decompress (DecompressionStream); a #preset= link works everywhere', key);
+      }));
     return inflated.then(function (raw) {
       try {
         return { json: strictUtf8.decode(raw) };
       } catch (e) {
-        return { error: what + 'is not UTF-8 text' };
+        return refusal(function (pageText) {
+          return pageText('share link: the text after #%s= is not UTF-8 text', key);
+        });
       }
     }, function (e) {
       if (e && e.tooLarge)
-        return { error: 'share link: the preset in #z= inflates to more than ' + sizeText(maxPresetBytes) +
-                        ', the limit for a preset; stopped there' };
-      return { error: what + 'does not decompress (the link may have been cut short)' };
+        return refusal(function (pageText) {
+          return pageText('share link: the preset in #z= inflates to more than %s, the limit for a preset; stopped there',
+                          sizeText(maxPresetBytes));
+        });
+      return refusal(function (pageText) {
+        return pageText('share link: the text after #%s= does not decompress (the link may have been cut short)', key);
+      });
     });
   }
 

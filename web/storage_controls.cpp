@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "i18n/translator.h"
 #include "ui/panels/panels.h"
 #include "web_app.h"
 #include "web_preset_store.h"
@@ -22,9 +23,9 @@ EM_JS(void, js_copy_link, (), { Module.swarmlab.copyLink(); });
 std::map<std::string, std::string> button_rects;  // by label, as last drawn
 int rects_frame = -1;                             // ImGui's frame count then
 
-/// A button that remembers where it was drawn.
-bool button(const char* label) {
-  const bool pressed = ImGui::Button(label);
+/// A button that remembers where it was drawn, under its English label (tests ask by it).
+bool button(const char* label, const char* shown) {
+  const bool pressed = ImGui::Button(shown);
   const ImVec2 lo = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
   char rect[64];
   std::snprintf(rect, sizeof rect, "%.0f %.0f %.0f %.0f", lo.x, lo.y, size.x, size.y);
@@ -45,21 +46,21 @@ void same_line_if_fits(const char* next_label) {
 void draw_storage_controls(AppState& state) {
   button_rects.clear();
   rects_frame = ImGui::GetFrameCount();
-  if (button("Open preset\u2026")) js_open_file();
+  if (button("Open preset\u2026", tr_id("Open preset\u2026"))) js_open_file();
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("A preset file from this computer (also: drop a .json file on the page)");
-  same_line_if_fits("Download preset");
-  if (button("Download preset")) download_preset(state);
+    ImGui::SetTooltip("%s", tr("A preset file from this computer (also: drop a .json file on the page)"));
+  same_line_if_fits(tr_id("Download preset"));
+  if (button("Download preset", tr_id("Download preset"))) download_preset(state);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("The running preset, every edit included, as %s",
+    ImGui::SetTooltip(tr("The running preset, every edit included, as %s"),
                       download_file_name(state.location).c_str());
-  same_line_if_fits("Copy link");
-  if (button("Copy link")) js_copy_link();
-  help_marker(
+  same_line_if_fits(tr_id("Copy link"));
+  if (button("Copy link", tr_id("Copy link"))) js_copy_link();
+  help_marker(tr(
       "Open preset reads a preset file; Download preset saves the running preset (every edit "
       "you made) as a file that the desktop app, 'swarmlab run' and this page run identically. "
       "Copy link puts the running preset into the page's address (#z=... or #preset=...): "
-      "whoever opens that link starts this preset.");
+      "whoever opens that link starts this preset."));
 }
 
 std::string storage_button_rect(const std::string& label) {

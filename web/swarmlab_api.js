@@ -55,6 +55,11 @@
   'use strict';
   var frames = 0;
   var startLink = null; // what the address's share link decoded to, until main() opens it
+  // The page's language (web/page_text.js); a page without it shows the English.
+  var pageText = typeof window !== 'undefined' && window.pageText || function (text) {
+    var values = Array.prototype.slice.call(arguments, 1);
+    return text.replace(/%[-+ #0-9.]*[sdf%]/g, function (c) { return c === '%%' ? '%' : String(values.shift()); });
+  };
 
   function check() {
     if (!runtimeInitialized || !Module.swarmlabMainStarted)
@@ -84,21 +89,33 @@
     });
   }
 
-  function runningName() {
-    try { return JSON.parse(presetText(-1)).name || 'the previous preset'; } catch (e) { return 'the previous preset'; }
+  // The running preset's name; `shown`: as the page shows it (the fallback in its language).
+  function runningName(shown) {
+    var none = shown ? pageText('the previous preset') : 'the previous preset';
+    try { return JSON.parse(presetText(-1)).name || none; } catch (e) { return none; }
   }
 
   // The page's message line (web/shell.html has #notice; a page without it gets the console).
-  function notice(kind, text, link) {
+  // `text` in English (lastMessage, the console), `shown` in the page's language (the line).
+  function notice(kind, text, link, shown) {
     api.lastMessage = { kind: kind, text: text };
     (kind === 'error' ? console.warn : console.log)('swarmlab: ' + text + (link ? ' ' + link : ''));
-    if (typeof Module.showNotice === 'function') Module.showNotice(kind, text, link || '');
+    if (typeof Module.showNotice === 'function') Module.showNotice(kind, shown || text, link || '');
   }
 
-  // Shows a refusal in the scenario panel and on the page; returns it.
-  function refuse(error) {
-    setStatus(error, true);
-    notice('error', error + ' \u2014 still running: \u201c' + runningName() + '\u201d.');
+  // A refusal that the app did not make: the message, said to the page in its language.
+  function stillRunning(error, shown) {
+    notice('error', error + ' \u2014 still running: \u201c' + runningName() + '\u201d.', '',
+           pageText('%s \u2014 still running: \u201c%s\u201d.', shown || error, runningName(true)));
+  }
+
+  // Shows a refusal (a message, or { error, shown } from SwarmlabLink) in the scenario panel and
+  // on the page; returns the message in English.
+  function refuse(refusal) {
+    var error = typeof refusal === 'string' ? refusal : refusal.error;
+    var shown = typeof refusal === 'string' ? refusal : refusal.shown || refusal.error;
+    setStatus(shown, true);
+    stillRunning(error, shown);
     return error;
   }
 
@@ -112,7 +129,7 @@
       return Module.ccall('swarmlab_open_json', 'string', ['number', 'string', 'string'],
                           [pointer, source, location]);
     });
-    if (error) notice('error', error + ' \u2014 still running: \u201c' + runningName() + '\u201d.');
+    if (error) stillRunning(error);
     else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
     return error;
   }
@@ -126,7 +143,7 @@
 
   // { json } or { error } from SwarmlabLink.read, into the app. Returns '' or the message.
   function openLinkResult(result) {
-    if (result.error) return refuse(result.error);
+    if (result.error) return refuse(result);
     if (result.lessonLink !== undefined) return openLessonLink(result.lessonLink);
     if (result.lesson) return openLessonText(result.json, true, 'lesson link');
     return openJson(result.json, 'share link', 'shared-preset.json');
@@ -159,14 +176,27 @@
     return error;
   }
 
+  // A link copied (or not: the browser refused) and shown: the status line and the message.
+  // `lesson`: the title of the lesson it opens, else it starts the running preset.
+  function sayLink(url, copied, lesson) {
+    setStatus(copied ? pageText('Link copied to the clipboard (%d characters)', url.length)
+                     : pageText('Copy this link from the page or the address bar'), false);
+    var how = copied ? 'Link copied to the clipboard' : 'Copy this link';
+    var what = lesson !== undefined ? 'opens the lesson \u201c' + lesson + '\u201d' : 'starts \u201c' + runningName() + '\u201d';
+    var shown = lesson !== undefined
+      ? (copied ? pageText('Link copied to the clipboard: whoever opens it opens the lesson \u201c%s\u201d.', lesson)
+                : pageText('Copy this link: whoever opens it opens the lesson \u201c%s\u201d.', lesson))
+      : (copied ? pageText('Link copied to the clipboard: whoever opens it starts \u201c%s\u201d.', runningName(true))
+                : pageText('Copy this link: whoever opens it starts \u201c%s\u201d.', runningName(true)));
+    notice('link', how + ': whoever opens it ' + what + '.', url, shown);
+  }
+
   // The page's link for a lesson fragment: copied, put in the address bar and shown.
-  function shareFragment(fragment, what) {
+  function shareFragment(fragment, title) {
     var url = pageAddress() + fragment;
     history.replaceState(null, '', url);
     return copyText(url).then(function (copied) {
-      var how = copied ? 'Link copied to the clipboard' : 'Copy this link';
-      setStatus(how + (copied ? ' (' + url.length + ' characters)' : ' from the page or the address bar'), false);
-      notice('link', how + ': whoever opens it ' + what + '.', url);
+      sayLink(url, copied, String(title));
       return url;
     });
   }
@@ -228,13 +258,11 @@
       // During a lesson the link is the lesson's: a student who opens it starts the lesson,
       // which sets its own scenes (docs/lessons.md, "Sharing it").
       var lesson = lessonFragmentNow();
-      if (lesson) return shareFragment(lesson, 'opens the lesson \u201c' + lessonStateNow().title + '\u201d');
+      if (lesson) return shareFragment(lesson, lessonStateNow().title);
       return api.link().then(function (url) {
         history.replaceState(null, '', url); // the address bar shows it too; no reload
         return copyText(url).then(function (copied) {
-          var what = copied ? 'Link copied to the clipboard' : 'Copy this link';
-          setStatus(what + (copied ? ' (' + url.length + ' characters)' : ' from the page or the address bar'), false);
-          notice('link', what + ': whoever opens it starts \u201c' + runningName() + '\u201d.', url);
+          sayLink(url, copied);
           return url;
         });
       });
@@ -347,7 +375,7 @@
     // The lesson panel's Share button (js_lessons.cpp): Promise of the link.
     shareLesson: function (fragment) {
       check();
-      return shareFragment(fragment, 'opens the lesson \u201c' + (lessonStateNow() || {}).title + '\u201d');
+      return shareFragment(fragment, (lessonStateNow() || {}).title);
     },
     welcomeShown: function () { check(); return Module.ccall('swarmlab_welcome_shown', 'number', [], []) === 1; },
     shipped: function () {

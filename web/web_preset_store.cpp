@@ -2,6 +2,8 @@
 
 #include <emscripten.h>
 
+#include "i18n/translator.h"
+
 namespace swarmlab {
 namespace {
 
@@ -38,7 +40,7 @@ class WebPresetStore final : public PresetStore {
     return {};
   }
 
-  const char* location_hint() const override { return "file name for Download preset"; }
+  const char* location_hint() const override { return tr("file name for Download preset"); }
 
   std::string export_file(const std::string& location, const std::string& bytes,
                           const char* mime) override {

@@ -5,9 +5,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdint>
-#include <map>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
 #include <limits>
 #include <utility>
 
@@ -189,7 +190,9 @@ void App::advance_simulation(double seconds) {
     s.playing = false;
     // Validation keeps a preset's numbers finite; should one still overflow, say so.
     if (const std::string& failure = s.run->primary().failure(); !failure.empty()) {
-      s.status = "The run stopped: " + failure;
+      char text[800];
+      std::snprintf(text, sizeof text, tr("The run stopped: %s"), failure.c_str());
+      s.status = text;
       s.status_is_error = true;
     }
   }

@@ -1,6 +1,9 @@
 #include "ui/classroom/classroom_outputs.h"
 
 #include <algorithm>
+#include <cstdio>
+
+#include "i18n/translator.h"
 
 #include "ui/classroom/theme_style.h"
 #include "ui/lesson_player/input_kind.h"
@@ -108,7 +111,7 @@ void ClassroomOutputs::update_fullscreen(AppState& state, SDL_Window* window) {
     web_request_fullscreen(fullscreen_requested_);
   }
   if (web_fullscreen_refused()) {
-    state.status = "Fullscreen was refused by the browser (use its own fullscreen key, F11)";
+    state.status = tr("Fullscreen was refused by the browser (use its own fullscreen key, F11)");
     state.status_is_error = true;
     p.fullscreen_wanted = fullscreen_requested_ = false;
   }
@@ -119,7 +122,9 @@ void ClassroomOutputs::update_fullscreen(AppState& state, SDL_Window* window) {
     fullscreen_seen_ = false;
     if (SDL_SetWindowFullscreen(window, p.fullscreen_wanted ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0) !=
         0) {
-      state.status = std::string("Fullscreen failed: ") + SDL_GetError();
+      char text[600];
+      std::snprintf(text, sizeof text, tr("Fullscreen failed: %s"), SDL_GetError());
+      state.status = text;
       state.status_is_error = true;
       p.fullscreen_wanted = fullscreen_requested_ = false;
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "i18n/translator.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/parallel_dom/item_tooltip.h"
 
@@ -44,19 +45,19 @@ void set_fullscreen(AppState& state, bool on) { state.presentation.fullscreen_wa
 void draw_presentation_menu_items(AppState& state) {
   Presentation& p = state.presentation;
   ImGui::Separator();
-  if (ImGui::MenuItem("Presentation mode", "F5", p.on)) set_presentation(state, !p.on);
-  if (ImGui::MenuItem("Light theme", nullptr, p.theme == Theme::light))
+  if (ImGui::MenuItem(tr_id("Presentation mode"), "F5", p.on)) set_presentation(state, !p.on);
+  if (ImGui::MenuItem(tr_id("Light theme"), nullptr, p.theme == Theme::light))
     set_theme(state, p.theme == Theme::light ? Theme::dark : Theme::light);
-  if (ImGui::MenuItem("Fullscreen", "F11", p.fullscreen_wanted))
+  if (ImGui::MenuItem(tr_id("Fullscreen"), "F11", p.fullscreen_wanted))
     set_fullscreen(state, !p.fullscreen_wanted);
-  if (ImGui::MenuItem("Sound: wall hits", "M", p.sound)) set_sound(state, !p.sound);
+  if (ImGui::MenuItem(tr_id("Sound: wall hits"), "M", p.sound)) set_sound(state, !p.sound);
 }
 
 void draw_sound_toggle(AppState& state) {
   Presentation& p = state.presentation;
   bool on = p.sound;
-  if (ImGui::Checkbox("Sound", &on)) set_sound(state, on);
-  item_tooltip("M: a click at each wall hit, thinned to a rate you can hear");
+  if (ImGui::Checkbox(tr_id("Sound"), &on)) set_sound(state, on);
+  item_tooltip(tr("M: a click at each wall hit, thinned to a rate you can hear"));
   if (!p.sound_status.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", p.sound_status.c_str());

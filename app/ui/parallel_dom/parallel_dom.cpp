@@ -4,6 +4,9 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cstdio>
+
+#include "i18n/translator.h"
 
 namespace swarmlab {
 namespace {
@@ -129,7 +132,7 @@ MirroredItem ParallelDom::mirror(const Drawn& d) const {
     m.clipped = true;
   if (const ImGuiWindow* root = ImGui::FindWindowByID(d.root)) {
     m.region = window_title(root->Name);
-    if (m.region.empty() && (root->Flags & ImGuiWindowFlags_MenuBar)) m.region = "Menu bar";
+    if (m.region.empty() && (root->Flags & ImGuiWindowFlags_MenuBar)) m.region = tr("Menu bar");
   }
   if (d.id == 0) {
     m.role = d.text_role;
@@ -144,7 +147,9 @@ MirroredItem ParallelDom::mirror(const Drawn& d) const {
   m.role = role_of(f);
   m.disabled = k.disabled;
   if (f.is_close_button) {
-    m.name = "Close " + m.region;
+    char name[400];
+    std::snprintf(name, sizeof name, tr("Close %s"), m.region.c_str());
+    m.name = name;
   } else if (!k.name.empty()) {
     m.name = k.name;
     m.description = k.tooltip;

@@ -4,6 +4,7 @@
 
 #include "files/atomic_file.h"
 #include "files/preset_file.h"
+#include "i18n/translator.h"
 #include "ui/platform/preset_store.h"
 
 namespace swarmlab {
@@ -33,7 +34,7 @@ class FilePresetStore final : public PresetStore {
   }
 
   std::string save(const std::string& location, const std::string& json) override {
-    if (location.empty()) return "give a file name to save to";
+    if (location.empty()) return tr("give a file name to save to");
     return write_file_atomically(location, json + "\n");
   }
 
@@ -44,7 +45,12 @@ class FilePresetStore final : public PresetStore {
     const std::filesystem::path folder = std::filesystem::path(location).parent_path();
     std::error_code error;
     if (!folder.empty()) std::filesystem::create_directories(folder, error);
-    if (error) return folder.string() + ": cannot make the folder (" + error.message() + ")";
+    if (error) {
+      char text[1200];
+      std::snprintf(text, sizeof text, tr("%s: cannot make the folder (%s)"),
+                    folder.string().c_str(), error.message().c_str());
+      return text;
+    }
     return write_file_atomically(location, bytes);
   }
 

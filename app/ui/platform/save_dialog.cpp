@@ -7,11 +7,26 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "i18n/translator.h"
 #include "report/run_csv.h"
 #include "ui/classroom/theme_style.h"
 
 namespace swarmlab {
 namespace {
+
+/// The status line after a file was written: "Saved LOCATION".
+std::string saved_status(const std::string& location) {
+  char text[600];
+  std::snprintf(text, sizeof text, tr("Saved %s"), location.c_str());
+  return text;
+}
+
+/// A value as the student reads it: "7.5", or "7,5" in a language that writes a comma.
+std::string number_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", x);
+  return translator().numbers(text);
+}
 
 std::string preset_json_named(const AppState& state, const std::string& name) {
   swarm::Preset p = state.preset;
@@ -26,7 +41,7 @@ std::string write(AppState& state, const SaveRequest& request, const std::string
   const std::string content =
       request.preset ? preset_json_named(state, preset_name) : request.content;
   const std::string error = state.store->export_file(location, content, request.mime);
-  state.status = error.empty() ? "Saved " + location : error;
+  state.status = error.empty() ? saved_status(location) : error;
   state.status_is_error = !error.empty();
   if (error.empty() && request.preset) {
     state.preset.name = state.draft.name = preset_name;
@@ -76,7 +91,7 @@ void request_save(AppState& state, SaveRequest request) {
 
 void request_save_preset(AppState& state) {
   SaveRequest r;
-  r.what = "the running preset (every edit included)";
+  r.what = tr("the running preset (every edit included)");
   r.file_name = file_stem_of(state.preset.name) + ".json";
   r.mime = "application/json";
   r.preset = true;
@@ -90,24 +105,29 @@ std::string request_samples_csv(AppState& state) {
   const double now = state.run->time();
   const double reached = double(state.run->timeline().reached()) * state.preset.dt;
   if (state.run->step() >= state.run->timeline().reached())
-    return request_csv(state, "the samples as CSV (the columns of swarmlab run --csv)",
+    return request_csv(state, tr("the samples as CSV (the columns of swarmlab run --csv)"),
                        "-samples.csv", report::samples_csv(state.run->primary().samples()));
-  char what[200], suffix[64];
+  char what[400], suffix[64];
   std::snprintf(what, sizeof what,
-                "the samples from t = 0 to t = %.4g, the time shown, as CSV (the run reached "
-                "t = %.4g: play on or press End to export all of it)",
+                tr("the samples from t = 0 to t = %.4g, the time shown, as CSV (the run reached "
+                   "t = %.4g: play on or press End to export all of it)"),
                 now, reached);
   std::snprintf(suffix, sizeof suffix, "-samples-t0-to-t%.4g.csv", now);
   const std::string name =
-      request_csv(state, what, suffix, report::samples_csv(state.run->primary().samples()));
-  char note[160];
-  std::snprintf(note, sizeof note, " (t = 0 to %.4g of the %.4g reached)", now, reached);
-  if (!state.status_is_error && state.status.rfind("Saved ", 0) == 0) state.status += note;
+      request_csv(state, translator().numbers(what), suffix,
+                  report::samples_csv(state.run->primary().samples()));
+  // Saved at once (the browser's download): the status line says which range the file holds.
+  if (!state.status_is_error && state.status == saved_status(name)) {
+    char text[700];
+    std::snprintf(text, sizeof text, tr("Saved %s (t = 0 to %s of the %s reached)"),
+                  name.c_str(), number_text(now).c_str(), number_text(reached).c_str());
+    state.status = text;
+  }
   return name;
 }
 
 std::string request_stages_csv(AppState& state) {
-  return request_csv(state, "the expansion stages as CSV (R,V,P,T,E,hits)", "-stages.csv",
+  return request_csv(state, tr("the expansion stages as CSV (R,V,P,T,E,hits)"), "-stages.csv",
                      report::stages_csv(state.run->primary().stages()));
 }
 
@@ -123,25 +143,25 @@ void draw_save_dialogs(AppState& state) {
   const float font = ImGui::GetFontSize();
   const ImVec2 centre = ImGui::GetMainViewport()->GetCenter();
 
-  if (d.asking_quit) ImGui::OpenPopup("Unsaved edits");
+  if (d.asking_quit) ImGui::OpenPopup(tr_id("Unsaved edits"));
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  if (ImGui::BeginPopupModal("Unsaved edits", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::Text("\u201c%s\u201d has edits that are not saved.", state.preset.name.c_str());
-    ImGui::TextDisabled("Quit anyway, or save the preset first?");
-    if (ImGui::Button("Save...")) {
+  if (ImGui::BeginPopupModal(tr_id("Unsaved edits"), nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text(tr("\u201c%s\u201d has edits that are not saved."), tr(state.preset.name.c_str()));
+    ImGui::TextDisabled("%s", tr("Quit anyway, or save the preset first?"));
+    if (ImGui::Button(tr_id("Save..."))) {
       d.asking_quit = false;
       d.quit_after_save = true;
       ImGui::CloseCurrentPopup();
       request_save_preset(state);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Discard and quit")) {
+    if (ImGui::Button(tr_id("Discard and quit"))) {
       d.asking_quit = false;
       d.quit_confirmed = true;
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    if (ImGui::Button(tr_id("Cancel")) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
       d.asking_quit = false;
       ImGui::CloseCurrentPopup();
     }
@@ -149,25 +169,25 @@ void draw_save_dialogs(AppState& state) {
   }
 
   if (d.open_popup) {
-    ImGui::OpenPopup("Save");
+    ImGui::OpenPopup(tr_id("Save"));
     d.open_popup = false;
   }
   ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(34 * font, 0), ImGuiCond_Appearing);
-  if (ImGui::BeginPopupModal("Save", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
+  if (ImGui::BeginPopupModal(tr_id("Save"), nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     if (!d.request) {
       ImGui::CloseCurrentPopup();
     } else {
-      ImGui::TextWrapped("Save %s", d.request->what.c_str());
+      ImGui::TextWrapped(tr("Save %s"), d.request->what.c_str());
       ImGui::Spacing();
       if (d.request->preset) {
         ImGui::SetNextItemWidth(-8 * font);
-        ImGui::InputText("preset name", &d.preset_name);
+        ImGui::InputText(tr_id("preset name"), &d.preset_name);
       }
       ImGui::SetNextItemWidth(-8 * font);
-      ImGui::InputText("folder", &d.folder);
+      ImGui::InputText(tr_id("folder"), &d.folder);
       ImGui::SetNextItemWidth(-8 * font);
-      ImGui::InputText("file name", &d.file_name);
+      ImGui::InputText(tr_id("file name"), &d.file_name);
       const std::string location = (std::filesystem::path(d.folder) / d.file_name).string();
       ImGui::TextDisabled("%s", location.c_str());
       if (!d.error.empty()) {
@@ -177,11 +197,11 @@ void draw_save_dialogs(AppState& state) {
       }
       const bool can_save = !d.file_name.empty() && !(d.request->preset && d.preset_name.empty());
       ImGui::BeginDisabled(!can_save);
-      const bool save = ImGui::Button("Save", ImVec2(6 * font, 0));
+      const bool save = ImGui::Button(tr_id("Save"), ImVec2(6 * font, 0));
       ImGui::EndDisabled();
       ImGui::SameLine();
       const bool cancel =
-          ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+          ImGui::Button(tr_id("Cancel")) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
       if (save) {
         // The folder is made if missing; the file appears whole or not at all.
         d.error = write(state, *d.request, location, d.preset_name);

@@ -3,8 +3,10 @@
 #include <SDL.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
+#include "i18n/translator.h"
 #include "ui/platform/wall_sound.h"
 
 namespace swarmlab {
@@ -28,8 +30,11 @@ void add_click(std::vector<float>& out, std::size_t at) {
 
 std::string WallSound::open() {
   if (open_) return {};
-  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0)
-    return std::string("no sound: cannot start audio (") + SDL_GetError() + ")";
+  char error[600];
+  if (SDL_InitSubSystem(SDL_INIT_AUDIO) != 0) {
+    std::snprintf(error, sizeof error, tr("no sound: cannot start audio (%s)"), SDL_GetError());
+    return error;
+  }
   SDL_AudioSpec want{}, have{};
   want.freq = kSampleRate;
   want.format = AUDIO_F32SYS;
@@ -37,7 +42,7 @@ std::string WallSound::open() {
   want.samples = 512;
   const SDL_AudioDeviceID device = SDL_OpenAudioDevice(nullptr, 0, &want, &have, 0);
   if (device == 0) {
-    const std::string error = std::string("no sound: no audio device (") + SDL_GetError() + ")";
+    std::snprintf(error, sizeof error, tr("no sound: no audio device (%s)"), SDL_GetError());
     SDL_QuitSubSystem(SDL_INIT_AUDIO);
     return error;
   }

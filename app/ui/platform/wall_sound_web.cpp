@@ -4,6 +4,7 @@
 
 #include <emscripten.h>
 
+#include "i18n/translator.h"
 #include "ui/platform/wall_sound.h"
 
 namespace {
@@ -64,7 +65,7 @@ namespace swarmlab {
 
 std::string WallSound::open() {
   if (open_) return {};
-  if (!web_audio_open()) return "no sound: this browser has no Web Audio";
+  if (!web_audio_open()) return tr("no sound: this browser has no Web Audio");
   open_ = true;
   return {};
 }

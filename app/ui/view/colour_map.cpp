@@ -4,17 +4,18 @@
 #include <cmath>
 
 #include "access/theme_palette.h"
+#include "i18n/translator.h"
 
 namespace swarmlab {
 
 const char* legend_title(ColourBy c) {
   switch (c) {
     case ColourBy::speed:
-      return "speed |v|  (length/time)";
+      return tr("speed |v|  (length/time)");
     case ColourBy::mass:
-      return "mass m";
+      return tr("mass m");
     case ColourBy::energy:
-      return "energy \u00bd m v\u00b2 + \u00bd J M m |r \u2212 R|\u00b2";
+      return tr("energy \u00bd m v\u00b2 + \u00bd J M m |r \u2212 R|\u00b2");
   }
   return "";
 }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "i18n/translator.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/orbit_ahead.h"
 #include "swarm/physics/regime.h"
@@ -199,11 +200,13 @@ void draw_legend(AppState& state, ImDrawList* draw) {
                 legend_title(state.view.colour_by));
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", state.colour_scale.lo);
-  draw->AddText(ImVec2(low.x, low.y + height + 0.1f * font), text_colour, text);
+  draw->AddText(ImVec2(low.x, low.y + height + 0.1f * font), text_colour,
+                translator().numbers(text).c_str());
   std::snprintf(text, sizeof text, "%.3g", state.colour_scale.hi);
-  const float w = ImGui::CalcTextSize(text).x;
+  const std::string hi = translator().numbers(text);
+  const float w = ImGui::CalcTextSize(hi.c_str()).x;
   draw->AddText(ImVec2(low.x + width - w, low.y + height + 0.1f * font),
-                text_colour, text);
+                text_colour, hi.c_str());
 }
 
 /// The floor z = h as a grid square about the centre of mass, out to the scene's radius.
@@ -237,8 +240,9 @@ void draw_gravity_arrow(const Painter& paint, const swarm::Vec3& g, const swarm:
                                 ImVec2(b.x - uy * head * 0.6f, b.y + ux * head * 0.6f),
                                 ImVec2(b.x + uy * head * 0.6f, b.y - ux * head * 0.6f), colour);
   char label[48];
-  std::snprintf(label, sizeof label, "g = %.3g", g.norm());
-  paint.draw->AddText(ImVec2(a.x + 0.5f * font, a.y - 1.2f * font), colour, label);
+  std::snprintf(label, sizeof label, tr("g = %.3g"), g.norm());
+  paint.draw->AddText(ImVec2(a.x + 0.5f * font, a.y - 1.2f * font), colour,
+                      translator().numbers(label).c_str());
 }
 
 }  // namespace
@@ -299,9 +303,9 @@ void draw_scene_overlay(AppState& state) {
     if (p.visible) {
       draw->AddCircle(paint.at(p), 0.9f * font, theme.selected.packed(), 24, 2.0f);
       char label[64];
-      std::snprintf(label, sizeof label, "#%zu  m = %.3g", i + 1, s.particles[i].m);
+      std::snprintf(label, sizeof label, tr("#%zu  m = %.3g"), i + 1, s.particles[i].m);
       draw->AddText(ImVec2(p.x + 1.0f * font, p.y - 1.4f * font), theme.selected.packed(),
-                    label);
+                    translator().numbers(label).c_str());
     }
   }
 
@@ -316,7 +320,7 @@ void draw_scene_overlay(AppState& state) {
       draw->AddLine(ImVec2(at.x, at.y - 0.9f * font), ImVec2(at.x, at.y + 0.9f * font),
                     theme.centre_of_mass.packed(), 1.5f);
       draw->AddText(ImVec2(at.x + 0.8f * font, at.y + 0.2f * font), theme.centre_of_mass.packed(),
-                    "CM");
+                    tr("CM"));
     }
   }
   if (state.view.axes) draw_axes(state, draw);
