@@ -8,7 +8,7 @@ set -euo pipefail
 declare -A groups=(
   [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin parallel"
   [desktop]="dpkg-dev libsdl2-dev libstb-dev fonts-dejavu-core fonts-noto-cjk fonttools xvfb xauth xdotool"
-  [web]="emscripten nodejs npm cmake make python3 dpkg-dev libeigen3-dev nlohmann-json3-dev doctest-dev libstb-dev fonts-noto-cjk fonttools"
+  [web]="emscripten nodejs npm cmake make python3 dpkg-dev libeigen3-dev nlohmann-json3-dev doctest-dev libstb-dev fonts-noto-cjk fonttools librsvg2-bin"
   [webtest]="chromium"
   [fuzz]="clang libclang-rt-14-dev libeigen3-dev nlohmann-json3-dev nodejs"
 )

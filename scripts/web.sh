@@ -42,8 +42,9 @@ say "configuring ($bdir)"
 emcmake cmake -S . -B "$bdir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DSWARMLAB_WEB=ON >"$root/build/web-configure.log" 2>&1 \
   || { cat "$root/build/web-configure.log" >&2; say "configure failed"; exit 1; }
 say "building with -j$jobs"
-nice cmake --build "$bdir" -j"$jobs" --target swarmlab_web
-for f in index.html swarmlab.js swarmlab.wasm; do
+# swarmlab_offline: the manifest, icons and service worker (web/CMakeLists.txt), after the page.
+nice cmake --build "$bdir" -j"$jobs" --target swarmlab_web swarmlab_offline
+for f in index.html swarmlab.js swarmlab.wasm service_worker.js manifest.webmanifest; do
   [ -f "build/web/$f" ] || { say "missing build/web/$f"; exit 1; }
 done
 wasm_bytes=$(stat -c %s build/web/swarmlab.wasm)
