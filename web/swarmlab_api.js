@@ -14,7 +14,8 @@
 //                          (4 MB of UTF-8), keeps the running preset, shows the message in
 //                          the scenario panel and on the page, and throws Error(message); the
 //                          message is the CLI's, e.g. "swarmlab.load(): dt: must be > 0"
-//   swarmlab.link()        Promise of a share link to the running preset (#z=... or #preset=...)
+//   swarmlab.link()        Promise of a share link to the running preset (#lang=...&z=... or
+//                          #lang=...&preset=...: it opens in the language in use)
 //   swarmlab.copyLink()    the Copy link button: puts that link in the address bar and on the
 //                          clipboard, and shows it on the page; Promise of the link
 //   swarmlab.openLink(hash) opens the preset of a fragment; Promise of "" or the error message
@@ -193,7 +194,7 @@
 
   // The page's link for a lesson fragment: copied, put in the address bar and shown.
   function shareFragment(fragment, title) {
-    var url = pageAddress() + fragment;
+    var url = pageAddress() + withLanguage(fragment);
     history.replaceState(null, '', url);
     return copyText(url).then(function (copied) {
       sayLink(url, copied, String(title));
@@ -230,6 +231,12 @@
 
   function pageAddress() { return location.href.split('#')[0]; }
 
+  /// A shared link opens in the language it was shared in: #lang= first, then the fragment.
+  function withLanguage(fragment) {
+    var code = window.swarmlabLanguage || 'en';
+    return '#lang=' + encodeURIComponent(code) + '&' + fragment.replace(/^#/, '');
+  }
+
   var api = {
     firstFrameMs: null,
     lastMessage: null,
@@ -252,7 +259,7 @@
     },
     link: function () {
       check();
-      return SwarmlabLink.fragment(presetText(-1)).then(function (f) { return pageAddress() + f; });
+      return SwarmlabLink.fragment(presetText(-1)).then(function (f) { return pageAddress() + withLanguage(f); });
     },
     copyLink: function () {
       // During a lesson the link is the lesson's: a student who opens it starts the lesson,

@@ -9,6 +9,7 @@
 #include "finger_times.h"
 #include "lessons/lesson_file.h"
 #include "ui/main_loop.h"
+#include "ui/platform/language_memory.h"
 #include "storage_controls.h"
 #include "web_app.h"
 #include "web_preset_store.h"
@@ -41,6 +42,8 @@ int main() {
   frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
                                      swarmlab::shipped_preset_lookup("/presets"));
   swarmlab::install_lesson_share(frontend.app->state());
+  // The language the page chose (#lang=, the last choice, the browser's: web/page_text.js).
+  frontend.app->state().language.pending = swarmlab::startup_language();
   // A share link in the address replaces the default preset before the first frame.
   EM_ASM({
     if (Module.swarmlabStarted) Module.swarmlabStarted();

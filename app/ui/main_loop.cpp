@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <deque>
 
+#include "i18n/language.h"
 #include "i18n/speak.h"
 #include "i18n/translator.h"
 #include "ui/input/keyboard_regions.h"
@@ -158,7 +159,8 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
     std::string error;
     if (speak(language.pending, error)) {
       language.code = language.pending;
-      if (language.remember) remember_language(language.code);
+      // The pseudo-language is for layout tests: never the next visit's.
+      if (language.remember && language.code != pseudo_language().code) remember_language(language.code);
       new_fonts = true;
     } else {
       std::fprintf(stderr, "swarmlab: %s\n", error.c_str());

@@ -175,7 +175,7 @@ async function main(url) {
     const copied = await z.page.evaluate(() => location.href);
     const linkShown = await z.page.evaluate(() => document.getElementById('notice-link').value);
     const apiLink = await z.page.evaluate(() => window.swarmlab.link());
-    check('Copy link button puts the preset in the address and shows the link', clickedCopy && /^#(z|preset)=/.test(shown.hash) &&
+    check('Copy link button puts the preset in the address and shows the link', clickedCopy && /^#lang=en&(z|preset)=/.test(shown.hash) &&
           shown.noticeKind === 'link' && linkShown === copied && apiLink === copied,
           `${shown.hash.slice(0, 24)}... (${shown.hash.length} characters)`);
     const running = await z.page.evaluate(() => window.swarmlab.preset());

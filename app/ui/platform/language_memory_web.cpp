@@ -12,7 +12,10 @@ namespace {
 // private window, storage blocked by a school's policy): the language then lasts this visit.
 // clang-format off
 EM_JS(void, store_language, (const char* code), {
-  try { window.localStorage.setItem("swarmlab.language", UTF8ToString(code)); } catch (e) {}
+  var text = UTF8ToString(code);
+  window.swarmlabLanguage = text;  // the page's own texts and shared links follow
+  if (text !== "x-pseudo") document.documentElement.lang = text;
+  try { window.localStorage.setItem("swarmlab.language", text); } catch (e) {}
 });
 
 EM_JS(char*, page_language, (), {
