@@ -64,6 +64,13 @@ void draw_prose(const std::string& text) {
     std::string text;
     bool emphasis;
   };
+  // Words, each made of pieces whose emphasis may change inside the word ("*Play*,"). Chinese
+  // writes no spaces: each of its characters is a word of its own, set without a space before
+  // it, so a line may break between any two of them.
+  struct Word {
+    std::vector<Piece> pieces;
+    bool space_before = false;
+  };
   const float wrap = ImGui::GetContentRegionAvail().x;
   const float space = ImGui::CalcTextSize(" ").x;
   bool emphasis = false;
@@ -75,30 +82,55 @@ void draw_prose(const std::string& text) {
     if (line.empty()) {
       ImGui::Spacing();  // a blank line: a new paragraph
     } else {
-      // Words, each made of pieces whose emphasis may change inside the word ("*Play*,").
-      std::vector<std::vector<Piece>> words(1);
-      for (char c : line) {
+      std::vector<Word> words(1);
+      bool spaced = false;  // a space since the last word ended
+      auto add = [&](const std::string& c) {
+        if (words.back().pieces.empty()) words.back().pieces.push_back({"", emphasis});
+        words.back().pieces.back().text += c;
+      };
+      for (std::size_t i = 0; i < line.size();) {
+        const unsigned char c = static_cast<unsigned char>(line[i]);
+        const std::size_t n = c < 0x80 ? 1 : c < 0xE0 ? 2 : c < 0xF0 ? 3 : 4;
+        // U+2E80 and above (CJK, its punctuation, full-width forms) is three or four bytes
+        // from E2 BA 80 on.
+        const bool cjk = n >= 3 && line.compare(i, 3, "\xE2\xBA\x80") >= 0;
         if (c == '*') {
           emphasis = !emphasis;
-          words.back().push_back({"", emphasis});
+          words.back().pieces.push_back({"", emphasis});
         } else if (c == ' ') {
-          if (!words.back().empty()) words.emplace_back();
+          if (!words.back().pieces.empty()) words.emplace_back();
+          spaced = true;
+        } else if (cjk) {
+          // Closing punctuation never starts a line: it stays with the character before it.
+          static const std::string closing = "，。、：；！？）」』】";
+          const std::string ch = line.substr(i, n);
+          const bool closes = closing.find(ch) != std::string::npos && words.size() > 1 &&
+                              words.back().pieces.empty() && !spaced;
+          if (closes) words.pop_back();
+          if (!closes && !words.back().pieces.empty()) words.emplace_back();
+          if (!closes) words.back().space_before = spaced;
+          add(ch);
+          words.emplace_back();
+          spaced = false;
         } else {
-          if (words.back().empty()) words.back().push_back({"", emphasis});
-          words.back().back().text += c;
+          if (words.back().pieces.empty()) words.back().space_before = spaced;
+          add(line.substr(i, n));
+          spaced = false;
         }
+        i += n;
       }
       float x = 0;
-      for (const auto& word : words) {
+      for (const Word& word : words) {
         float width = 0;
-        for (const Piece& p : word) width += ImGui::CalcTextSize(p.text.c_str()).x;
+        for (const Piece& p : word.pieces) width += ImGui::CalcTextSize(p.text.c_str()).x;
         if (width == 0) continue;
-        if (x > 0 && x + space + width > wrap)
+        const float gap = word.space_before ? space : 0;
+        if (x > 0 && x + gap + width > wrap)
           x = 0;
         else if (x > 0)
-          ImGui::SameLine(0, space);
+          ImGui::SameLine(0, gap);
         bool first = true;
-        for (const Piece& p : word) {
+        for (const Piece& p : word.pieces) {
           if (p.text.empty()) continue;
           if (!first) ImGui::SameLine(0, 0);
           first = false;
@@ -107,7 +139,7 @@ void draw_prose(const std::string& text) {
           else
             ImGui::TextUnformatted(p.text.c_str());
         }
-        x += (x > 0 ? space : 0) + width;
+        x += (x > 0 ? gap : 0) + width;
       }
     }
     start = end + 1;

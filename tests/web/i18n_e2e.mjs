@@ -1,0 +1,144 @@
+// Every classroom (issue 24): the app and its lessons in six languages, as a class meets them.
+// A link's #lang= starts the page and the app in that language; View > Language, pressed with
+// the mouse through the parallel DOM, switches it and the choice is remembered for the next
+// visit; a typed number accepts '.' and ',' and shows the language's decimal separator; the
+// Chinese font is fetched only when Chinese is chosen, and its glyphs are drawn; Copy link
+// carries the language, and beats a remembered choice. Then, per language, a lesson step at a
+// laptop size and the welcome on a phone, saved to build/web-test/i18n/ to be looked at.
+// window.swarmlab is only read.
+import { readFileSync, mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+import * as harness from './harness.mjs';
+import { person } from './person.mjs';
+
+const { root, outDir, check, openApp, launchBrowser, closeBrowser, runSuite, pageErrors, shipped, base64url } = harness;
+
+const table = (code) => JSON.parse(readFileSync(join(root, 'assets/i18n', `${code}.json`), 'utf8'));
+const LANGUAGES = ['en', 'es', 'de', 'fr', 'pt-BR', 'zh-CN'];
+const NATIVE = { en: 'English', es: 'Español', de: 'Deutsch', fr: 'Français', 'pt-BR': 'Português (Brasil)',
+                 'zh-CN': '中文（简体）' };
+// The text a language shows for an English one (the table's, else the English).
+const words = (code, english) => (code === 'en' ? english : table(code)[english] || english);
+const firstLesson = JSON.parse(readFileSync(join(root, 'assets/lessons/01-one-period.json'), 'utf8'));
+
+const language = (page) => page.evaluate(() => window.swarmlab.state().language);
+const until = (page, code) => page.waitForFunction((c) => window.swarmlab.state().language === c, code,
+                                                    { timeout: 30_000 }).then(() => true, () => false);
+
+// A number field's text as the page mirrors it.
+const fieldText = (me, name) => me.find('textbox', name).evaluate((e) => e.value);
+
+async function chooseLanguage(me, page, from, to) {
+  await me.press('menuitem', words(from, 'View'));
+  await me.press('menuitem', words(from, 'Language'));
+  await me.press('menuitem', NATIVE[to]);
+  return until(page, to);
+}
+
+async function main(url) {
+  mkdirSync(join(outDir, 'i18n'), { recursive: true });
+  await launchBrowser({ width: 1280, height: 720 });
+
+  // 1. A Spanish link to a gas at a hot wall: the page and the app speak Spanish.
+  const gas = base64url(Buffer.from(JSON.stringify(shipped('hot-wall.json'))));
+  let { page, started, error } = await openApp(url + '#lang=es&preset=' + gas, 'i18n-es');
+  if (!check('the app starts from a #lang=es link', started, error || '')) return;
+  const me = person(page, 'mouse');
+  check('#lang=es: the app speaks Spanish', await until(page, 'es'), await language(page));
+  check('the page is marked Spanish for screen readers', await page.evaluate(() => document.documentElement.lang) === 'es');
+  await me.find('menuitem', words('es', 'View')).waitFor({ state: 'attached', timeout: 30_000 });
+  check('the menus are named in Spanish (Escenario, Vista, Lecciones, Ayuda)',
+        (await Promise.all(['Scenario', 'View', 'Lessons', 'Help'].map((m) => me.find('menuitem', words('es', m)).count())))
+          .every((n) => n === 1));
+
+  // 2. View > Language > Deutsch, with the mouse: German at once, the menus renamed.
+  check('View > Language > Deutsch switches to German', await chooseLanguage(me, page, 'es', 'de'), await language(page));
+  await me.find('menuitem', words('de', 'View')).waitFor({ state: 'attached', timeout: 30_000 });
+  check('the menus are renamed in German', await me.find('menuitem', 'Ansicht').count() === 1);
+
+  // 3. Numbers: a typed '0,5' and '0.25' both read, and show with the decimal comma.
+  const averageOver = words('de', 'average over');
+  await me.press('tab', new RegExp('^' + words('de', 'Wall P, T').replace(/[.*+?^${}()|[\]\\]/g, '\\$&')));
+  const keys = person(page, 'keyboard');
+  await keys.type(averageOver, '0,5');
+  await page.waitForFunction((n) => [...document.querySelectorAll('#parallel-dom input')]
+    .some((e) => e.getAttribute('aria-label') === n && e.value === '0,5'), averageOver, { timeout: 20_000 })
+    .catch(() => {});
+  check('a typed "0,5" is read as one half and shown "0,5"', await fieldText(me, averageOver) === '0,5',
+        await fieldText(me, averageOver));
+  // ... and a typed '0.25' too: the read-out of the averaging window says 0,25.
+  await keys.type(averageOver, '0.25');
+  const over = words('de', 'P, T over');
+  const row = me.dom.locator('p', { hasText: new RegExp('^' + over.replace(/[.*+?^${}()|[\]\\]/g, '\\$&') + ' = .*0,25') });
+  check('a typed "0.25" is read too: the read-out says 0,25',
+        await row.first().waitFor({ state: 'attached', timeout: 20_000 }).then(() => true, () => false),
+        await me.dom.locator('p', { hasText: over }).first().textContent().catch(() => 'no row'));
+
+  // 4. Chinese: the font is fetched only now, and its glyphs are drawn (the view's text is
+  //    mirrored, the pixels are looked at in the screenshot).
+  const fontRequests = [];
+  page.on('request', (r) => { if (/fonts\/noto-sans-sc-subset\.otf$/.test(r.url())) fontRequests.push(r.url()); });
+  check('no Chinese font is fetched for Spanish and German', fontRequests.length === 0);
+  const fetched = page.waitForResponse((r) => /fonts\/noto-sans-sc-subset\.otf$/.test(r.url()), { timeout: 30_000 })
+    .then((r) => r.ok(), () => false);
+  check('View > Language > 中文（简体） switches to Chinese', await chooseLanguage(me, page, 'de', 'zh-CN'), await language(page));
+  check('the Chinese font subset is fetched when Chinese is chosen', await fetched, fontRequests.join(', '));
+  await me.find('menuitem', '视图').waitFor({ state: 'attached', timeout: 30_000 });
+  await page.screenshot({ path: join(outDir, 'i18n', 'chinese-chosen.png') });
+  console.log('      screenshot -> build/web-test/i18n/chinese-chosen.png');
+
+  // 5. Remembered: the next visit, with no #lang=, starts in Chinese.
+  await page.close();
+  ({ page, started, error } = await openApp(url, 'i18n-again'));
+  check('the next visit starts', started, error || '');
+  check('the choice is remembered for the next visit', await until(page, 'zh-CN'), await language(page));
+
+  // 6. Copy link carries the language, and a link's #lang= beats the remembered choice.
+  const again = person(page, 'mouse');
+  await again.press('button', words('zh-CN', 'Copy link'));
+  await page.waitForFunction(() => location.hash.startsWith('#lang='), null, { timeout: 20_000 }).catch(() => {});
+  const hash = await page.evaluate(() => location.hash);
+  check('Copy link puts the language in the link (#lang=zh-CN&...)', /^#lang=zh-CN&(z|preset)=/.test(hash), hash.slice(0, 30));
+  await page.evaluate(() => localStorage.setItem('swarmlab.language', 'fr'));
+  const link = await page.evaluate(() => location.href);
+  await page.close();
+  ({ page, started, error } = await openApp(link, 'i18n-link'));
+  check('the copied link opens in Chinese though French was remembered', started && await until(page, 'zh-CN'),
+        error || await language(page));
+  await page.close();
+  await closeBrowser();
+
+  // 7. Per language, for a person to look at: a lesson's first step at a laptop size, and the
+  //    welcome on a phone (each written to build/web-test/i18n/).
+  await launchBrowser({ width: 1366, height: 768 });
+  for (const code of LANGUAGES) {
+    ({ page, started, error } = await openApp(`${url}#lang=${code}&lesson=${firstLesson.id}`, `i18n-lesson-${code}`));
+    if (check(`${code}: a lesson link opens in that language`, started && await until(page, code), error || '')) {
+      const title = words(code, firstLesson.title);
+      const heading = page.locator('#parallel-dom').getByText(title, { exact: false }).first();
+      check(`${code}: the lesson's title is translated ("${title.slice(0, 30)}")`,
+            await heading.waitFor({ state: 'attached', timeout: 30_000 }).then(() => true, () => false));
+      await page.screenshot({ path: join(outDir, 'i18n', `lesson-${code}-1366x768.png`) });
+    }
+    await page.close();
+  }
+  await closeBrowser();
+  await launchBrowser({ width: 390, height: 844, hasTouch: true, isMobile: true });
+  for (const code of LANGUAGES) {
+    // Each a first visit: no progress kept from the language before.
+    ({ page, started, error } = await openApp(`${url}?welcome#lang=${code}`, `i18n-welcome-${code}`,
+                                              () => localStorage.removeItem('swarmlab.progress')));
+    if (check(`${code}: the welcome opens on a phone`, started && await until(page, code), error || '')) {
+      const welcome = await page.waitForFunction(() => window.swarmlab.welcomeShown(), null, { timeout: 30_000 })
+        .then(() => true, () => false);
+      check(`${code}: the welcome shows`, welcome);
+      await page.screenshot({ path: join(outDir, 'i18n', `welcome-${code}-390x844.png`) });
+    }
+    await page.close();
+  }
+  await closeBrowser();
+  console.log('      screenshots -> build/web-test/i18n/');
+  check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
+}
+
+await runSuite('i18n', 240_000, main);
