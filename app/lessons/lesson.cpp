@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "i18n/language.h"
+#include "i18n/translator.h"
 #include "lessons/device_words.h"
 #include "swarm/preset/printable_text.h"
 #include "swarm/preset/strict_json.h"
@@ -39,6 +41,20 @@ std::string format(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", x);
   return text;
+}
+
+/// A translated sentence with its values, numbers in the language's decimal separator.
+std::string sentence(const char* format, ...) {
+  va_list args, again;
+  va_start(args, format);
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string text(std::size_t(n > 0 ? n : 0) + 1, '\0');
+  std::vsnprintf(text.data(), text.size(), format, again);
+  va_end(again);
+  text.pop_back();
+  return translator().numbers(text);
 }
 
 /// One JSON object of the lesson, refusing keys it does not know.
@@ -488,30 +504,35 @@ std::string_view name_of(LessonTask::Kind kind) {
 
 Marking mark_measurement(const LessonTask& task, double answer, double expected,
                          const std::string& symbol) {
+  // Whole sentences through the translator, in the language the student reads (app/i18n).
   Marking m;
   if (!std::isfinite(answer)) {
-    m.feedback = "Type a number, e.g. 4.44.";
+    m.feedback = translator().numbers(tr("Type a number, e.g. 4.44."));
     return m;
   }
   if (!std::isfinite(expected)) {
-    m.feedback = "The running simulation has no " + symbol +
-                 " to compare with right now (has the scene changed?).";
+    m.feedback = sentence(
+        tr("The running simulation has no %s to compare with right now (has the scene changed?)."),
+        symbol.c_str());
     return m;
   }
   const double off = std::abs(answer - expected) / std::max(std::abs(expected), 1e-300);
   m.correct = off <= task.tolerance;
   const std::string percent = format(100 * task.tolerance);
   if (*m.correct)
-    m.feedback = "Right: the simulation has " + symbol + " = " + format(expected) +
-                 ", and you are within " + percent + "% of it.";
+    m.feedback = sentence(tr("Right: the simulation has %s = %s, and you are within %s%% of it."),
+                          symbol.c_str(), format(expected).c_str(), percent.c_str());
   else if (answer != 0 && (answer < 0) != (expected < 0))
     // "200 % too large" for -E would hide the one thing that is wrong.
-    m.feedback = std::string("Not yet: the sign is wrong (") + symbol + " is " +
-                 (expected < 0 ? "negative" : "positive") + " here). Look again.";
+    m.feedback = sentence(expected < 0 ? tr("Not yet: the sign is wrong (%s is negative here). Look again.")
+                                       : tr("Not yet: the sign is wrong (%s is positive here). Look again."),
+                          symbol.c_str());
   else
-    m.feedback = "Not yet: your value is " + format(100 * off) + "% too " +
-                 (answer > expected ? "large" : "small") + " (within " + percent +
-                 "% counts). Measure again.";
+    m.feedback = sentence(
+        answer > expected
+            ? tr("Not yet: your value is %s%% too large (within %s%% counts). Measure again.")
+            : tr("Not yet: your value is %s%% too small (within %s%% counts). Measure again."),
+        format(100 * off).c_str(), percent.c_str());
   return m;
 }
 
@@ -525,19 +546,22 @@ std::string without_emphasis(std::string_view text) {
 Marking mark_option(const LessonTask& task, std::size_t option) {
   Marking m;
   if (option >= task.options.size()) {
-    m.feedback = "Pick one of the " + std::to_string(task.options.size()) + " options.";
+    m.feedback = sentence(tr("Pick one of the %zu options."), task.options.size());
     return m;
   }
   if (task.kind == LessonTask::Kind::predict) {
-    m.feedback = "Your prediction: \u201c" + task.options[option] + "\u201d." +
-                 (task.outcome.empty() ? "" : " Now run it and compare: " + task.outcome);
+    const std::string picked = tr(task.options[option].c_str());
+    m.feedback = task.outcome.empty()
+                     ? sentence(tr("Your prediction: \u201c%s\u201d."), picked.c_str())
+                     : sentence(tr("Your prediction: \u201c%s\u201d. Now run it and compare: %s"),
+                                picked.c_str(), tr(task.outcome.c_str()));
     return m;
   }
   m.correct = task.answer && option == *task.answer;
   if (option < task.feedback.size())
     m.feedback = task.feedback[option];
   else
-    m.feedback = *m.correct ? "Right." : "Not this one: look again and try another.";
+    m.feedback = *m.correct ? tr("Right.") : tr("Not this one: look again and try another.");
   return m;
 }
 

@@ -339,7 +339,7 @@ double LessonSession::reading(LiveRun& run) const {
 Marking LessonSession::answer_number(LiveRun& run, double value) {
   const LessonStep* s = current_step();
   if (!s || !s->task || s->task->kind != LessonTask::Kind::measure) {
-    marking_ = Marking{std::nullopt, "This step asks for no number."};
+    marking_ = Marking{std::nullopt, tr("This step asks for no number.")};
     return *marking_;
   }
   ++answer_count_;
@@ -359,7 +359,7 @@ Marking LessonSession::answer_number(LiveRun& run, double value) {
 Marking LessonSession::answer_option(std::size_t option, bool* play) {
   const LessonStep* s = current_step();
   if (!s || !s->task || s->task->kind == LessonTask::Kind::measure) {
-    marking_ = Marking{std::nullopt, "This step has no options to pick from."};
+    marking_ = Marking{std::nullopt, tr("This step has no options to pick from.")};
     return *marking_;
   }
   ++answer_count_;
