@@ -175,7 +175,7 @@ async function main(url) {
   await page.waitForFunction(() => (window.swarmlab.lessonState() || {}).id === 'one-period', null, { timeout: 10_000, polling: 50 }).catch(() => {});
   check('#lesson=<id> opens the shipped lesson', (await api(page, 'lessonState')).id === 'one-period');
   const copied = await api(page, 'copyLink');
-  check('Copy link during a lesson copies the lesson link', copied.endsWith('#lesson=one-period'), copied);
+  check('Copy link during a lesson copies the lesson link, in the language in use', copied.endsWith('#lang=en&lesson=one-period'), copied);
   const sentence = 'lesson link: the text after #lesson= is neither a shipped lesson\'s id (' + listedIds.join(', ') +
     ') nor a lesson written by Share (its JSON in base64url); the link may have been cut short';
   for (const bad of [base64url(Buffer.from('one-period')), 'no-such-lesson', 'x%%y']) {
