@@ -96,7 +96,9 @@ void draw_prose(const std::string& text) {
         const bool cjk = n >= 3 && line.compare(i, 3, "\xE2\xBA\x80") >= 0;
         if (c == '*') {
           emphasis = !emphasis;
+          if (words.back().pieces.empty()) words.back().space_before = spaced;
           words.back().pieces.push_back({"", emphasis});
+          spaced = false;
         } else if (c == ' ') {
           if (!words.back().pieces.empty()) words.emplace_back();
           spaced = true;
