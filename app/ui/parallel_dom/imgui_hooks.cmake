@@ -68,6 +68,36 @@ function(swarmlab_imgui_widgets_with_hooks imgui_dir out_var)
     "    if (g.TestEngineHookItems) ${hook}(&g, id, 6, selected ? \"1\" : \"0\");\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    return pressed; //-V1020\n"
     1)
 
+  # Not a hook: a field gives way to its label. A slider, drag, text or number field or a
+  # combo with its label on the right is narrowed, where the row is too short for both, so
+  # that the label shows whole (a translation's label is longer); never below 40% of the row
+  # (a longer label is still cut off, and the parallel DOM says so). Where both fit, as in
+  # English, nothing changes.
+  _swarmlab_hook_edit(
+    "extern void ${hook}(ImGuiContext* ctx, ImGuiID id, int kind, const char* value);  // Swarm Lab: app/ui/parallel_dom\n"
+    "extern void ${hook}(ImGuiContext* ctx, ImGuiID id, int kind, const char* value);  // Swarm Lab: app/ui/parallel_dom\nstatic float SwarmlabRoomForLabel(float w, float label_w)  // Swarm Lab: the field gives way to its label\n{\n    ImGuiContext& g = *GImGui;\n    ImGuiWindow* window = g.CurrentWindow;\n    if (label_w <= 0.0f || w <= 0.0f)\n        return w;\n    const float row = window->WorkRect.Max.x - window->DC.CursorPos.x;\n    const float room = row - g.Style.ItemInnerSpacing.x - label_w;\n    return ImMin(w, ImMax(room, ImMin(w, ImMax(3.0f * g.FontSize, 0.4f * row))));\n}\n"
+    1)
+  # DragScalar, SliderScalar
+  _swarmlab_hook_edit(
+    "    const float w = CalcItemWidth();\n\n    const ImVec2 label_size = CalcTextSize(label, NULL, true);\n"
+    "    const ImVec2 label_size = CalcTextSize(label, NULL, true);\n    const float w = SwarmlabRoomForLabel(CalcItemWidth(), label_size.x);\n"
+    2)
+  # BeginCombo
+  _swarmlab_hook_edit(
+    "    const float w = (flags & ImGuiComboFlags_NoPreview) ? arrow_size : CalcItemWidth();\n"
+    "    const float w = (flags & ImGuiComboFlags_NoPreview) ? arrow_size : SwarmlabRoomForLabel(CalcItemWidth(), label_size.x);\n"
+    1)
+  # InputTextEx (a single line)
+  _swarmlab_hook_edit(
+    "    const ImVec2 frame_size = CalcItemSize(size_arg, CalcItemWidth(), (is_multiline"
+    "    const ImVec2 frame_size = CalcItemSize(size_arg, is_multiline ? CalcItemWidth() : SwarmlabRoomForLabel(CalcItemWidth(), label_size.x), (is_multiline"
+    1)
+  # InputScalar with its - and + buttons
+  _swarmlab_hook_edit(
+    "        SetNextItemWidth(ImMax(1.0f, CalcItemWidth() - (button_size + style.ItemInnerSpacing.x) * 2));\n"
+    "        SetNextItemWidth(ImMax(1.0f, SwarmlabRoomForLabel(CalcItemWidth(), CalcTextSize(label, NULL, true).x) - (button_size + style.ItemInnerSpacing.x) * 2));\n"
+    1)
+
   # Not a hook: the language's decimal separator (app/i18n). ImGui 1.86 formats and reads
   # numbers with the C library in the "C" locale; Swarm Lab shows a float or double in a field
   # or on a slider with the context's PlatformLocaleDecimalPoint (',' in German) and reads a
