@@ -60,8 +60,10 @@ void ParallelDom::item_added(ImGuiContext& g, unsigned id, float x0, float y0, f
   d.root = w->RootWindow->ID;
   d.sequence = sequence_++;
   // Sideways only: there are no horizontal scrollbars, while scrolling hides items above and
-  // below. 1 px of slack for rounding.
-  d.sticks_out = (x1 > d.cx1 + 1 || x0 < d.cx0 - 1) && y1 > d.cy0 && y0 < d.cy1;
+  // below. The slack: a selectable's box reaches half the item spacing past what it shows
+  // (ImGui's Selectable), and 1 px for rounding.
+  const float slack = 1 + 0.5f * g.Style.ItemSpacing.x;
+  d.sticks_out = (x1 > d.cx1 + slack || x0 < d.cx0 - slack) && y1 > d.cy0 && y0 < d.cy1;
   drawn_.push_back(d);
   Known& k = known_[id];
   k.window = w->ID;
@@ -120,6 +122,13 @@ bool ParallelDom::unnamed(unsigned id) {
   if (!k.label.empty() || !k.tooltip.empty() || !k.name.empty() || k.drawn_for_name) return false;
   k.drawn_for_name = true;
   return true;
+}
+
+void ParallelDom::item_tab(unsigned id, bool selected) {
+  if (!id) return;
+  ItemFacts& f = known_[id].facts;
+  f.value_kind = ValueKind::none;  // not a list's option
+  f.is_tab = true, f.tab_selected = selected;
 }
 
 void ParallelDom::item_name(unsigned id, std::string_view name) {

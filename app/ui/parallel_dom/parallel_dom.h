@@ -41,6 +41,8 @@ class ParallelDom {
   /// Whether an item out of sight still needs drawing once for its name (ImGui's clipping asks;
   /// imgui_hooks.cmake): true once for an item not yet named, then false.
   bool unnamed(unsigned id);
+  /// The item just drawn is a tab (a selectable of a wrapping tab strip, wrapping_tabs.h).
+  void item_tab(unsigned id, bool selected);
   /// The name of an item that shows no label (item_tooltip.h, name_item).
   void item_name(unsigned id, std::string_view name);
   /// Text a screen reader reads in place (a lesson's heading, its step, a question, feedback).
