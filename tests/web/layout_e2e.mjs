@@ -17,6 +17,9 @@ import { join } from 'node:path';
 const { check, openApp, launchBrowser, runSuite, outDir, pageErrors, consoleErrors } = harness;
 
 const shotDir = join(outDir, 'layout');
+// LAYOUT_LANG=de (fr, zh-CN...) looks at a real language instead, in the dark theme (the View
+// menu's name is the pseudo-language's); LAYOUT_SIZES='[[390,844]]' at fewer sizes.
+const LANG = process.env.LAYOUT_LANG || 'x-pseudo';
 const SIZES = process.env.LAYOUT_SIZES ? JSON.parse(process.env.LAYOUT_SIZES) : [[390, 844], [844, 390], [1024, 768], [1366, 768], [1280, 720], [1920, 1080]];
 
 // The pseudo-language's text for an English one, by the rule of app/i18n/translator.cpp
@@ -112,11 +115,13 @@ async function checkSize(page, who, W, H, theme) {
       }
       if (!(await selected(page, name))) { found.push(`${label}: the tab "${name}" would not open`); continue; }
       s = await settled(page, W, H);
-      if (process.env.LAYOUT_DEBUG) console.log('      tab', name, JSON.stringify(await page.evaluate(() => [...document.querySelectorAll('#parallel-dom [role=tab]')].map((e) => e.textContent + ':' + e.getAttribute('aria-selected')))));
       found.push(...problems(await mirrored(page), `${label} tab "${name}"`));
     }
   }
-  const file = `layout-${W}x${H}-${theme}.png`;
+  // The pointer off the panels (over the view), so that no tooltip covers them.
+  await page.mouse.move(s.view.x + s.view.width / 2, s.view.y + s.view.height / 2);
+  await settled(page, W, H);
+  const file = `layout-${LANG === 'x-pseudo' ? '' : LANG + '-'}${W}x${H}-${theme}.png`;
   await page.screenshot({ path: join(shotDir, file) });
   console.log(`      screenshot -> build/web-test/layout/${file}`);
   check(`${label} (${s.layout}): nothing cut off, nothing overlapping`, found.length === 0,
@@ -126,8 +131,12 @@ async function checkSize(page, who, W, H, theme) {
 async function main(url) {
   mkdirSync(shotDir, { recursive: true });
   await launchBrowser({ width: 1280, height: 720 });
-  const { page, started, error } = await openApp(url + '#lang=x-pseudo', 'layout');
-  if (!check('the app starts in the pseudo-language', started, error || '')) return;
+  const { page, started, error } = await openApp(`${url}#lang=${LANG}`, 'layout');
+  if (!check(`the app starts in ${LANG}`, started, error || '')) return;
+  if (LANG !== 'x-pseudo') {
+    for (const [W, H] of SIZES) await checkSize(page, person(page, 'mouse'), W, H, 'dark');
+    return;
+  }
   const who = person(page, 'mouse');
   await page.waitForFunction((n) => !!document.querySelector(`#parallel-dom [aria-label="${n}"]`) ||
                              [...document.querySelectorAll('#parallel-dom button')].some((e) => e.textContent === n),
