@@ -32,9 +32,12 @@ void show_refusal(AppState& state, Section section) {
 }
 
 void help_marker(const char* text) {
-  ImGui::SameLine();
+  // On the next line where the row is full, never broken over lines itself ("(", "?", ")").
+  same_line_if_fits(ImGui::CalcTextSize("(?)").x);
   mirror_text(ItemRole::paragraph, text);  // a screen reader reads the help where it stands
+  ImGui::PushTextWrapPos(-1.0f);
   ImGui::TextDisabled("(?)");
+  ImGui::PopTextWrapPos();
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28);
@@ -64,9 +67,10 @@ void draw_scenario_panel(AppState& state) {
       if (ImGui::CalcTextSize(name.c_str()).x <= room) {
         picked = ImGui::Selectable(label.c_str(), current);
       } else {
+        const ImVec2 at = ImGui::GetCursorScreenPos();  // where a selectable puts its text
         picked = ImGui::Selectable(("###" + s.id).c_str(), current, 0, ImVec2(0, text_size.y));
         name_item(name);
-        ImGui::GetWindowDrawList()->AddText(nullptr, 0, ImGui::GetItemRectMin(),
+        ImGui::GetWindowDrawList()->AddText(nullptr, 0, at,
                                             ImGui::GetColorU32(ImGuiCol_Text), name.c_str(),
                                             nullptr, room);
       }
