@@ -96,6 +96,30 @@ const isSelected = (n) => [...document.querySelectorAll('#parallel-dom [role=tab
   .some((e) => e.textContent === n && e.getAttribute('aria-selected') === 'true');
 const selected = (page, name) => page.evaluate(isSelected, name);
 
+// Each panel scrolled through from top to bottom as a person does it, with the wheel over it:
+// what is out of sight is not drawn, so it is looked at where it shows.
+async function scrolledThrough(page, W, H, where) {
+  const found = [];
+  const panel = (st, name) => st.panels.find((p) => p.name === name);
+  for (const { name } of (await appState(page)).panels) {
+    // A turn of the wheel scrolls ImGui a fixed step: as many as make most of a panel's height.
+    let notchPx = 0;
+    for (let steps = 0; steps < 40; ++steps) {
+      const p = panel(await appState(page), name);
+      if (!p || p.scroll >= p.scroll_max - 1) break;
+      await page.mouse.move(p.x + p.width / 2, p.y + p.height / 2);
+      const notches = notchPx > 0 ? Math.max(1, Math.floor((0.8 * p.height) / notchPx)) : 1;
+      for (let i = 0; i < notches; ++i) await page.mouse.wheel(0, 100);
+      const after = panel(await until(page, (st, a) => st.panels.some((q) => q.name === a.name && q.scroll !== a.scroll),
+                                      { name, scroll: p.scroll }), name);
+      if (!notchPx && after) notchPx = after.scroll - p.scroll;
+      await settled(page, W, H);
+      found.push(...problems(await mirrored(page), `${where}, ${name} scrolled down`));
+    }
+  }
+  return found;
+}
+
 async function checkSize(page, who, W, H, theme) {
   await page.setViewportSize({ width: W, height: H });
   let s = await settled(page, W, H);
@@ -103,6 +127,7 @@ async function checkSize(page, who, W, H, theme) {
   const found = [];
   if (s.layout === 'wide') {
     found.push(...problems(await mirrored(page), label));
+    found.push(...await scrolledThrough(page, W, H, label));
   } else {
     // Compact: the drawer's tabs, each opened as a person opens it.
     const tabs = (await mirrored(page)).items.filter((it) => it.role === 'tab');
@@ -116,6 +141,7 @@ async function checkSize(page, who, W, H, theme) {
       if (!(await selected(page, name))) { found.push(`${label}: the tab "${name}" would not open`); continue; }
       s = await settled(page, W, H);
       found.push(...problems(await mirrored(page), `${label} tab "${name}"`));
+      found.push(...await scrolledThrough(page, W, H, `${label} tab "${name}"`));
     }
   }
   // The pointer off the panels (over the view), so that no tooltip covers them.
@@ -124,8 +150,11 @@ async function checkSize(page, who, W, H, theme) {
   const file = `layout-${LANG === 'x-pseudo' ? '' : LANG + '-'}${W}x${H}-${theme}.png`;
   await page.screenshot({ path: join(shotDir, file) });
   console.log(`      screenshot -> build/web-test/layout/${file}`);
-  check(`${label} (${s.layout}): nothing cut off, nothing overlapping`, found.length === 0,
-        found.length ? '\n        ' + found.join('\n        ') : '');
+  // One line per item (an item cut off at several scroll positions is reported where first seen).
+  const seen = new Set();
+  const once = found.filter((f) => { const key = f.replace(/^[^:]*: /, '').replace(/ at \d.*$/, ''); return !seen.has(key) && seen.add(key); });
+  check(`${label} (${s.layout}): nothing cut off, nothing overlapping`, once.length === 0,
+        once.length ? '\n        ' + once.join('\n        ') : '');
 }
 
 async function main(url) {

@@ -82,20 +82,23 @@ void draw_simulation_panel(AppState& state) {
       tr("Run other methods from the same initial state in lockstep. With 'analytic' "
          "among them, its positions are drawn as hollow ghosts and the Compare plots show "
          "each numerical method's position and energy errors."));
+  // One row of checkboxes, wrapping where the next does not fit.
+  bool first = true;
   for (const swarm::MethodInfo& info : swarm::method_table()) {
     const swarm::Method m = info.id;
     if (m == d.method) continue;
+    const std::string name(swarm::name_of(m));
+    if (!first) same_line_if_fits(radio_width(name.c_str()));
+    first = false;
     bool on = std::find(d.compare.begin(), d.compare.end(), m) != d.compare.end();
-    if (ImGui::Checkbox(std::string(swarm::name_of(m)).c_str(), &on)) {
+    if (ImGui::Checkbox(name.c_str(), &on)) {
       if (on)
         d.compare.push_back(m);
       else
         d.compare.erase(std::find(d.compare.begin(), d.compare.end(), m));
       changed = true;
     }
-    ImGui::SameLine();
   }
-  ImGui::NewLine();
   // A method compared with itself tells nothing: drop it when it becomes the primary.
   if (changed)
     d.compare.erase(std::remove(d.compare.begin(), d.compare.end(), d.method), d.compare.end());
