@@ -39,21 +39,29 @@ void row(const char* name, const char* printed_value, const char* equation) {
 }
 
 /// The rows as a table of name-value pairs, as many pairs across as the width holds (a strip
-/// under the view is short): each pair as wide as the widest name and the widest value, so a
-/// long value (a translation's) takes fewer pairs across rather than pushing one out of sight.
+/// under the view is short): at most one per 14 font sizes, fewer where the columns, each as
+/// wide as its longest name or value, would not fit (a translation's longer values), so that
+/// no pair is pushed out of sight.
 void lay_out(const char* id) {
   const float font = ImGui::GetFontSize();
-  const ImGuiStyle& style = ImGui::GetStyle();
-  float name_width = 0, value_width = 0;
-  for (const Row& r : rows()) {
-    name_width = std::max(name_width, ImGui::CalcTextSize(r.name.c_str()).x);
-    value_width = std::max(value_width, ImGui::CalcTextSize(r.value.c_str()).x);
-  }
-  const float pair_width = std::max(14 * font, name_width + value_width + 4 * style.CellPadding.x);
+  const float padding = 2 * ImGui::GetStyle().CellPadding.x;
   const float room = ImGui::GetContentRegionAvail().x;
-  const int pairs = std::clamp(int(room / pair_width), 1, 6);
+  const std::vector<Row>& all = rows();
+  auto width_of = [&](int pairs) {  // the table's width with `pairs` pairs across
+    std::vector<float> name(std::size_t(pairs), 0.0f), value(std::size_t(pairs), 0.0f);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const std::size_t column = i % std::size_t(pairs);
+      name[column] = std::max(name[column], ImGui::CalcTextSize(all[i].name.c_str()).x);
+      value[column] = std::max(value[column], ImGui::CalcTextSize(all[i].value.c_str()).x);
+    }
+    float width = 0;
+    for (int c = 0; c < pairs; ++c) width += name[std::size_t(c)] + value[std::size_t(c)] + 2 * padding;
+    return width;
+  };
+  int pairs = std::clamp(int(room / (14 * font)), 1, 6);
+  while (pairs > 1 && width_of(pairs) > room) --pairs;
   // One pair across and still too wide: the value column takes the rest and wraps.
-  const bool wrap = pairs == 1 && pair_width > room;
+  const bool wrap = pairs == 1 && width_of(1) > room;
   const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
   // Cells fit their text (a panel's text otherwise wraps at its edge: panel_windows.cpp).
   ImGui::PushTextWrapPos(-1.0f);
