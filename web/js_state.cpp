@@ -50,6 +50,7 @@ nlohmann::json app_state_json(swarmlab::App& app) {
     nlohmann::json panel = rect_json(p.rect.x, p.rect.y, p.rect.width, p.rect.height);
     panel["name"] = p.name;
     panel["scroll"] = p.scroll;
+    panel["scroll_max"] = p.scroll_max;
     j["panels"].push_back(panel);
   }
   // The menus' titles in the bar and the windows floating over the rest, with their close

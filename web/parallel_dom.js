@@ -156,6 +156,8 @@
     setAttr(el, 'aria-disabled', item.disabled ? 'true' : null);
     // Scrolled out of its window: the rectangle is where it would be (Tab scrolls it in).
     setAttr(el, 'data-clipped', item.clipped ? 'true' : null);
+    // Its text is cut off, or it sticks out of its window sideways (mirrored_item.h).
+    setAttr(el, 'data-cut', item.cut ? 'true' : null);
     var s = el.style;
     var left = item.x + 'px', top = item.y + 'px';
     var width = Math.max(item.width, 1) + 'px', height = Math.max(item.height, 1) + 'px';
@@ -180,6 +182,8 @@
     if (text === lastText) return;
     lastText = text;
     var frame = JSON.parse(text);
+    // Plain text cut off (no item's label): for the layout test (tests/web/layout_e2e.mjs).
+    Module.swarmlabCutText = frame.cut_text || [];
     if (!root) makeRoot();
     var seenText = new Map(), alive = new Set(), previous = new Map(); // section -> last placed
     frame.items.forEach(function (item) {

@@ -73,6 +73,7 @@ struct Layout {
     std::string name;
     ScreenRect rect;
     float scroll = 0;  ///< pixels scrolled down
+    float scroll_max = 0;  ///< pixels it can scroll down at most
   };
   std::vector<Panel> panels;  ///< every window drawn this frame, for swarmlab.state()
   /// For swarmlab.state() too: the menus' titles in the menu bar, and the windows floating over

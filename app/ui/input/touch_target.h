@@ -21,6 +21,12 @@ inline float target_width(const char* label) {
       ImGui::GetFrameHeight());
 }
 
+/// The width of a radio button or checkbox labelled `label`: its box and its text.
+inline float radio_width(const char* label) {
+  return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+         ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
 /// Continues the row when an item `width` wide still fits beside the last one, else starts the
 /// next row: on a phone a row of buttons wraps instead of cutting off its end.
 inline void same_line_if_fits(float width) {

@@ -9,6 +9,7 @@
 
 #include "i18n/translator.h"
 #include "swarm/physics/wall.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {
@@ -55,9 +56,9 @@ void draw_container_panel(AppState& state) {
     changed |= input_double(tr_id("radius R"), &*d.container_radius);
     int mode = d.collisions == swarm::CollisionMode::paper ? 0 : 1;
     ImGui::TextUnformatted(tr("Wall hits"));
-    ImGui::SameLine();
+    same_line_if_fits(radio_width(tr_id("paper")));
     changed |= ImGui::RadioButton(tr_id("paper"), &mode, 0);
-    ImGui::SameLine();
+    same_line_if_fits(radio_width(tr_id("exact")));
     changed |= ImGui::RadioButton(tr_id("exact"), &mode, 1);
     d.collisions = mode == 0 ? swarm::CollisionMode::paper : swarm::CollisionMode::exact;
     help_marker(

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "i18n/translator.h"
+#include "ui/input/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {
@@ -100,11 +101,11 @@ void draw_forces_panel(AppState& state) {
 
   int drag = !d.drag ? 0 : d.drag->mass_proportional() ? 1 : 2;
   ImGui::TextUnformatted(tr("Drag"));
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("none")));
   bool drag_changed = ImGui::RadioButton(tr_id("none"), &drag, 0);
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("gamma")));
   drag_changed |= ImGui::RadioButton(tr_id("gamma"), &drag, 1);
-  ImGui::SameLine();
+  same_line_if_fits(radio_width("b"));
   drag_changed |= ImGui::RadioButton("b", &drag, 2);
   help_marker(
       tr("gamma: a force -gamma m v on every particle (proportional to its mass): still solved "

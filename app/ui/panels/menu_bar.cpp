@@ -41,6 +41,12 @@ float draw_menu_bar(AppState& state) {
   s.layout.menus.clear();
   if (ImGui::BeginMainMenuBar()) {
     float x0 = ImGui::GetCursorScreenPos().x;
+    // Where the bar is too short for every title (a phone, a longer language), Help goes
+    // into the View menu rather than off the screen's edge.
+    float titles = x0;
+    for (const char* title : {tr_id("Scenario"), tr_id("View"), tr_id("Lessons"), tr_id("Help")})
+      titles += ImGui::CalcTextSize(title, nullptr, true).x + 2 * ImGui::GetStyle().ItemSpacing.x;
+    const bool help_in_view = titles > viewport->Pos.x + viewport->Size.x;
     if (ImGui::BeginMenu(tr_id("Scenario"))) {
       for (const ShippedPreset& p : s.shipped)
         if (ImGui::MenuItem(tr_id(p.preset.name.empty() ? p.id.c_str() : p.preset.name.c_str()),
@@ -76,13 +82,17 @@ float draw_menu_bar(AppState& state) {
       }
       draw_presentation_menu_items(s);
       draw_language_menu(s);
+      if (help_in_view) {
+        ImGui::Separator();
+        if (ImGui::MenuItem(tr_id("Help"))) s.layout.help = !s.layout.help;
+      }
       ImGui::EndMenu();
     }
     record_menu(s, "View", x0);
     x0 = ImGui::GetCursorScreenPos().x;
     draw_lessons_menu(s);
     record_menu(s, "Lessons", x0);
-    if (ImGui::MenuItem(tr_id("Help"))) s.layout.help = !s.layout.help;
+    if (!help_in_view && ImGui::MenuItem(tr_id("Help"))) s.layout.help = !s.layout.help;
     const std::string title = std::string("Swarm Lab  \u2014  ") + tr(s.preset.name.c_str());
     const float w = ImGui::CalcTextSize(title.c_str()).x;
     // On a narrow screen the title would run into the menus: the page says what runs.

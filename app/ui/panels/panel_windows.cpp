@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "i18n/translator.h"
+#include "ui/input/wrapping_tabs.h"
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/window_placement.h"
@@ -18,6 +22,16 @@ const char* english_of(const char* label) {
   const char* id = std::strstr(label, "###");
   return id ? id + 3 : label;
 }
+
+/// A panel's lines of text wrap at its right edge rather than run past it (a translation's
+/// are longer); where it fits, a line shows as before. Tables keep their cells unwrapped
+/// (readouts.cpp, particle_card.cpp, system_panel.cpp).
+struct WrapAtEdge {
+  WrapAtEdge() { ImGui::PushTextWrapPos(0); }
+  ~WrapAtEdge() { ImGui::PopTextWrapPos(); }
+  WrapAtEdge(const WrapAtEdge&) = delete;
+  WrapAtEdge& operator=(const WrapAtEdge&) = delete;
+};
 
 /// The controls, section by section (the wide layout's left panel, the drawer's first tab).
 void draw_controls(AppState& s) {
@@ -62,6 +76,7 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
     place(l.controls);
     if (ImGui::Begin(tr_id("Controls"), &s.layout.controls, panel)) {
       touch_scroll(touch);
+      WrapAtEdge wrap;
       // The lesson at the top, its text box, task and buttons within 60% of the panel.
       if (s.lessons.open_lesson() &&
           ImGui::CollapsingHeader(tr_id("Lesson"), ImGuiTreeNodeFlags_DefaultOpen))
@@ -76,6 +91,7 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
     place(l.controls);
     if (ImGui::Begin(tr_id("Lesson"), nullptr, panel)) {
       touch_scroll(touch);
+      WrapAtEdge wrap;
       draw_lesson(s, ImGui::GetContentRegionAvail().y);
     }
     record_panel(s, "Lesson");
@@ -85,6 +101,7 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
     place(l.plots);
     if (ImGui::Begin(tr_id("Plots"), &s.layout.plots, panel)) {
       touch_scroll(touch);
+      WrapAtEdge wrap;
       draw_instruments(s);
       draw_plots_panel(s);
     }
@@ -95,36 +112,58 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
     // Compact: one drawer beside or under the view, its parts as tabs, each scrolling alone.
     place(l.drawer);
     if (ImGui::Begin(tr_id("Panels###drawer"), nullptr, panel | ImGuiWindowFlags_NoTitleBar)) {
-      if (ImGui::BeginTabBar("drawer", ImGuiTabBarFlags_FittingPolicyScroll)) {
-        auto tab = [&](const char* name, bool shown, void (*body)(AppState&)) {
-          // `name` is a tr_id() label: the child and the record keep its English.
-          if (!shown || !ImGui::BeginTabItem(name)) return;
-          if (ImGui::BeginChild(english_of(name))) {
-            touch_scroll(touch);
-            body(s);
-          }
-          record_panel(s, english_of(name));
-          ImGui::EndChild();
-          ImGui::EndTabItem();
-        };
-        // A lesson that opens or moves to another step brings its tab to the front.
-        const std::pair<const Lesson*, std::size_t> step{s.lessons.open_lesson(), s.lessons.step()};
-        const ImGuiTabItemFlags lesson_flags =
-            step.first && step != *lesson_tab_step ? ImGuiTabItemFlags_SetSelected : 0;
-        *lesson_tab_step = step;
-        if (step.first && ImGui::BeginTabItem(tr_id("Lesson"), nullptr, lesson_flags)) {
-          if (ImGui::BeginChild("Lesson")) {
-            touch_scroll(touch);
+      // The drawer's parts: the lesson (while one is open), then the panels shown.
+      struct Part {
+        const char* label;  // a tr_id() label: the child and the record keep its English
+        void (*body)(AppState&);
+      };
+      std::vector<Part> parts;
+      const std::pair<const Lesson*, std::size_t> step{s.lessons.open_lesson(), s.lessons.step()};
+      if (step.first) parts.push_back({tr_id("Lesson"), nullptr});
+      if (s.layout.controls) parts.push_back({tr_id("Controls"), draw_controls});
+      if (s.layout.plots) parts.push_back({tr_id("Plots"), draw_plots_panel});
+      parts.push_back({tr_id("Read-outs"), draw_readouts});
+      parts.push_back({tr_id("Instruments"), draw_instruments});
+      // A lesson that opens or moves to another step brings its tab to the front.
+      const bool lesson_to_front = step.first && step != *lesson_tab_step;
+      *lesson_tab_step = step;
+      static std::string open_part;  // the English name of the part open, across both ways
+      if (lesson_to_front) open_part = "Lesson";
+      auto body = [&](const Part& part) {
+        const char* name = english_of(part.label);
+        open_part = name;
+        if (ImGui::BeginChild(name)) {
+          touch_scroll(touch);
+          WrapAtEdge wrap;
+          if (part.body)
+            part.body(s);
+          else
             draw_lesson(s, ImGui::GetContentRegionAvail().y);
-          }
-          record_panel(s, "Lesson");
-          ImGui::EndChild();
+        }
+        record_panel(s, name);
+        ImGui::EndChild();
+      };
+      std::vector<const char*> labels;
+      for (const Part& part : parts) labels.push_back(part.label);
+      // Where the tabs do not fit in one row they wrap onto more (wrapping_tabs.h).
+      static bool wrapped_last = false;
+      if (!tabs_fit(labels)) {
+        int open = 0;
+        for (int i = 0; i < int(parts.size()); ++i)
+          if (open_part == english_of(parts[std::size_t(i)].label)) open = i;
+        body(parts[std::size_t(draw_wrapping_tabs(labels, open))]);
+        wrapped_last = true;
+      } else if (ImGui::BeginTabBar("drawer", ImGuiTabBarFlags_FittingPolicyScroll)) {
+        for (const Part& part : parts) {
+          const char* name = english_of(part.label);
+          const bool to_front = (lesson_to_front && std::strcmp(name, "Lesson") == 0) ||
+                                (wrapped_last && open_part == name);
+          if (!ImGui::BeginTabItem(part.label, nullptr, to_front ? ImGuiTabItemFlags_SetSelected : 0))
+            continue;
+          body(part);
           ImGui::EndTabItem();
         }
-        tab(tr_id("Controls"), s.layout.controls, draw_controls);
-        tab(tr_id("Plots"), s.layout.plots, draw_plots_panel);
-        tab(tr_id("Read-outs"), true, draw_readouts);
-        tab(tr_id("Instruments"), true, draw_instruments);
+        wrapped_last = false;
         ImGui::EndTabBar();
       }
     }

@@ -23,7 +23,9 @@ void row(const char* name, const std::string& value, const char* meaning) {
   ImGui::TextUnformatted(name);
   bool hovered = ImGui::IsItemHovered();
   ImGui::TableNextColumn();
+  ImGui::PushTextWrapPos(0);  // a long value (a translation's sentence) wraps in its column
   ImGui::TextUnformatted(value.c_str());
+  ImGui::PopTextWrapPos();
   hovered |= ImGui::IsItemHovered();
   if (hovered) {
     ImGui::BeginTooltip();
@@ -63,7 +65,14 @@ void draw_particle_card(AppState& state) {
   if (!ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (draw_hidden_by_lesson(state, LessonHidden::card)) return;
   const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
-  if (!ImGui::BeginTable("particle_card", 2, flags)) return;
+  // The names as wide as they are (not wrapped), the values in the rest of the width.
+  ImGui::PushTextWrapPos(-1.0f);
+  if (!ImGui::BeginTable("particle_card", 2, flags)) {
+    ImGui::PopTextWrapPos();
+    return;
+  }
+  ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
   row("m", number("%.5g", o.m), tr("Its mass. Its spring to the centre of mass is k = J M m."));
   row("|r \u2212 R|", number("%.5g", o.distance), tr("Distance from the centre of mass R."));
   row(tr("speed"),
@@ -90,6 +99,7 @@ void draw_particle_card(AppState& state) {
            "period or amplitude."));
   }
   ImGui::EndTable();
+  ImGui::PopTextWrapPos();
 }
 
 }  // namespace swarmlab

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "i18n/translator.h"
 #include "swarm/physics/diagnostics.h"
@@ -19,27 +20,80 @@
 namespace swarmlab {
 namespace {
 
+/// One name and value, and the equation behind it (shown on hover).
+struct Row {
+  std::string name, value, equation;
+};
+
+/// The rows of this frame, laid out once all are known (lay_out).
+std::vector<Row>& rows() {
+  static std::vector<Row> all;
+  return all;
+}
+
 /// One name and value: two cells of the table, which wraps to its next row by itself. The
 /// caller translates the name and the equation; the value's decimal points are written as the
 /// language writes them.
 void row(const char* name, const char* printed_value, const char* equation) {
-  const std::string shown = translator().numbers(printed_value);
-  const char* value = shown.c_str();
-  // A screen reader reads the row as it is shown (the parallel DOM keeps it up to date).
-  mirror_text(ItemRole::paragraph, std::string(name) + " = " + value);
-  ImGui::TableNextColumn();
-  ImGui::TextUnformatted(name);
-  bool hovered = ImGui::IsItemHovered();
-  ImGui::TableNextColumn();
-  ImGui::TextUnformatted(value);
-  hovered |= ImGui::IsItemHovered();
-  if (hovered) {
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 26);
-    ImGui::TextUnformatted(equation);
+  rows().push_back({name, translator().numbers(printed_value), equation});
+}
+
+/// The rows as a table of name-value pairs, as many pairs across as the width holds (a strip
+/// under the view is short): at most one per 14 font sizes, fewer where the columns, each as
+/// wide as its longest name or value, would not fit (a translation's longer values), so that
+/// no pair is pushed out of sight.
+void lay_out(const char* id) {
+  const float font = ImGui::GetFontSize();
+  const float padding = 2 * ImGui::GetStyle().CellPadding.x;
+  const float room = ImGui::GetContentRegionAvail().x;
+  const std::vector<Row>& all = rows();
+  auto width_of = [&](int pairs) {  // the table's width with `pairs` pairs across
+    std::vector<float> name(std::size_t(pairs), 0.0f), value(std::size_t(pairs), 0.0f);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const std::size_t column = i % std::size_t(pairs);
+      name[column] = std::max(name[column], ImGui::CalcTextSize(all[i].name.c_str()).x);
+      value[column] = std::max(value[column], ImGui::CalcTextSize(all[i].value.c_str()).x);
+    }
+    float width = 0;
+    for (int c = 0; c < pairs; ++c) width += name[std::size_t(c)] + value[std::size_t(c)] + 2 * padding;
+    return width;
+  };
+  int pairs = std::clamp(int(room / (14 * font)), 1, 6);
+  while (pairs > 1 && width_of(pairs) > room) --pairs;
+  // One pair across and still too wide: the value column takes the rest and wraps.
+  const bool wrap = pairs == 1 && width_of(1) > room;
+  const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
+  // Cells fit their text (a panel's text otherwise wraps at its edge: panel_windows.cpp).
+  ImGui::PushTextWrapPos(-1.0f);
+  if (!ImGui::BeginTable(id, 2 * pairs, flags)) {
     ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
+    return;
   }
+  if (wrap) {
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+  }
+  for (const Row& r : rows()) {
+    // A screen reader reads the row as it is shown (the parallel DOM keeps it up to date).
+    mirror_text(ItemRole::paragraph, r.name + " = " + r.value);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(r.name.c_str());
+    bool hovered = ImGui::IsItemHovered();
+    ImGui::TableNextColumn();
+    if (wrap) ImGui::PushTextWrapPos(0);
+    ImGui::TextUnformatted(r.value.c_str());
+    if (wrap) ImGui::PopTextWrapPos();
+    hovered |= ImGui::IsItemHovered();
+    if (hovered) {
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(font * 26);
+      ImGui::TextUnformatted(r.equation.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
+    }
+  }
+  ImGui::EndTable();
+  ImGui::PopTextWrapPos();
 }
 
 /// Wall hits per unit of simulated time over the plots' averaging window (or the whole run).
@@ -146,10 +200,7 @@ void draw_readouts(AppState& state) {
   const double L = swarm::angular_momentum_cm(s).norm();
 
   char value[96];
-  const ImGuiTableFlags flags = ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_NoSavedSettings;
-  // As many name-value pairs across as the width holds: a strip under the view is short.
-  const int pairs = std::clamp(int(ImGui::GetContentRegionAvail().x / (14 * ImGui::GetFontSize())), 1, 6);
-  if (!ImGui::BeginTable("readouts", 2 * pairs, flags)) return;
+  rows().clear();
   std::snprintf(value, sizeof value, "%zu", s.particles.size());
   row("N", value, tr("Number of particles."));
   std::snprintf(value, sizeof value, "%.5g", M);
@@ -214,7 +265,7 @@ void draw_readouts(AppState& state) {
   row(tr("step + draw"), value,
       tr("Time per frame spent advancing the simulation, and preparing the "
          "particles for drawing (colours, sizes, upload)."));
-  ImGui::EndTable();
+  lay_out("readouts");
 }
 
 }  // namespace swarmlab

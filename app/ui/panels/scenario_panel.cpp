@@ -32,9 +32,12 @@ void show_refusal(AppState& state, Section section) {
 }
 
 void help_marker(const char* text) {
-  ImGui::SameLine();
+  // On the next line where the row is full, never broken over lines itself ("(", "?", ")").
+  same_line_if_fits(ImGui::CalcTextSize("(?)").x);
   mirror_text(ItemRole::paragraph, text);  // a screen reader reads the help where it stands
+  ImGui::PushTextWrapPos(-1.0f);
   ImGui::TextDisabled("(?)");
+  ImGui::PopTextWrapPos();
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28);
@@ -55,9 +58,23 @@ void draw_scenario_panel(AppState& state) {
       const bool current = state.shipped_id == s.id;
       // A shipped preset's name and description are keys of the string tables; the ID is the
       // file's, whatever the language.
-      const std::string label =
-          (s.preset.name.empty() ? s.id : std::string(tr(s.preset.name.c_str()))) + "###" + s.id;
-      if (ImGui::Selectable(label.c_str(), current)) {
+      const std::string name = s.preset.name.empty() ? s.id : std::string(tr(s.preset.name.c_str()));
+      const std::string label = name + "###" + s.id;
+      // A name longer than the list is wide (a translation's) wraps onto a second line.
+      const float room = ImGui::GetContentRegionAvail().x;
+      const ImVec2 text_size = ImGui::CalcTextSize(name.c_str(), nullptr, false, room);
+      bool picked = false;
+      if (ImGui::CalcTextSize(name.c_str()).x <= room) {
+        picked = ImGui::Selectable(label.c_str(), current);
+      } else {
+        const ImVec2 at = ImGui::GetCursorScreenPos();  // where a selectable puts its text
+        picked = ImGui::Selectable(("###" + s.id).c_str(), current, 0, ImVec2(0, text_size.y));
+        name_item(name);
+        ImGui::GetWindowDrawList()->AddText(nullptr, 0, at,
+                                            ImGui::GetColorU32(ImGuiCol_Text), name.c_str(),
+                                            nullptr, room);
+      }
+      if (picked) {
         // Saving goes to a copy in the working directory, never over the shipped file.
         state.open(s.preset, "my-" + s.id);
         state.shipped_id = s.id;

@@ -82,20 +82,23 @@ void draw_simulation_panel(AppState& state) {
       tr("Run other methods from the same initial state in lockstep. With 'analytic' "
          "among them, its positions are drawn as hollow ghosts and the Compare plots show "
          "each numerical method's position and energy errors."));
+  // One row of checkboxes, wrapping where the next does not fit.
+  bool first = true;
   for (const swarm::MethodInfo& info : swarm::method_table()) {
     const swarm::Method m = info.id;
     if (m == d.method) continue;
+    const std::string name(swarm::name_of(m));
+    if (!first) same_line_if_fits(radio_width(name.c_str()));
+    first = false;
     bool on = std::find(d.compare.begin(), d.compare.end(), m) != d.compare.end();
-    if (ImGui::Checkbox(std::string(swarm::name_of(m)).c_str(), &on)) {
+    if (ImGui::Checkbox(name.c_str(), &on)) {
       if (on)
         d.compare.push_back(m);
       else
         d.compare.erase(std::find(d.compare.begin(), d.compare.end(), m));
       changed = true;
     }
-    ImGui::SameLine();
   }
-  ImGui::NewLine();
   // A method compared with itself tells nothing: drop it when it becomes the primary.
   if (changed)
     d.compare.erase(std::remove(d.compare.begin(), d.compare.end(), d.method), d.compare.end());
@@ -128,7 +131,12 @@ void draw_transport_bar(AppState& state) {
   const std::string play = state.playing ? std::string("\u2016 ") + tr("Pause") + "###play"
                            : at_end      ? std::string("\u25b6 ") + tr("Continue") + "###play"
                                          : std::string("\u25b6 ") + tr("Play") + "###play";
-  if (ImGui::Button(play.c_str(), ImVec2(6.5f * font, 0))) play_or_continue(state);
+  // As wide as the widest of its labels, so that the row does not shift as it changes.
+  const float play_width =
+      std::max({6.5f * font, button_width((std::string("\u2016 ") + tr("Pause")).c_str()),
+                button_width((std::string("\u25b6 ") + tr("Continue")).c_str()),
+                button_width((std::string("\u25b6 ") + tr("Play")).c_str())});
+  if (ImGui::Button(play.c_str(), ImVec2(play_width, 0))) play_or_continue(state);
   item_tooltip("%s", at_end ? tr("Space: the run is over; continue it for another run length")
                             : tr("Space"));
   same_line_if_fits(button_width(tr("Step")));
@@ -137,10 +145,15 @@ void draw_transport_bar(AppState& state) {
   same_line_if_fits(button_width(tr("Reset")));
   if (ImGui::Button(tr_id("Reset"))) state.restart();
   item_tooltip("%s", tr("R: back to t = 0"));
-  same_line_if_fits(9 * font);
-  ImGui::SetNextItemWidth(9 * font);
+  // Wide enough for its text with the longest number it shows ("0.0012").
+  const char* speed_format = tr("speed %.3g /s");
+  char widest_speed[128];
+  std::snprintf(widest_speed, sizeof widest_speed, speed_format, 0.00123);
+  const float speed_width = std::max(9 * font, button_width(widest_speed));
+  same_line_if_fits(speed_width);
+  ImGui::SetNextItemWidth(speed_width);
   const double lo = 1e-3, hi = 1e4;
-  ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, tr("speed %.3g /s"),
+  ImGui::SliderScalar("##speed", ImGuiDataType_Double, &state.speed, &lo, &hi, speed_format,
                       ImGuiSliderFlags_Logarithmic);
   item_tooltip("%s", tr("Simulated time per second of real time (+ and - keys: x2, /2)."));
   same_line_if_fits(ImGui::GetFrameHeight() + button_width(tr("Sound")));
@@ -152,7 +165,9 @@ void draw_transport_bar(AppState& state) {
   // The clock in periods (omega t / 2 pi) would give the period away where a lesson step hides
   // the read-outs: then it shows t alone.
   const double k_shown = state.lessons.hides(LessonHidden::readouts) ? 0 : k;
+  ImGui::PushTextWrapPos(0);  // on a narrow screen the clock wraps rather than run off
   ImGui::TextUnformatted(labels::clock_text(state.preset, k_shown, t).c_str());
+  ImGui::PopTextWrapPos();
   item_tooltip(
       "%s", tr("Simulated time; for an isolated system also in periods of the common oscillation "
                "(\u03c9 = \u221a(J M)), or for J < 0 in e-foldings \u03a9t. In a container the "
@@ -162,7 +177,7 @@ void draw_transport_bar(AppState& state) {
     ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", tr("end of run"));
     item_tooltip("%s", tr("Continue (Space) runs on for as long again."));
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
-    ImGui::SameLine();
+    same_line_if_fits(ImGui::CalcTextSize(tr("(%.0f%% of the speed)")).x);
     ImGui::TextColored(colour_vec4(current_palette().text_warning), tr("(%.0f%% of the speed)"),
                        100 * state.stats.speed_ratio);
     item_tooltip("%s", tr("The steps of this speed do not fit in a frame on this machine."));

@@ -62,9 +62,9 @@ void draw_coupling(AppState& state) {
   int sign = d.J > 0 ? 0 : d.J == 0 ? 1 : 2;
   bool changed = false;
   changed |= ImGui::RadioButton(tr_id("attractive"), &sign, 0);
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("zero")));
   changed |= ImGui::RadioButton(tr_id("zero"), &sign, 1);
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("repulsive")));
   changed |= ImGui::RadioButton(tr_id("repulsive"), &sign, 2);
   if (changed) d.J = sign == 0 ? magnitude : sign == 1 ? 0.0 : -magnitude;
 
@@ -93,6 +93,7 @@ void draw_table(AppState& state, ParticleList& list) {
                       ImVec2(0.15f * font, ImGui::GetStyle().FramePadding.y));
   ImGui::PushStyleVar(ImGuiStyleVar_ItemInnerSpacing, ImVec2(0.15f * font, 0.15f * font));
   ImGui::PushStyleVar(ImGuiStyleVar_CellPadding, ImVec2(0.15f * font, 0.15f * font));
+  ImGui::PushTextWrapPos(-1.0f);  // cells fit their text (panel_windows.cpp wraps the rest)
   if (ImGui::BeginTable("particles", 4, flags)) {
     ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
     ImGui::TableSetupColumn("m", ImGuiTableColumnFlags_WidthFixed,
@@ -136,6 +137,8 @@ void draw_table(AppState& state, ParticleList& list) {
     }
     ImGui::EndTable();
   }
+  ImGui::PopTextWrapPos();
+
   ImGui::PopStyleVar(3);
   if (remove && list.size() > 1) {
     list.erase(list.begin() + std::ptrdiff_t(*remove));
@@ -168,9 +171,9 @@ void draw_generator(AppState& state, swarm::SwarmSpec& g) {
 
   int mass_kind = g.mass_min == g.mass_max ? 0 : 1;
   ImGui::TextUnformatted(tr("Masses"));
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("equal")));
   if (ImGui::RadioButton(tr_id("equal"), &mass_kind, 0)) g.mass_max = g.mass_min, changed = true;
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("uniform in [a, b]")));
   if (ImGui::RadioButton(tr_id("uniform in [a, b]"), &mass_kind, 1) && g.mass_max == g.mass_min)
     g.mass_max = g.mass_min * 1.25, changed = true;
   const float half = 0.5f * (ImGui::GetContentRegionAvail().x - 2 * ImGui::GetFontSize());
@@ -190,9 +193,9 @@ void draw_generator(AppState& state, swarm::SwarmSpec& g) {
   help_marker(tr("Positions are drawn uniformly in a ball of this radius about the origin."));
   int velocity_kind = g.velocities == swarm::SwarmSpec::Velocities::ball ? 0 : 1;
   ImGui::TextUnformatted(tr("Velocities"));
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("uniform ball")));
   changed |= ImGui::RadioButton(tr_id("uniform ball"), &velocity_kind, 0);
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("Maxwellian")));
   changed |= ImGui::RadioButton(tr_id("Maxwellian"), &velocity_kind, 1);
   g.velocities = velocity_kind == 0 ? swarm::SwarmSpec::Velocities::ball
                                     : swarm::SwarmSpec::Velocities::maxwell;
@@ -230,7 +233,7 @@ void draw_system_panel(AppState& state) {
     d.particles = g;
     state.apply_draft(Section::system);
   }
-  ImGui::SameLine();
+  same_line_if_fits(radio_width(tr_id("particle table")));
   ImGui::BeginDisabled(!small && !std::holds_alternative<ParticleList>(d.particles));
   ImGui::RadioButton(tr_id("particle table"), &kind, 1);
   if (ImGui::IsItemClicked() && std::holds_alternative<swarm::SwarmSpec>(d.particles)) {

@@ -11,7 +11,7 @@ void place(const ScreenRect& r) {
 
 void record_panel(AppState& s, const char* name) {
   const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  s.layout.panels.push_back({name, {pos.x, pos.y, size.x, size.y}, ImGui::GetScrollY()});
+  s.layout.panels.push_back({name, {pos.x, pos.y, size.x, size.y}, ImGui::GetScrollY(), ImGui::GetScrollMaxY()});
 }
 
 float content_height() {

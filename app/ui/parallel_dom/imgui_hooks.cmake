@@ -68,6 +68,36 @@ function(swarmlab_imgui_widgets_with_hooks imgui_dir out_var)
     "    if (g.TestEngineHookItems) ${hook}(&g, id, 6, selected ? \"1\" : \"0\");\n    IMGUI_TEST_ENGINE_ITEM_INFO(id, label, g.LastItemData.StatusFlags);\n    return pressed; //-V1020\n"
     1)
 
+  # Not a hook: a field gives way to its label. A slider, drag, text or number field or a
+  # combo with its label on the right is narrowed, where the row is too short for both, so
+  # that the label shows whole (a translation's label is longer); never below 40% of the row
+  # (a longer label is still cut off, and the parallel DOM says so). Where both fit, as in
+  # English, nothing changes.
+  _swarmlab_hook_edit(
+    "extern void ${hook}(ImGuiContext* ctx, ImGuiID id, int kind, const char* value);  // Swarm Lab: app/ui/parallel_dom\n"
+    "extern void ${hook}(ImGuiContext* ctx, ImGuiID id, int kind, const char* value);  // Swarm Lab: app/ui/parallel_dom\nstatic float SwarmlabRoomForLabel(float w, float label_w)  // Swarm Lab: the field gives way to its label\n{\n    ImGuiContext& g = *GImGui;\n    ImGuiWindow* window = g.CurrentWindow;\n    if (label_w <= 0.0f || w <= 0.0f)\n        return w;\n    const float row = window->WorkRect.Max.x - window->DC.CursorPos.x;\n    const float room = row - g.Style.ItemInnerSpacing.x - label_w;\n    return ImMin(w, ImMax(room, ImMin(w, ImMax(3.0f * g.FontSize, 0.4f * row))));\n}\n"
+    1)
+  # DragScalar, SliderScalar
+  _swarmlab_hook_edit(
+    "    const float w = CalcItemWidth();\n\n    const ImVec2 label_size = CalcTextSize(label, NULL, true);\n"
+    "    const ImVec2 label_size = CalcTextSize(label, NULL, true);\n    const float w = SwarmlabRoomForLabel(CalcItemWidth(), label_size.x);\n"
+    2)
+  # BeginCombo
+  _swarmlab_hook_edit(
+    "    const float w = (flags & ImGuiComboFlags_NoPreview) ? arrow_size : CalcItemWidth();\n"
+    "    const float w = (flags & ImGuiComboFlags_NoPreview) ? arrow_size : SwarmlabRoomForLabel(CalcItemWidth(), label_size.x);\n"
+    1)
+  # InputTextEx (a single line)
+  _swarmlab_hook_edit(
+    "    const ImVec2 frame_size = CalcItemSize(size_arg, CalcItemWidth(), (is_multiline"
+    "    const ImVec2 frame_size = CalcItemSize(size_arg, is_multiline ? CalcItemWidth() : SwarmlabRoomForLabel(CalcItemWidth(), label_size.x), (is_multiline"
+    1)
+  # InputScalar with its - and + buttons
+  _swarmlab_hook_edit(
+    "        SetNextItemWidth(ImMax(1.0f, CalcItemWidth() - (button_size + style.ItemInnerSpacing.x) * 2));\n"
+    "        SetNextItemWidth(ImMax(1.0f, SwarmlabRoomForLabel(CalcItemWidth(), CalcTextSize(label, NULL, true).x) - (button_size + style.ItemInnerSpacing.x) * 2));\n"
+    1)
+
   # Not a hook: the language's decimal separator (app/i18n). ImGui 1.86 formats and reads
   # numbers with the C library in the "C" locale; Swarm Lab shows a float or double in a field
   # or on a slider with the context's PlatformLocaleDecimalPoint (',' in German) and reads a
@@ -105,6 +135,34 @@ function(swarmlab_imgui_core_with_hooks imgui_dir out_var)
   _swarmlab_hook_edit(
     "            if (!g.LogEnabled)\n                return true;\n    return false;\n}\n"
     "            if (!g.LogEnabled && !(g.TestEngineHookItems && ParallelDomHook_Unnamed(id)))\n                return true;\n    return false;\n}\n"
+    1)
+  # Where ImGui draws a label or a line of text: the parallel DOM compares the width the text
+  # needs with the room it is drawn in (the clip rectangle), to tell when it is cut off
+  # (ParallelDom::text_drawn). clip: an explicit clip rectangle, or null for the draw list's.
+  set(text_hook "if (g.TestEngineHookItems) ParallelDomHook_TextDrawn(&g, ")
+  _swarmlab_hook_edit(
+    "extern bool ParallelDomHook_Unnamed(ImGuiID id);  // Swarm Lab: app/ui/parallel_dom\n"
+    "extern bool ParallelDomHook_Unnamed(ImGuiID id);  // Swarm Lab: app/ui/parallel_dom\nextern void ParallelDomHook_TextDrawn(ImGuiContext* ctx, ImDrawList* draw_list, ImVec2 pos, ImVec2 size, const char* text, const char* text_end, const ImVec4* clip);\n"
+    1)
+  # RenderText: a label or a line, clipped by its window (or table cell)
+  _swarmlab_hook_edit(
+    "    if (text != text_display_end)\n    {\n        window->DrawList->AddText(g.Font, g.FontSize, pos, GetColorU32(ImGuiCol_Text), text, text_display_end);\n"
+    "    if (text != text_display_end)\n    {\n        ${text_hook}window->DrawList, pos, CalcTextSize(text, text_display_end, false, 0.0f), text, text_display_end, NULL);\n        window->DrawList->AddText(g.Font, g.FontSize, pos, GetColorU32(ImGuiCol_Text), text, text_display_end);\n"
+    1)
+  # RenderTextWrapped: wrapped at wrap_width (a word longer than that still overflows)
+  _swarmlab_hook_edit(
+    "    if (text != text_end)\n    {\n        window->DrawList->AddText(g.Font, g.FontSize, pos, GetColorU32(ImGuiCol_Text), text, text_end, wrap_width);\n"
+    "    if (text != text_end)\n    {\n        ${text_hook}window->DrawList, pos, CalcTextSize(text, text_end, false, wrap_width), text, text_end, NULL);\n        window->DrawList->AddText(g.Font, g.FontSize, pos, GetColorU32(ImGuiCol_Text), text, text_end, wrap_width);\n"
+    1)
+  # RenderTextClippedEx: a button's, a combo's or a title's label, clipped to its frame
+  _swarmlab_hook_edit(
+    "    // Render\n    if (need_clipping)\n    {\n        ImVec4 fine_clip_rect(clip_min->x, clip_min->y, clip_max->x, clip_max->y);\n"
+    "    // Render\n    { ImGuiContext& g = *GImGui; ImVec4 room(clip_min->x, clip_min->y, clip_max->x, clip_max->y); ${text_hook}draw_list, pos, text_size, text, text_display_end, &room); }\n    if (need_clipping)\n    {\n        ImVec4 fine_clip_rect(clip_min->x, clip_min->y, clip_max->x, clip_max->y);\n"
+    1)
+  # RenderTextEllipsis: a tab's label, shortened with "..." when longer than its room
+  _swarmlab_hook_edit(
+    "    const ImVec2 text_size = text_size_if_known ? *text_size_if_known : CalcTextSize(text, text_end_full, false, 0.0f);\n\n    //draw_list->AddLine("
+    "    const ImVec2 text_size = text_size_if_known ? *text_size_if_known : CalcTextSize(text, text_end_full, false, 0.0f);\n    { ImVec4 room(pos_min.x, pos_min.y, ImMin(pos_max.x, clip_max_x), pos_max.y); ${text_hook}draw_list, pos_min, text_size, text, text_end_full, &room); }\n\n    //draw_list->AddLine("
     1)
   file(WRITE "${out}.tmp" "${src}")
   file(COPY_FILE "${out}.tmp" "${out}" ONLY_IF_DIFFERENT)

@@ -29,3 +29,18 @@ void ParallelDomHook_ItemValue(ImGuiContext*, ImGuiID id, int kind, const char* 
 }
 
 bool ParallelDomHook_Unnamed(ImGuiID id) { return swarmlab::parallel_dom().unnamed(id); }
+
+void ParallelDomHook_TextDrawn(ImGuiContext* ctx, ImDrawList* draw_list, ImVec2 pos, ImVec2 size,
+                               const char* text, const char* text_end, const ImVec4* clip) {
+  // The room the text is drawn in: the draw list's clip rectangle (its window's, or its table
+  // cell's), within the explicit one if given, within the screen.
+  ImVec4 room = draw_list->_CmdHeader.ClipRect;
+  if (clip) {
+    room.x = ImMax(room.x, clip->x), room.y = ImMax(room.y, clip->y);
+    room.z = ImMin(room.z, clip->z), room.w = ImMin(room.w, clip->w);
+  }
+  room.x = ImMax(room.x, 0.0f), room.z = ImMin(room.z, ctx->IO.DisplaySize.x);
+  swarmlab::parallel_dom().text_drawn(*ctx, std::string_view(text, std::size_t(text_end - text)), pos.x,
+                                      pos.y, pos.x + size.x, pos.y + size.y, room.x, room.y, room.z,
+                                      room.w);
+}

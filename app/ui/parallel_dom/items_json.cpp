@@ -20,6 +20,7 @@ nlohmann::json item_json(const MirroredItem& m) {
   if (m.has_popup) j["popup"] = true;
   if (m.disabled) j["disabled"] = true;
   if (m.clipped) j["clipped"] = true;
+  if (m.cut) j["cut"] = true;
   return j;
 }
 
@@ -28,12 +29,14 @@ nlohmann::json item_json(const MirroredItem& m) {
 std::string items_json(const ParallelDom& dom, bool touch) {
   nlohmann::json items = nlohmann::json::array();
   for (const MirroredItem& m : dom.items()) items.push_back(item_json(m));
-  return nlohmann::json{{"items", std::move(items)},
+  nlohmann::json frame{{"items", std::move(items)},
                         {"editing", dom.editing_id()},
                         {"text", dom.editing_text()},
                         {"nav", dom.nav_id()},
-                        {"touch", touch}}
-      .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+                        {"touch", touch}};
+  // Plain text cut off, where there is any (the layout test reads it).
+  for (const MirroredItem& m : dom.cut_text()) frame["cut_text"].push_back(item_json(m));
+  return frame.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace swarmlab

@@ -52,6 +52,9 @@ struct MirroredItem {
   bool has_popup = false;   // opens a menu or a list
   bool disabled = false;
   bool clipped = false;  // scrolled out of its window: (x, y) is where it would be drawn
+  /// Its text is cut off (wider than the room it is drawn in, or shortened with "..."), or it
+  /// sticks out of its window's visible part sideways (parallel_dom.h, text_drawn).
+  bool cut = false;
   float x = 0, y = 0, width = 0, height = 0;  // CSS pixels of the canvas
   std::string region;                         // the title of the window it is in
 };

@@ -44,6 +44,7 @@ void ParallelDom::begin_frame() {
   ++frame_;
   sequence_ = 0;
   drawn_.clear();
+  cut_text_.clear();
   if (GImGui) GImGui->TestEngineHookItems = true;
 }
 
@@ -58,6 +59,11 @@ void ParallelDom::item_added(ImGuiContext& g, unsigned id, float x0, float y0, f
   d.window = w->ID;
   d.root = w->RootWindow->ID;
   d.sequence = sequence_++;
+  // Sideways only: there are no horizontal scrollbars, while scrolling hides items above and
+  // below. The slack: a selectable's box reaches half the item spacing past what it shows
+  // (ImGui's Selectable), and 1 px for rounding.
+  const float slack = 1 + 0.5f * g.Style.ItemSpacing.x;
+  d.sticks_out = (x1 > d.cx1 + slack || x0 < d.cx0 - slack) && y1 > d.cy0 && y0 < d.cy1;
   drawn_.push_back(d);
   Known& k = known_[id];
   k.window = w->ID;
@@ -90,6 +96,25 @@ void ParallelDom::item_tooltip(unsigned id, std::string_view tooltip) {
   if (id) known_[id].tooltip.assign(tooltip);
 }
 
+void ParallelDom::text_drawn(ImGuiContext& g, std::string_view text, float x0, float y0, float x1,
+                             float y1, float rx0, float ry0, float rx1, float ry1) {
+  const ImGuiWindow* w = g.CurrentWindow;
+  if (!w || (w->Flags & ImGuiWindowFlags_Tooltip)) return;
+  if (y1 <= ry0 || y0 >= ry1) return;         // scrolled out of sight: not cut, hidden
+  if (x1 <= rx1 + 1 && x0 >= rx0 - 1) return;  // fits (1 px of slack for a glyph's overhang)
+  const unsigned id = g.LastItemData.ID;
+  const auto it = id ? known_.find(id) : known_.end();
+  if (it != known_.end() && it->second.seen_frame == frame_) it->second.cut_frame = frame_;
+  Drawn d;
+  d.id = id;
+  d.text.assign(text);
+  d.x0 = x0, d.y0 = y0, d.x1 = x1, d.y1 = y1;
+  d.cx0 = rx0, d.cy0 = ry0, d.cx1 = rx1, d.cy1 = ry1;
+  d.window = w->ID;
+  d.root = w->RootWindow->ID;
+  cut_text_.push_back(std::move(d));
+}
+
 bool ParallelDom::unnamed(unsigned id) {
   const auto it = known_.find(id);
   if (it == known_.end()) return false;  // not an item this frame (ItemAdd registers it first)
@@ -97,6 +122,13 @@ bool ParallelDom::unnamed(unsigned id) {
   if (!k.label.empty() || !k.tooltip.empty() || !k.name.empty() || k.drawn_for_name) return false;
   k.drawn_for_name = true;
   return true;
+}
+
+void ParallelDom::item_tab(unsigned id, bool selected) {
+  if (!id) return;
+  ItemFacts& f = known_[id].facts;
+  f.value_kind = ValueKind::none;  // not a list's option
+  f.is_tab = true, f.tab_selected = selected;
 }
 
 void ParallelDom::item_name(unsigned id, std::string_view name) {
@@ -143,6 +175,7 @@ MirroredItem ParallelDom::mirror(const Drawn& d) const {
   const auto it = known_.find(d.id);
   if (it == known_.end()) return m;  // no name: not mirrored (see end_frame)
   const Known& k = it->second;
+  m.cut = d.sticks_out || k.cut_frame == frame_;
   const ItemFacts& f = k.facts;
   m.role = role_of(f);
   m.disabled = k.disabled;
@@ -245,6 +278,21 @@ void ParallelDom::end_frame() {
       }
     }
     published_.insert(at, items.begin(), items.end());
+  }
+  // Cut text that is no mirrored item's label: plain text, a window's title, a table's cell.
+  cut_text_published_.clear();
+  for (const Drawn& d : cut_text_) {
+    const auto it = d.id ? known_.find(d.id) : known_.end();
+    const bool item_label = it != known_.end() && std::any_of(published_.begin(), published_.end(),
+                                                              [&](const MirroredItem& m) { return m.id == d.id; });
+    if (item_label) continue;  // reported as the item's `cut`
+    MirroredItem m;
+    m.role = ItemRole::paragraph;
+    m.name = d.text;
+    m.cut = true;
+    m.x = d.x0, m.y = d.y0, m.width = d.x1 - d.x0, m.height = d.y1 - d.y0;
+    if (const ImGuiWindow* root = ImGui::FindWindowByID(d.root)) m.region = window_title(root->Name);
+    cut_text_published_.push_back(std::move(m));
   }
 }
 

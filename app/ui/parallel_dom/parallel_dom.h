@@ -33,9 +33,16 @@ class ParallelDom {
                  bool openable, bool opened);
   /// The tooltip of the item last drawn (its description, or its name when the label is an icon).
   void item_tooltip(unsigned id, std::string_view tooltip);
+  /// ImGui drew `text` at (x0, y0)-(x1, y1) (the size it needs) in the room (rx0, ry0)-(rx1, ry1)
+  /// it could show in (imgui_hooks.cmake): text wider than its room is cut off. It belongs to
+  /// the item last added, or is plain text.
+  void text_drawn(ImGuiContext& g, std::string_view text, float x0, float y0, float x1, float y1,
+                  float rx0, float ry0, float rx1, float ry1);
   /// Whether an item out of sight still needs drawing once for its name (ImGui's clipping asks;
   /// imgui_hooks.cmake): true once for an item not yet named, then false.
   bool unnamed(unsigned id);
+  /// The item just drawn is a tab (a selectable of a wrapping tab strip, wrapping_tabs.h).
+  void item_tab(unsigned id, bool selected);
   /// The name of an item that shows no label (item_tooltip.h, name_item).
   void item_name(unsigned id, std::string_view name);
   /// Text a screen reader reads in place (a lesson's heading, its step, a question, feedback).
@@ -43,6 +50,9 @@ class ParallelDom {
 
   /// The last complete frame's items, in reading order.
   const std::vector<MirroredItem>& items() const { return published_; }
+  /// Plain text (no item's label) cut off in the last frame: its name is the text, its
+  /// rectangle the one it needs, `cut` set.
+  const std::vector<MirroredItem>& cut_text() const { return cut_text_published_; }
   /// The text field ImGui is editing (0 when none), and its text.
   unsigned editing_id() const { return editing_id_; }
   const std::string& editing_text() const { return editing_text_; }
@@ -63,7 +73,8 @@ class ParallelDom {
     ItemFacts facts;
     std::string label, value, tooltip, name;
     bool disabled = false;
-    bool drawn_for_name = false;  // drawn once out of sight to learn its name (unnamed())
+    bool drawn_for_name = false;
+    std::uint64_t cut_frame = 0;  // the frame its label was last cut off in  // drawn once out of sight to learn its name (unnamed())
     unsigned window = 0;
     std::uint64_t seen_frame = 0;
   };
@@ -75,6 +86,7 @@ class ParallelDom {
     float cx0 = 0, cy0 = 0, cx1 = 0, cy1 = 0;  // its window's clip rectangle
     unsigned window = 0, root = 0;
     int sequence = 0;
+    bool sticks_out = false;  // wider than its window's visible part (no horizontal scrolling)
   };
   struct Typing {
     unsigned id = 0;
@@ -91,6 +103,8 @@ class ParallelDom {
   std::vector<Drawn> drawn_;
   std::unordered_map<unsigned, Known> known_;
   std::vector<MirroredItem> published_;
+  std::vector<Drawn> cut_text_;  // plain text cut off this frame (id: the item last added)
+  std::vector<MirroredItem> cut_text_published_;
   unsigned editing_id_ = 0, nav_id_ = 0;
   std::string editing_text_;
   unsigned activate_ = 0, focus_ = 0;

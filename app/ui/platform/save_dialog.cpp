@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "i18n/translator.h"
 #include "report/run_csv.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/touch_target.h"
 
 namespace swarmlab {
 namespace {
@@ -180,16 +182,23 @@ void draw_save_dialogs(AppState& state) {
     } else {
       ImGui::TextWrapped(tr("Save %s"), d.request->what.c_str());
       ImGui::Spacing();
+      // The fields leave room for the longest of their labels (a translation's too).
+      float label_room = 8 * font;
+      for (const char* label : {tr_id("preset name"), tr_id("folder"), tr_id("file name")})
+        label_room = std::max(label_room, ImGui::CalcTextSize(label, nullptr, true).x +
+                                              ImGui::GetStyle().ItemInnerSpacing.x);
       if (d.request->preset) {
-        ImGui::SetNextItemWidth(-8 * font);
+        ImGui::SetNextItemWidth(-label_room);
         ImGui::InputText(tr_id("preset name"), &d.preset_name);
       }
-      ImGui::SetNextItemWidth(-8 * font);
+      ImGui::SetNextItemWidth(-label_room);
       ImGui::InputText(tr_id("folder"), &d.folder);
-      ImGui::SetNextItemWidth(-8 * font);
+      ImGui::SetNextItemWidth(-label_room);
       ImGui::InputText(tr_id("file name"), &d.file_name);
       const std::string location = (std::filesystem::path(d.folder) / d.file_name).string();
+      ImGui::PushTextWrapPos(0);
       ImGui::TextDisabled("%s", location.c_str());
+      ImGui::PopTextWrapPos();
       if (!d.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
         ImGui::TextWrapped("%s", d.error.c_str());
@@ -197,9 +206,9 @@ void draw_save_dialogs(AppState& state) {
       }
       const bool can_save = !d.file_name.empty() && !(d.request->preset && d.preset_name.empty());
       ImGui::BeginDisabled(!can_save);
-      const bool save = ImGui::Button(tr_id("Save"), ImVec2(6 * font, 0));
+      const bool save = ImGui::Button(tr_id("Save"), ImVec2(std::max(6 * font, target_width(tr_id("Save"))), 0));
       ImGui::EndDisabled();
-      ImGui::SameLine();
+      same_line_if_fits(target_width(tr_id("Cancel")));
       const bool cancel =
           ImGui::Button(tr_id("Cancel")) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
       if (save) {

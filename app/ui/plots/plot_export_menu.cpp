@@ -8,6 +8,7 @@
 #include "report/figure_csv.h"
 #include "report/svg_plot.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/touch_target.h"
 #include "ui/plots/plot_figure.h"
 
 namespace swarmlab {
@@ -54,10 +55,7 @@ void plot_export_buttons(const PlotSpec& spec, ImVec2 min, ImVec2 max) {
   const float room = ImGui::GetContentRegionAvail().x;
   if (width < room) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + room - width + style.ItemSpacing.x);
   for (std::size_t i = 0; i < std::size(kButtons); ++i) {
-    if (i > 0 && ImGui::GetContentRegionAvail().x >
-                     ImGui::CalcTextSize(kButtons[i].label, nullptr, true).x +
-                         2 * style.FramePadding.x + style.ItemSpacing.x)
-      ImGui::SameLine();
+    if (i > 0) same_line_if_fits(target_width(kButtons[i].label));
     if (ImGui::Button(kButtons[i].label)) request_plot_export(spec, kButtons[i].kind, min, max);
     item_tooltip("%s", kButtons[i].tip);
   }

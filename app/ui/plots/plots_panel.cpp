@@ -7,10 +7,12 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <vector>
 
 #include "i18n/translator.h"
 #include "swarm/physics/regime.h"
 #include "ui/classroom/theme_style.h"
+#include "ui/input/wrapping_tabs.h"
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/fit_quality.h"
@@ -276,7 +278,7 @@ int three(const AppState&) { return 3; }
 int one(const AppState&) { return 1; }
 int projects(const AppState& state) { return std::max(1, project_plot_count(state.preset)); }
 
-// Tabs keep their full names and scroll in a narrow panel ("W... E..." told nothing).
+// Tabs keep their full names and wrap in a narrow panel ("W... E..." told nothing).
 constexpr PlotTabDescriptor kPlotTabs[] = {
     {PlotTab::wall, [] { return tr_id("Wall P, T"); }, 2.6f, two, draw_wall_tab},
     {PlotTab::energy, [] { return tr_id("Energy"); }, 1.0f, two, draw_energy_tab},
@@ -302,10 +304,7 @@ void draw_plots_panel(AppState& state) {
   if (window != state.plots.tab_window && !state.plots.tab)
     state.plots.tab = state.plots.shown_tab;
   state.plots.tab_window = window;
-  if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
-  for (const PlotTabDescriptor& d : kPlotTabs) {
-    const ImGuiTabItemFlags flags = state.plots.tab == d.tab ? ImGuiTabItemFlags_SetSelected : 0;
-    if (!ImGui::BeginTabItem(d.label(), nullptr, flags)) continue;
+  auto draw_tab = [&](const PlotTabDescriptor& d) {
     state.plots.shown_tab = d.tab;
     const float available =
         ImGui::GetContentRegionAvail().y - d.option_rows * ImGui::GetFrameHeightWithSpacing();
@@ -313,6 +312,25 @@ void draw_plots_panel(AppState& state) {
         std::max(8 * ImGui::GetFontSize(),
                  available / float(d.plot_count(state)) - ImGui::GetStyle().ItemSpacing.y);
     if (!draw_hidden_by_lesson(state, LessonHidden::plots)) d.draw(state, height);
+  };
+  // Where the tabs do not fit in one row they wrap onto more (wrapping_tabs.h).
+  std::vector<const char*> labels;
+  for (const PlotTabDescriptor& d : kPlotTabs) labels.push_back(d.label());
+  static bool wrapped_last = false;
+  if (!tabs_fit(labels)) {
+    const PlotTab open = state.plots.tab.value_or(state.plots.shown_tab.value_or(PlotTab::wall));
+    draw_tab(kPlotTabs[draw_wrapping_tabs(labels, int(open))]);
+    state.plots.tab.reset();
+    wrapped_last = true;
+    return;
+  }
+  if (wrapped_last && !state.plots.tab) state.plots.tab = state.plots.shown_tab;  // the same tab
+  wrapped_last = false;
+  if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
+  for (const PlotTabDescriptor& d : kPlotTabs) {
+    const ImGuiTabItemFlags flags = state.plots.tab == d.tab ? ImGuiTabItemFlags_SetSelected : 0;
+    if (!ImGui::BeginTabItem(d.label(), nullptr, flags)) continue;
+    draw_tab(d);
     ImGui::EndTabItem();
   }
   state.plots.tab.reset();
