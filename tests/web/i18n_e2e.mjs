@@ -4,7 +4,8 @@
 // visit; a typed number accepts '.' and ',' and shows the language's decimal separator; the
 // Chinese font is fetched only when Chinese is chosen, and its glyphs are drawn; Copy link
 // carries the language, and beats a remembered choice. Then, per language, a lesson step at a
-// laptop size and the welcome on a phone, saved to build/web-test/i18n/ to be looked at.
+// laptop size and on a phone, and the welcome on a phone, saved to build/web-test/i18n/ to be
+// looked at.
 // window.swarmlab is only read.
 import { readFileSync, mkdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -133,6 +134,13 @@ async function main(url) {
         .then(() => true, () => false);
       check(`${code}: the welcome shows`, welcome);
       await page.screenshot({ path: join(outDir, 'i18n', `welcome-${code}-390x844.png`) });
+    }
+    await page.close();
+    // The same lesson step on the phone: the view, the transport and the lesson's drawer.
+    ({ page, started, error } = await openApp(`${url}#lang=${code}&lesson=${firstLesson.id}`, `i18n-phone-${code}`));
+    if (check(`${code}: the lesson opens on a phone`, started && await until(page, code), error || '')) {
+      await page.waitForFunction(() => window.swarmlab.state().layout_settled, null, { timeout: 30_000 }).catch(() => {});
+      await page.screenshot({ path: join(outDir, 'i18n', `lesson-${code}-390x844.png`) });
     }
     await page.close();
   }
