@@ -1,8 +1,8 @@
 #include "access/announcement.h"
 
-#include <cstdarg>
 #include <cstdio>
 
+#include "i18n/printed.h"
 #include "i18n/translator.h"
 
 namespace swarmlab {
@@ -12,20 +12,6 @@ std::string number(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.4g", v);  // as the read-outs show it
   return translator().numbers(text);
-}
-
-/// A sentence printed as `format` (translated) says.
-std::string sentence(const char* format, ...) {
-  va_list args, again;
-  va_start(args, format);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, format, args);
-  va_end(args);
-  std::string text(std::size_t(n > 0 ? n : 0) + 1, '\0');
-  std::vsnprintf(text.data(), text.size(), format, again);
-  va_end(again);
-  text.pop_back();
-  return text;
 }
 
 /// What, when it changes, is said at once rather than at the next time update.
@@ -39,22 +25,22 @@ bool same_events(const Situation& a, const Situation& b) {
 std::string describe(const Situation& s) {
   std::string text;
   // The error itself (the core's or the CLI's words) stays as it was given.
-  if (!s.error.empty()) text += sentence(tr("Error: %s."), s.error.c_str()) + " ";
+  if (!s.error.empty()) text += printed(tr("Error: %s."), s.error.c_str()) + " ";
   text += s.preset.empty() ? "Swarm Lab" : tr(s.preset.c_str());
   if (!text.empty() && text.back() != '.') text += '.';
   const char* state = s.finished  ? tr("Finished, t = %s.")
                       : s.playing ? tr("Playing, t = %s.")
                                   : tr("Paused, t = %s.");
-  text += " " + sentence(state, number(s.t).c_str());
+  text += " " + printed(state, number(s.t).c_str());
   if (s.P && s.T)
-    text += " " + sentence(tr("P = %s, T = %s."), number(*s.P).c_str(), number(*s.T).c_str());
-  if (s.selected) text += " " + sentence(tr("Particle %zu selected."), *s.selected + 1);
+    text += " " + printed(tr("P = %s, T = %s."), number(*s.P).c_str(), number(*s.T).c_str());
+  if (s.selected) text += " " + printed(tr("Particle %zu selected."), *s.selected + 1);
   return text;
 }
 
 std::string page_title(const Situation& s) {
   const char* preset = s.preset.empty() ? tr("no preset") : tr(s.preset.c_str());
-  return sentence(s.finished  ? tr("Swarm Lab \u2014 %s, finished")
+  return printed(s.finished  ? tr("Swarm Lab \u2014 %s, finished")
                   : s.playing ? tr("Swarm Lab \u2014 %s, playing")
                               : tr("Swarm Lab \u2014 %s, paused"),
                   preset);

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "i18n/language.h"
+#include "i18n/printed.h"
 #include "i18n/translator.h"
 #include "lessons/device_words.h"
 #include "swarm/preset/printable_text.h"
@@ -45,15 +46,10 @@ std::string format(double x) {
 
 /// A translated sentence with its values, numbers in the language's decimal separator.
 std::string sentence(const char* format, ...) {
-  va_list args, again;
+  std::va_list args;
   va_start(args, format);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, format, args);
+  std::string text = vprinted(format, args);
   va_end(args);
-  std::string text(std::size_t(n > 0 ? n : 0) + 1, '\0');
-  std::vsnprintf(text.data(), text.size(), format, again);
-  va_end(again);
-  text.pop_back();
   return translator().numbers(text);
 }
 

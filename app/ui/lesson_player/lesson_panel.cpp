@@ -4,6 +4,7 @@
 
 #include "ui/lesson_player/lesson_panel.h"
 
+#include "i18n/printed.h"
 #include "i18n/translator.h"
 #include "lessons/device_words.h"
 #include "ui/classroom/theme_style.h"
@@ -17,7 +18,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -25,20 +25,6 @@
 
 namespace swarmlab {
 namespace {
-
-/// Text printed as `format` (translated) says.
-std::string printed(const char* format, ...) {
-  va_list args, again;
-  va_start(args, format);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, format, args);
-  va_end(args);
-  std::string text(std::size_t(n > 0 ? n : 0) + 1, '\0');
-  std::vsnprintf(text.data(), text.size(), format, again);
-  va_end(again);
-  text.pop_back();
-  return text;
-}
 
 /// Keeps the current window inside the main viewport (after the browser window shrinks, a
 /// phone turns, or the student drags it off), no wider or taller than the viewport.

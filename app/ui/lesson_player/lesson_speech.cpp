@@ -2,27 +2,13 @@
 
 #include "ui/lesson_player/lesson_session.h"
 
-#include <cstdarg>
 #include <cstdio>
 
+#include "i18n/printed.h"
 #include "i18n/translator.h"
 
 namespace swarmlab {
 namespace {
-
-/// A sentence printed as `format` (translated) says.
-std::string sentence(const char* format, ...) {
-  va_list args, again;
-  va_start(args, format);
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, format, args);
-  va_end(args);
-  std::string text(std::size_t(n > 0 ? n : 0) + 1, '\0');
-  std::vsnprintf(text.data(), text.size(), format, again);
-  va_end(again);
-  text.pop_back();
-  return text;
-}
 
 /// A lesson's text as it is read: in the language in use (translated before its device words
 /// are chosen, as the key holds the choices), emphasis marks dropped, paragraphs joined.
@@ -51,21 +37,21 @@ std::string step_words(const LessonSession& lessons, InputKind input) {
   const std::size_t i = lessons.step();
   const LessonStep& step = lesson.steps[i];
   std::string words =
-      sentence(tr("%s, step %zu of %zu."), tr(lesson.title.c_str()), i + 1, lesson.steps.size());
+      printed(tr("%s, step %zu of %zu."), tr(lesson.title.c_str()), i + 1, lesson.steps.size());
   add(words, plain(step.text, input));
   if (!step.task) return words;
   add(words, plain(step.task->prompt, input));
   const bool predict = step.task->kind == LessonTask::Kind::predict;
   if (predict && lessons.prediction()) {
     // Made on an earlier visit: the panel shows it and the outcome, not the options.
-    add(words, sentence(tr("Your prediction: %s."),
+    add(words, printed(tr("Your prediction: %s."),
                         plain(step.task->options[*lessons.prediction()], input).c_str()));
     if (!step.task->outcome.empty())
-      add(words, sentence(tr("Now compare: %s"), plain(step.task->outcome, input).c_str()));
+      add(words, printed(tr("Now compare: %s"), plain(step.task->outcome, input).c_str()));
     return words;
   }
   for (std::size_t k = 0; k < step.task->options.size(); ++k)
-    add(words, sentence(predict ? tr("Predict %c: %s.") : tr("Pick %c: %s."), char('A' + k),
+    add(words, printed(predict ? tr("Predict %c: %s.") : tr("Pick %c: %s."), char('A' + k),
                         plain(step.task->options[k], input).c_str()));
   return words;
 }
@@ -89,7 +75,7 @@ LessonSpeech lesson_speech(const LessonSession& lessons, InputKind input) {
   if (lessons.showing_summary()) {
     speech.place = lesson->id + "/summary";
     speech.words =
-        sentence(tr("%s: summary."), tr(lesson->title.c_str())) + " " + lessons.finished_line();
+        printed(tr("%s: summary."), tr(lesson->title.c_str())) + " " + lessons.finished_line();
     return speech;
   }
   speech.place = lesson->id + "/" + std::to_string(lessons.step());
