@@ -26,7 +26,9 @@ std::string open_preset_json(AppState& state, const std::string& json, const std
     return error;
   }
   char text[600];
-  std::snprintf(text, sizeof text, tr("Opened %s"), source.c_str());
+  // A file keeps its name; the page's own sources are words (tr_noop: "share link").
+  tr_noop("share link");
+  std::snprintf(text, sizeof text, tr("Opened %s"), tr(source.c_str()));
   state.status = text;
   state.status_is_error = false;
   return {};
