@@ -35,4 +35,17 @@ inline void same_line_if_fits(float width) {
     ImGui::SameLine();
 }
 
+/// A radio button that goes to the next row when it would not fit beside the last item (the
+/// rows of choices that a longer language, or a phone, makes too long).
+inline bool wrapping_radio(const char* label, int* value, int choice) {
+  same_line_if_fits(radio_width(label));
+  return ImGui::RadioButton(label, value, choice);
+}
+
+/// The same for a checkbox.
+inline bool wrapping_checkbox(const char* label, bool* value) {
+  same_line_if_fits(radio_width(label));
+  return ImGui::Checkbox(label, value);
+}
+
 }  // namespace swarmlab

@@ -56,10 +56,8 @@ void draw_container_panel(AppState& state) {
     changed |= input_double(tr_id("radius R"), &*d.container_radius);
     int mode = d.collisions == swarm::CollisionMode::paper ? 0 : 1;
     ImGui::TextUnformatted(tr("Wall hits"));
-    same_line_if_fits(radio_width(tr_id("paper")));
-    changed |= ImGui::RadioButton(tr_id("paper"), &mode, 0);
-    same_line_if_fits(radio_width(tr_id("exact")));
-    changed |= ImGui::RadioButton(tr_id("exact"), &mode, 1);
+    changed |= wrapping_radio(tr_id("paper"), &mode, 0);
+    changed |= wrapping_radio(tr_id("exact"), &mode, 1);
     d.collisions = mode == 0 ? swarm::CollisionMode::paper : swarm::CollisionMode::exact;
     help_marker(
         tr("paper: Appendix A as written, a particle about to leave is reflected at the start "

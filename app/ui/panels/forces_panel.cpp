@@ -101,12 +101,9 @@ void draw_forces_panel(AppState& state) {
 
   int drag = !d.drag ? 0 : d.drag->mass_proportional() ? 1 : 2;
   ImGui::TextUnformatted(tr("Drag"));
-  same_line_if_fits(radio_width(tr_id("none")));
-  bool drag_changed = ImGui::RadioButton(tr_id("none"), &drag, 0);
-  same_line_if_fits(radio_width(tr_id("gamma")));
-  drag_changed |= ImGui::RadioButton(tr_id("gamma"), &drag, 1);
-  same_line_if_fits(radio_width("b"));
-  drag_changed |= ImGui::RadioButton("b", &drag, 2);
+  bool drag_changed = wrapping_radio(tr_id("none"), &drag, 0);
+  drag_changed |= wrapping_radio(tr_id("gamma"), &drag, 1);
+  drag_changed |= wrapping_radio("b", &drag, 2);
   help_marker(
       tr("gamma: a force -gamma m v on every particle (proportional to its mass): still solved "
          "exactly; the CM velocity decays as exp(-gamma t) and every particle is a damped "

@@ -62,10 +62,8 @@ void draw_coupling(AppState& state) {
   int sign = d.J > 0 ? 0 : d.J == 0 ? 1 : 2;
   bool changed = false;
   changed |= ImGui::RadioButton(tr_id("attractive"), &sign, 0);
-  same_line_if_fits(radio_width(tr_id("zero")));
-  changed |= ImGui::RadioButton(tr_id("zero"), &sign, 1);
-  same_line_if_fits(radio_width(tr_id("repulsive")));
-  changed |= ImGui::RadioButton(tr_id("repulsive"), &sign, 2);
+  changed |= wrapping_radio(tr_id("zero"), &sign, 1);
+  changed |= wrapping_radio(tr_id("repulsive"), &sign, 2);
   if (changed) d.J = sign == 0 ? magnitude : sign == 1 ? 0.0 : -magnitude;
 
   double shown = std::abs(d.J);
@@ -171,10 +169,8 @@ void draw_generator(AppState& state, swarm::SwarmSpec& g) {
 
   int mass_kind = g.mass_min == g.mass_max ? 0 : 1;
   ImGui::TextUnformatted(tr("Masses"));
-  same_line_if_fits(radio_width(tr_id("equal")));
-  if (ImGui::RadioButton(tr_id("equal"), &mass_kind, 0)) g.mass_max = g.mass_min, changed = true;
-  same_line_if_fits(radio_width(tr_id("uniform in [a, b]")));
-  if (ImGui::RadioButton(tr_id("uniform in [a, b]"), &mass_kind, 1) && g.mass_max == g.mass_min)
+  if (wrapping_radio(tr_id("equal"), &mass_kind, 0)) g.mass_max = g.mass_min, changed = true;
+  if (wrapping_radio(tr_id("uniform in [a, b]"), &mass_kind, 1) && g.mass_max == g.mass_min)
     g.mass_max = g.mass_min * 1.25, changed = true;
   const float half = 0.5f * (ImGui::GetContentRegionAvail().x - 2 * ImGui::GetFontSize());
   if (mass_kind == 0) {
@@ -193,10 +189,8 @@ void draw_generator(AppState& state, swarm::SwarmSpec& g) {
   help_marker(tr("Positions are drawn uniformly in a ball of this radius about the origin."));
   int velocity_kind = g.velocities == swarm::SwarmSpec::Velocities::ball ? 0 : 1;
   ImGui::TextUnformatted(tr("Velocities"));
-  same_line_if_fits(radio_width(tr_id("uniform ball")));
-  changed |= ImGui::RadioButton(tr_id("uniform ball"), &velocity_kind, 0);
-  same_line_if_fits(radio_width(tr_id("Maxwellian")));
-  changed |= ImGui::RadioButton(tr_id("Maxwellian"), &velocity_kind, 1);
+  changed |= wrapping_radio(tr_id("uniform ball"), &velocity_kind, 0);
+  changed |= wrapping_radio(tr_id("Maxwellian"), &velocity_kind, 1);
   g.velocities = velocity_kind == 0 ? swarm::SwarmSpec::Velocities::ball
                                     : swarm::SwarmSpec::Velocities::maxwell;
   ImGui::SetNextItemWidth(half);

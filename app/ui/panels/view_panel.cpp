@@ -12,12 +12,9 @@ void draw_view_panel(AppState& state) {
   ViewOptions& v = state.view;
   int colour = int(v.colour_by);
   ImGui::TextUnformatted(tr("Colour by"));
-  same_line_if_fits(radio_width(tr_id("speed")));
-  ImGui::RadioButton(tr_id("speed"), &colour, int(ColourBy::speed));
-  same_line_if_fits(radio_width(tr_id("mass")));
-  ImGui::RadioButton(tr_id("mass"), &colour, int(ColourBy::mass));
-  same_line_if_fits(radio_width(tr_id("energy")));
-  ImGui::RadioButton(tr_id("energy"), &colour, int(ColourBy::energy));
+  wrapping_radio(tr_id("speed"), &colour, int(ColourBy::speed));
+  wrapping_radio(tr_id("mass"), &colour, int(ColourBy::mass));
+  wrapping_radio(tr_id("energy"), &colour, int(ColourBy::energy));
   if (colour != int(v.colour_by)) {
     v.colour_by = ColourBy(colour);
     state.colour_scale = ColourScale{};
@@ -26,8 +23,7 @@ void draw_view_panel(AppState& state) {
   help_marker(
       tr("Keep the colour scale's ends where they are, so that a colour means one value for the "
          "whole run (it never rescales while paused). Choosing another quantity unlocks it."));
-  same_line_if_fits(radio_width(tr_id("reframe when it flies apart")));
-  ImGui::Checkbox(tr_id("reframe when it flies apart"), &v.auto_reframe);
+  wrapping_checkbox(tr_id("reframe when it flies apart"), &v.auto_reframe);
   help_marker(
       tr("Back the camera away when an isolated run grows past the view (Euler, J < 0), so that "
          "the particles stay in sight."));
@@ -37,22 +33,18 @@ void draw_view_panel(AppState& state) {
   help_marker(tr("The radius grows as the cube root of the mass (spheres of equal density)."));
 
   ImGui::Checkbox(tr_id("container"), &v.container);
-  same_line_if_fits(radio_width(tr_id("centre of mass")));
-  ImGui::Checkbox(tr_id("centre of mass"), &v.centre_of_mass);
-  same_line_if_fits(radio_width(tr_id("axes")));
-  ImGui::Checkbox(tr_id("axes"), &v.axes);
+  wrapping_checkbox(tr_id("centre of mass"), &v.centre_of_mass);
+  wrapping_checkbox(tr_id("axes"), &v.axes);
   ImGui::Checkbox(tr_id("trails"), &v.trails);
   help_marker(
       tr("Every particle of a system of up to 20 leaves a trail; in a larger swarm, the "
          "selected one (click a particle)."));
-  same_line_if_fits(radio_width(tr_id("orbit ahead")));
-  ImGui::Checkbox(tr_id("orbit ahead"), &v.orbit);
+  wrapping_checkbox(tr_id("orbit ahead"), &v.orbit);
   help_marker(
       tr("The analytic orbit of the selected particle about the moving centre of mass, "
          "from now on: r(t) = R(t) + x cos(wt) + (u / w) sin(wt). In a container it holds "
          "until the particle's next wall hit."));
-  same_line_if_fits(radio_width(tr_id("ghosts")));
-  ImGui::Checkbox(tr_id("ghosts"), &v.ghosts);
+  wrapping_checkbox(tr_id("ghosts"), &v.ghosts);
   help_marker(
       tr("Hollow rings at the positions of the exact solution, when a numerical method "
          "runs side by side with 'analytic'."));
@@ -60,12 +52,9 @@ void draw_view_panel(AppState& state) {
 
   int springs = int(v.springs);
   ImGui::TextUnformatted(tr("Springs"));
-  same_line_if_fits(radio_width(tr_id("off")));
-  ImGui::RadioButton(tr_id("off"), &springs, int(SpringOverlay::off));
-  same_line_if_fits(radio_width(tr_id("every pair")));
-  ImGui::RadioButton(tr_id("every pair"), &springs, int(SpringOverlay::pairs));
-  same_line_if_fits(radio_width(tr_id("to CM")));
-  ImGui::RadioButton(tr_id("to CM"), &springs, int(SpringOverlay::to_cm));
+  wrapping_radio(tr_id("off"), &springs, int(SpringOverlay::off));
+  wrapping_radio(tr_id("every pair"), &springs, int(SpringOverlay::pairs));
+  wrapping_radio(tr_id("to CM"), &springs, int(SpringOverlay::to_cm));
   v.springs = SpringOverlay(springs);
   help_marker(
       tr("The paper's Fig. 1 (up to 30 particles). Left: a spring k_ij = J m_i m_j between "

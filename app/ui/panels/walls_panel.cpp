@@ -77,12 +77,9 @@ void draw_walls_panel(AppState& state) {
   } else {
     int kind = wall_kind(d);
     ImGui::TextUnformatted(tr("Wall"));
-    same_line_if_fits(radio_width(tr_id("still")));
-    bool picked = ImGui::RadioButton(tr_id("still"), &kind, still);
-    same_line_if_fits(radio_width(tr_id("moving")));
-    picked |= ImGui::RadioButton(tr_id("moving"), &kind, moving);
-    same_line_if_fits(radio_width(tr_id("hot")));
-    picked |= ImGui::RadioButton(tr_id("hot"), &kind, hot);
+    bool picked = wrapping_radio(tr_id("still"), &kind, still);
+    picked |= wrapping_radio(tr_id("moving"), &kind, moving);
+    picked |= wrapping_radio(tr_id("hot"), &kind, hot);
     if (picked && kind != wall_kind(d)) {
       set_wall_kind(d, WallKind(kind));
       changed = true;
