@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -52,6 +53,17 @@ inline System crowded_swarm(long n, double sign, std::uint64_t seed, double spee
   System s = random_swarm(n, 1.0, seed, 1.0, speed);
   s.J = sign / total_mass(s);
   return s;
+}
+
+/// The largest difference in any particle's position or velocity between two states of the
+/// same particles.
+inline double max_state_difference(const System& a, const System& b) {
+  double worst = 0;
+  for (std::size_t i = 0; i < a.particles.size(); ++i) {
+    worst = std::max(worst, (a.particles[i].r - b.particles[i].r).norm());
+    worst = std::max(worst, (a.particles[i].v - b.particles[i].v).norm());
+  }
+  return worst;
 }
 
 /// 100,000 steps in the unit sphere, attractive and repulsive: the energy must hold to 1e-10

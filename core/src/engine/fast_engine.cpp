@@ -7,6 +7,7 @@
 // [SECTION] Engine: construction, step, system()
 // [SECTION] Checks: Appendix A for the particles due in a step
 // [SECTION] Shared motion: the CM, Y and the step's end
+// [SECTION] The wall: where it is, for the hits and for the schedules
 // [SECTION] Epochs and anchors: re-bases, new anchors, expiry
 // [SECTION] Scheduling: windows, the lookahead, the timing wheel
 // [SECTION] Factory
@@ -23,6 +24,7 @@
 #include "engine/fast_engine_anchor.h"
 #include "engine/fast_engine_body.h"
 #include "engine/fast_engine_lookahead.h"
+#include "engine/fast_engine_wall.h"
 #include "engine/fast_engine_window.h"
 #include "engine/timing_wheel.h"
 #include "engine/two_lane_worker.h"
@@ -104,6 +106,9 @@ class FastEngine final : public Engine {
       const Particle& p = initial.particles[i];
       orbits_[i] = {p.r - motion_.R_cm, p.v - motion_.V_cm, p.m, kParked, {kUnknown, kUnknown}};
     }
+    if (!config.wall_moves.empty() && config.container_radius)
+      path_.emplace(*config.container_radius, config.wall_moves);
+    wall_ = sphere_wall();
     lane_split_ = orbits_.size() / 2;
     for (Lane& lane : lanes_) lane.wheel = TimingWheel(lane_split_);
 
@@ -118,6 +123,7 @@ class FastEngine final : public Engine {
     cache_valid_ = false;
     if (!config_.container_radius || orbits_.empty()) {
       if (epoch_too_old(dt)) rebase();
+      if (path_) config_.container_radius = path_->radius_at(t_ + dt);
       finish_step(Flow::over(k_, tau_), Vec3::Zero(), dt);
       flow_carried_ = false;
       return tally;
@@ -128,6 +134,7 @@ class FastEngine final : public Engine {
       schedule_all_pending_ = true;
     }
     fast::StepData& d = now_;
+    const WallRadii radii = wall_radii(dt);
     // The flow at the step's end; at its start it is the last step's end, unless a re-base
     // restarted the epoch's time since.
     const Flow last_end = d.f1;
@@ -135,33 +142,42 @@ class FastEngine final : public Engine {
     // For J >= 0 a new anchor comes with a re-base, which also renews the margin's statistics.
     // For J < 0 the anchors are renewed without one, but Y, which the kicks make grow like
     // exp(Omega tau), must stay small: measured on the fireball, letting |Y| reach 0.02 R
-    // instead of 0.005 R makes the energy drift 40 times larger.
+    // instead of 0.005 R makes the energy drift 40 times larger. A moving wall spends the
+    // anchor's margin too (Anchor::margin_at); one moving out only makes the windows too wide,
+    // which costs checks, so either way it renews the anchor.
     const Anchor& current = anchors_.current();
-    const bool rebased = epoch_too_old(dt) ||
-                         (k_ >= 0 ? current.offset(motion_, d.f1, dt).norm() > current.renew_level
-                                  : (d.f1.c * motion_.aY + d.f1.s * motion_.bY).norm() >
-                                        kMaxRepulsiveY * *config_.container_radius);
+    const bool rebased =
+        epoch_too_old(dt) ||
+        (k_ >= 0 ? current.offset(motion_, d.f1, dt).norm() +
+                           std::abs(current.radius - radii.end) >
+                       current.renew_level
+                 : (d.f1.c * motion_.aY + d.f1.s * motion_.bY).norm() >
+                       kMaxRepulsiveY * *config_.container_radius);
     if (rebased) {
       rebase();
       d.f1 = Flow::over(k_, tau_ + dt);
     }
     d.f0 = rebased || !flow_carried_ ? Flow::over(k_, tau_) : last_end;
     flow_carried_ = true;
-    lookahead_.prepare(motion_, d.f1, k_, omega(), dt, *config_.container_radius);
+    lookahead_.prepare(motion_, d.f1, k_, omega(), dt, radii.ahead);
     if (schedule_all_pending_)
       schedule_all();
-    else if (k_ < 0 &&
-             (step_ - anchors_.current().start >= kRepulsiveAnchorSteps ||
-              anchors_.current().offset(motion_, d.f1, dt).norm() > anchors_.current().renew_level))
+    else if (k_ < 0 && (step_ - anchors_.current().start >= kRepulsiveAnchorSteps ||
+                        anchors_.current().offset(motion_, d.f1, dt).norm() +
+                                std::abs(anchors_.current().radius - radii.end) >
+                            anchors_.current().renew_level))
       next_anchor();
-    redo_lookahead_if_kicks_too_large();
+    redo_lookahead_if_kicks_too_large(radii.around);
 
     d.o0 = motion_.offset_at(d.f0, 0);
     d.o0v = motion_.offset_velocity_at(d.f0);
     d.o1 = motion_.offset_at(d.f1, dt);
-    d.R2 = *config_.container_radius * *config_.container_radius;
     d.determinant = d.f0.c * d.f0.c - d.f0.dc() * d.f0.s;
-    anchors_.drop_expired(motion_, d.f1, dt, [this](std::uint8_t id) { expire(id); });
+    wall_.R2 = radii.end * radii.end;
+    wall_.u = path_ ? (radii.end - *config_.container_radius) / dt : 0.0;
+    wall_.step = std::uint64_t(step_);
+    anchors_.drop_expired(motion_, d.f1, dt, radii.end,
+                          [this](std::uint8_t id) { expire(id); });
 
     std::size_t pending = 0;
     for (const Lane& lane : lanes_) pending += lane.wheel.waiting(step_);
@@ -175,6 +191,7 @@ class FastEngine final : public Engine {
     }
     stats_.hits += tally.hits;
     finish_step(d.f0, kick, dt, d.determinant);
+    config_.container_radius = radii.end;
     return tally;
   }
 
@@ -198,6 +215,8 @@ class FastEngine final : public Engine {
 
   void set_container_radius(std::optional<double> R) override {
     config_.container_radius = R;
+    path_.reset();  // a wall that was moving stops
+    wall_ = sphere_wall();
     // A new wall invalidates every schedule; start from a fresh anchor sized for it.
     rebase_pending_ = true;
     schedule_all_pending_ = true;
@@ -233,7 +252,7 @@ class FastEngine final : public Engine {
       if (o.due != step_) continue;  // rescheduled since it was put here
       ++lane.checks;
       Vec3 dv;
-      if (fast::reflect_if_leaving(o, d, lane.tally, dv)) lane.kick += (o.m / M_) * dv;
+      if (fast::reflect_if_leaving(o, i, d, wall_, lane.tally, dv)) lane.kick += (o.m / M_) * dv;
       schedule(i, step_ + 1);
     }
     lane.work.clear();
@@ -265,6 +284,31 @@ class FastEngine final : public Engine {
 
   /// sqrt|k|: omega for J > 0, Omega for J < 0, 0 for J = 0.
   double omega() const { return 0.5 * two_omega_; }
+
+  // [SECTION] The wall: where it is, for the hits and for the schedules
+
+  /// The wall's radius at the end of the step of length dt that starts now, and, for the
+  /// lookahead, the least it has over the next kLookahead + 1 steps (ahead) and over those and
+  /// the last kLookahead + 1 steps (around), whose lookaheads are still relied on.
+  struct WallRadii {
+    double end, ahead, around;
+  };
+  WallRadii wall_radii(double dt) const {
+    const double R = *config_.container_radius;
+    if (!path_) return {R, R, R};
+    const double span = (kLookahead + 1) * dt;
+    return {path_->radius_at(t_ + dt), path_->lowest_between(t_, t_ + span),
+            path_->lowest_between(t_ - span, t_ + span)};
+  }
+
+  /// The hit's rules that stay from step to step (fast_engine_wall.h); the step sets the rest.
+  fast::SphereWall sphere_wall() const {
+    fast::SphereWall wall;
+    wall.moving = path_.has_value();
+    wall.temperature = config_.wall_temperature.value_or(0.0);
+    wall.stream = config_.wall_stream;
+    return wall;
+  }
 
   // [SECTION] Epochs and anchors
 
@@ -314,7 +358,9 @@ class FastEngine final : public Engine {
   }
 
   /// Makes a new anchor current, taking p, q from Y now and a margin sized for the wall (see
-  /// fast::anchor_with_margin).
+  /// fast::anchor_with_margin). A moving wall's anchor is made for the smaller of its radii
+  /// now and at the end of the step (of the last step's length), so that a wall moving in
+  /// spends none of the margin in the step the anchor starts in.
   void start_anchor() {
     Anchor next;
     next.id = anchors_.next_id();
@@ -322,7 +368,14 @@ class FastEngine final : public Engine {
     next.p = motion_.aY;
     next.q = motion_.bY;
     const double base = next.offset(motion_, Flow::over(k_, tau_), 0).norm();
-    const fast::MarginInputs margin{config_.container_radius.value_or(1.0),
+    double R = config_.container_radius.value_or(1.0), wall_step = 0;
+    if (path_ && dt_ > 0) {
+      const double R_end = path_->radius_at(t_ + dt_);
+      wall_step = std::abs(R_end - R);
+      R = std::min(R, R_end);
+    }
+    const fast::MarginInputs margin{R,
+                                    wall_step,
                                     k_,
                                     omega(),
                                     motion_.V_cm.norm(),
@@ -460,9 +513,10 @@ class FastEngine final : public Engine {
   }
 
   /// The lookahead of the last kLookahead + 1 steps relied on their kicks staying within
-  /// budget. If they did not, every particle it skipped ahead is rescheduled without it.
-  void redo_lookahead_if_kicks_too_large() {
-    if (k_ == 0 || lookahead_.kicks_within_budget(omega(), *config_.container_radius)) {
+  /// budget (made for a wall of radius R at least). If they did not, every particle it skipped
+  /// ahead is rescheduled without it.
+  void redo_lookahead_if_kicks_too_large(double R) {
+    if (k_ == 0 || lookahead_.kicks_within_budget(omega(), R)) {
       // The schedules made kLookahead + 1 steps ago no longer rely on anything unchecked.
       for (Lane& lane : lanes_) lane.lookahead[std::size_t(step_) % (kLookahead + 1)].clear();
       return;
@@ -491,6 +545,8 @@ class FastEngine final : public Engine {
   }
 
   EngineConfig config_;
+  std::optional<WallPath> path_;  ///< a moving wall's radius over time
+  fast::SphereWall wall_;         ///< the wall as this step's hits see it
   double J_ = 0, M_ = 0, k_ = 0, t_ = 0;
   double two_omega_ = 0;  // 2 sqrt|k|
   fast::Spring spring_;
@@ -530,12 +586,12 @@ bool fast_engine_applies(const EngineConfig& config) {
   // Gravity, drag and a floor change every particle's orbit or add a second wall that the
   // closed-form wall windows do not know: those run on the reference engine, O(N) a step.
   if (config.forces.any() || config.floor) return false;
+  // Hard spheres touch every particle in every step (their contacts are between particles,
+  // not with the wall), so no schedule of wall windows can skip them (docs/architecture.md).
+  // A moving wall (its radius bracketed over each schedule's life, fast_engine_anchor.h) and a
+  // thermal wall (a hit re-emits the particle onto a new orbit, fast_engine_wall.h) run here.
   return config.method == Method::analytic && config.collisions == CollisionMode::paper &&
-         // Its windows assume a wall that stands still, and hard spheres touch every particle
-         // in every step (docs/architecture.md); the thermal wall is left to the reference
-         // engine until the fast engine's hit takes a wall model (its draws are keyed on step
-         // and particle so that it could).
-         config.wall_moves.empty() && !config.wall_temperature && !config.sphere_radius;
+         !config.sphere_radius;
 }
 
 std::unique_ptr<Engine> make_fast_engine(System initial, const EngineConfig& config) {

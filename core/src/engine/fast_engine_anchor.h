@@ -43,10 +43,16 @@ struct SharedMotion {
 /// step end, so that a particle can reach the wall only where |y_i - (c p + s q)| >= R -
 /// margin. An anchor takes p, q from Y when it starts, so that its offset then moves only
 /// with the CM and the later kicks; re-bases carry p, q over into the new epoch.
+///
+/// A moving wall spends the same margin: R is the radius the anchor was made for, and at a
+/// step end where the wall's radius is R_end the offset must stay within margin - (R - R_end)
+/// (margin_at), so that |y_i - (c p + s q)| < R - margin still keeps a particle inside R_end.
+/// A wall moving out adds to what is left; one moving in eats it, and the anchor expires.
 struct Anchor {
   std::uint8_t id = 0;                   ///< ids are 8 bits and wrap
   StepIndex start = 0;                   ///< the step in which it became current
   double margin = 0;                     ///< length
+  double radius = 0;                     ///< R, the wall's radius it was made for
   double threshold = 0, threshold2 = 0;  ///< T = R - margin and T^2: the windows' radius
   double renew_level = 0;  ///< while current: start a new anchor when the offset passes this
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
@@ -55,6 +61,8 @@ struct Anchor {
   Vec3 offset(const SharedMotion& motion, const Flow& f, double dt_ahead) const {
     return motion.offset_at(f, dt_ahead) + f.c * p + f.s * q;
   }
+  /// How far the offset may be from the centre at a step end where the wall's radius is R_end.
+  double margin_at(double R_end) const { return margin - (radius - R_end); }
 };
 
 // [SECTION] Margins
@@ -75,7 +83,8 @@ struct GapHistogram {
 
 /// What a new anchor's margin depends on.
 struct MarginInputs {
-  double R = 1;         ///< the wall's radius
+  double R = 1;           ///< the wall's radius
+  double wall_step = 0;   ///< how far a moving wall goes in a step (0 for one that stands)
   double k = 0;         ///< J M
   double omega = 0;     ///< sqrt|k|
   double cm_speed = 0;  ///< |V_cm|
@@ -84,9 +93,10 @@ struct MarginInputs {
 };
 
 /// An anchor whose offset is `base` from the centre now. Its margin covers that, the drift of
-/// the CM over a few time units, and, when few particles can come near the wall (the
-/// attractive expansion's later stages), as much more as leaves at most N / 100 of them
-/// within reach: a wide margin then costs little and lets the anchor live long.
+/// the CM over a few time units, a moving wall's travel over a few hundred steps, and, when few
+/// particles can come near the wall (the attractive expansion's later stages), as much more as
+/// leaves at most N / 100 of them within reach: a wide margin then costs little and lets the
+/// anchor live long.
 Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in);
 
 // [SECTION] The anchors in use
@@ -125,17 +135,20 @@ class Anchors {
   void move_all_to_current(const std::array<std::size_t, 2>& lane_sizes);
 
   /// Drops the old anchors no particle relies on any more, and expires those whose offset
-  /// leaves their margin at dt after the current time (f1: the flow then), and the oldest
-  /// beyond kMaxOld: expire(id) must reschedule the particles relying on anchor id.
+  /// leaves their margin at dt after the current time (f1: the flow then, R_end: the wall's
+  /// radius then), and the oldest beyond kMaxOld: expire(id) must reschedule the particles
+  /// relying on anchor id.
   template <class Expire>
-  void drop_expired(const SharedMotion& motion, const Flow& f1, double dt, Expire expire) {
+  void drop_expired(const SharedMotion& motion, const Flow& f1, double dt, double R_end,
+                    Expire expire) {
     for (std::size_t j = 0; j < old_.size();) {
       const Anchor& a = old_[j];
       std::int64_t relying = 0;
       for (const Relying& lane : relying_) relying += lane.count[a.id];
       const bool too_many = j == 0 && old_.size() > kMaxOld;
-      if (relying == 0 || too_many ||
-          a.offset(motion, f1, dt).squaredNorm() > a.margin * a.margin) {
+      const double margin = a.margin_at(R_end);
+      if (relying == 0 || too_many || margin < 0 ||
+          a.offset(motion, f1, dt).squaredNorm() > margin * margin) {
         if (relying > 0) expire(a.id);
         old_.erase(old_.begin() + long(j));
       } else {

@@ -16,18 +16,10 @@
 using namespace swarm;
 using doctest::Approx;
 using testing::crowded_swarm;
+using testing::max_state_difference;
 using testing::shipped_preset;
 
 namespace {
-
-double max_state_difference(const System& a, const System& b) {
-  double worst = 0;
-  for (std::size_t i = 0; i < a.particles.size(); ++i) {
-    worst = std::max(worst, (a.particles[i].r - b.particles[i].r).norm());
-    worst = std::max(worst, (a.particles[i].v - b.particles[i].v).norm());
-  }
-  return worst;
-}
 
 /// Runs both engines side by side and requires the same hits in every step.
 void require_same_run(const System& s, double R, double dt, int steps) {

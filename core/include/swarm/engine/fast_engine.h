@@ -31,6 +31,16 @@
 /// EngineConfig::threads is 2 (core/src/engine/two_lane_worker.h); the lanes' sums are combined in
 /// lane order, so the results do not depend on the thread count.
 ///
+/// The wall may move (EngineConfig::wall_moves: its radius is linear in time between moves) or
+/// be hot (EngineConfig::wall_temperature). A hit only needs dv, whatever the wall does:
+/// a moving wall reverses the velocity relative to it, a thermal wall re-emits the particle
+/// with the velocity the reference engine draws for it in that step (the same ThermalDraw
+/// keys), and either puts the particle on a new closed-form orbit like any hit
+/// (core/src/engine/fast_engine_wall.h). A moving wall spends the anchors' margin as the CM
+/// does: an anchor made for radius R stays valid while its offset at a step end is within
+/// margin - (R - R_end), R_end the wall's radius then, so a wall that closes in expires it;
+/// the lookahead judges against the least radius the wall has over its steps.
+///
 /// The engine reproduces the reference engine's wall hits step by step (same predicate on the
 /// same prediction, evaluated from an algebraically identical state) up to rounding.
 
@@ -43,7 +53,8 @@
 namespace swarm {
 
 /// Whether make_fast_engine can run this configuration: the analytic method with paper
-/// collisions (with a container or without: isolated, it is the analytic solution).
+/// collisions (with a container or without: isolated, it is the analytic solution), the wall
+/// fixed, moving or hot; not gravity, drag, a floor or hard spheres.
 bool fast_engine_applies(const EngineConfig& config);
 
 /// The most particles the fast engine takes (ids are packed into 26 bits).
