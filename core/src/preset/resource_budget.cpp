@@ -29,27 +29,24 @@ bool off_the_fast_engine(const Preset& p) {
   return forces && p.method == Method::analytic;
 }
 
-// [Appendix B walls and contacts] A moving or hot wall runs on the reference engine, which
-// steps (and, for the prediction, copies) every particle in every step; hard spheres also sort
-// them into cells and test their neighbours. Costs per particle-step relative to the fast
-// engine's in a container (1.85 ns), from bench/walls_bench.cpp: the reference engine ~21 ns,
-// hard spheres ~290 ns per particle-step (N = 40,000).
-constexpr double kReferenceWallCost = 10;
+// [Appendix B walls and contacts] Hard spheres run on the reference engine, which steps (and,
+// for the prediction, copies) every particle in every step, sorts them into cells and tests
+// their neighbours: ~290 ns per particle-step at N = 40,000 against the fast engine's 1.85 ns
+// in a container (bench/walls_bench.cpp). A moving or hot wall runs on the fast engine at
+// about its plain wall's cost (within 1.5x, bench/RESULTS.md), so it costs no more here.
 constexpr double kHardSphereCost = 150;
 constexpr double kCellGridBytesPerParticle = 32;  // cell, slot and two cell starts
 
 double particle_step_weight(const Preset& p) {
   if (p.sphere_radius) return kHardSphereCost;
   if (off_the_fast_engine(p)) return kReferenceParticleStepCost;
-  if (!p.wall_moves.empty() || p.wall_temperature) return kReferenceWallCost;
   return 1;
 }
 
 /// Why a particle-step of p costs particle_step_weight(p) times the fast engine's.
 const char* particle_step_weight_reason(const Preset& p) {
   if (p.sphere_radius) return "hard-sphere contacts";
-  if (off_the_fast_engine(p)) return "gravity, a floor or drag: the reference engine";
-  return "a moving or hot wall";
+  return "gravity, a floor or drag: the reference engine";
 }
 
 double force_evaluations_per_step(Method m) {
