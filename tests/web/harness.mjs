@@ -1,8 +1,9 @@
 // What every browser suite in tests/web/ shares: the served build/web, one headless Chromium
 // with a persistent profile, pages that report their errors, screenshots measured by colour,
-// clicks, the CLI's validation message, and the "N passed, M failed in S s" line (every check line ends with the seconds since the start). Every wait is on a
-// condition (the state an action should produce), never on a frame count or a sleep. A suite
-// calls runSuite(name, overallMs, main) with main(url) doing its checks.
+// clicks, the CLI's validation message, and the "N passed, M failed in S s" line (each check's
+// line ends with the seconds since the suite started). Every wait is on a condition (the
+// state an action should produce), never on a frame count or a sleep. A suite calls
+// runSuite(name, overallMs, main) with main(url) doing its checks.
 import { chromium } from 'playwright-core';
 import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, rmSync, existsSync, writeFileSync, readFileSync } from 'node:fs';
