@@ -132,5 +132,5 @@ TEST_CASE("a moving-wall run ends in the pinned state (native == wasm)") {
   const std::uint64_t fast = final_hash(make_engine(s, config));
   INFO("hashes ", reference, " ", fast);
   CHECK(reference == 0x5d30ad5555714d90ULL);
-  CHECK(fast == 0x9cf844371e625650ULL);  // make_engine: the fast engine
+  CHECK(fast == 0x0314272b813094caULL);  // make_engine: the fast engine
 }
