@@ -33,7 +33,7 @@ bool off_the_fast_engine(const Preset& p) {
 // for the prediction, copies) every particle in every step, sorts them into cells and tests
 // their neighbours: ~290 ns per particle-step at N = 40,000 against the fast engine's 1.85 ns
 // in a container (bench/walls_bench.cpp). A moving or hot wall runs on the fast engine at
-// about its plain wall's cost (within 1.5x, bench/RESULTS.md), so it costs no more here.
+// about its plain wall's cost (0.8-1.6x, bench/RESULTS.md), so it costs no more here.
 constexpr double kHardSphereCost = 150;
 constexpr double kCellGridBytesPerParticle = 32;  // cell, slot and two cell starts
 
