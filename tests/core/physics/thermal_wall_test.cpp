@@ -9,10 +9,10 @@
 
 #include "swarm/engine/engine.h"
 #include "swarm/measure/speed_distribution.h"
-#include "swarm/measure/state_hash.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/thermal_wall.h"
 #include "swarm/preset/initial_conditions.h"
+#include "test_systems.h"
 
 using namespace swarm;
 
@@ -110,14 +110,9 @@ TEST_CASE("a thermal-wall run ends in the pinned state (native == wasm)") {
   EngineConfig config;
   config.container_radius = 1.0;
   config.wall_temperature = 0.7;
-  const auto final_hash = [&](std::unique_ptr<Engine> engine) {
-    std::int64_t hits = 0;
-    for (int i = 0; i < 2000; ++i) hits += engine->step(1e-3).hits;
-    CHECK(hits > 50);
-    return state_hash(engine->system());
-  };
-  const std::uint64_t reference = final_hash(make_reference_engine(s, config));
-  const std::uint64_t fast = final_hash(make_engine(s, config));
+  const std::uint64_t reference =
+      testing::final_state_hash(*make_reference_engine(s, config), 2000, 1e-3, 50);
+  const std::uint64_t fast = testing::final_state_hash(*make_engine(s, config), 2000, 1e-3, 50);
   INFO("hashes ", reference, " ", fast);
   CHECK(reference == 0x9b3f05e061f8e656ULL);
   CHECK(fast == 0xc0f4971391c981f3ULL);  // make_engine: the fast engine

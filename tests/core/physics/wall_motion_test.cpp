@@ -7,10 +7,10 @@
 
 #include "swarm/engine/engine.h"
 #include "swarm/measure/speed_distribution.h"
-#include "swarm/measure/state_hash.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/wall_motion.h"
 #include "swarm/preset/initial_conditions.h"
+#include "test_systems.h"
 
 using namespace swarm;
 
@@ -122,14 +122,9 @@ TEST_CASE("a moving-wall run ends in the pinned state (native == wasm)") {
   EngineConfig config;
   config.container_radius = 1.0;
   config.wall_moves = {{0.8, 0.1}, {1.0, 0.1}};
-  const auto final_hash = [&](std::unique_ptr<Engine> engine) {
-    std::int64_t hits = 0;
-    for (int i = 0; i < 3000; ++i) hits += engine->step(1e-3).hits;
-    CHECK(hits > 500);
-    return state_hash(engine->system());
-  };
-  const std::uint64_t reference = final_hash(make_reference_engine(s, config));
-  const std::uint64_t fast = final_hash(make_engine(s, config));
+  const std::uint64_t reference =
+      testing::final_state_hash(*make_reference_engine(s, config), 3000, 1e-3, 500);
+  const std::uint64_t fast = testing::final_state_hash(*make_engine(s, config), 3000, 1e-3, 500);
   INFO("hashes ", reference, " ", fast);
   CHECK(reference == 0x5d30ad5555714d90ULL);
   CHECK(fast == 0x0314272b813094caULL);  // make_engine: the fast engine
