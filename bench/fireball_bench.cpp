@@ -22,6 +22,7 @@
 #include "scenarios/workloads.h"
 #include "swarm/engine/engine.h"
 #include "swarm/engine/fast_engine.h"
+#include "swarm/measure/state_hash.h"
 #include "swarm/physics/flow.h"
 #include "swarm/physics/wall.h"
 #include "swarm/run/run.h"
@@ -133,6 +134,8 @@ struct Timing {
   double seconds = 0;
   long long hits = 0;
   double drift = 0;
+  std::uint64_t hash = 0;  // of the final state: a change of the engine that should not
+                           // change the numbers must leave it as it was
 };
 
 Timing time_run(std::unique_ptr<Engine> engine, const RunPlan& plan) {
@@ -142,7 +145,7 @@ Timing time_run(std::unique_ptr<Engine> engine, const RunPlan& plan) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const RunSummary s = run.summary();
-  return {seconds, s.wall_hits, s.energy_drift};
+  return {seconds, s.wall_hits, s.energy_drift, state_hash(run.engine().system())};
 }
 
 /// The loop at 1 and at `threads` threads and the fast engine against the reference engine,
@@ -206,8 +209,8 @@ int main(int argc, char** argv) {
               o.particles, plan.steps, run_plan(preset).steps, o.threads);
   if (o.check > 0 && !check_hits(preset, plan, o.threads, o.check)) return 1;
 
-  std::printf("%5s %10s %10s %8s %12s %12s %10s\n", "pair", "fast s", "loop s", "ratio",
-              "fast hits", "loop hits", "load");
+  std::printf("%5s %10s %10s %8s %12s %12s %11s %18s %12s\n", "pair", "fast s", "loop s",
+              "ratio", "fast hits", "loop hits", "load", "fast state hash", "fast drift");
   for (int k = 0; k < o.pairs; ++k) {
     const std::string load = load_now();
     Timing fast, loop;
@@ -217,8 +220,9 @@ int main(int argc, char** argv) {
       loop = time_run(
           std::make_unique<StraightforwardLoop>(initial_system(preset), plan.engine, o.threads),
           plan);
-    std::printf("%5d %10.3f %10.3f %8.2f %12lld %12lld %10s\n", k + 1, fast.seconds, loop.seconds,
-                loop.seconds / fast.seconds, fast.hits, loop.hits, load.c_str());
+    std::printf("%5d %10.3f %10.3f %8.2f %12lld %12lld %11s 0x%016llx %12.3e\n", k + 1,
+                fast.seconds, loop.seconds, loop.seconds / fast.seconds, fast.hits, loop.hits,
+                load.c_str(), (unsigned long long)fast.hash, fast.drift);
     std::fflush(stdout);
   }
   return 0;

@@ -71,6 +71,7 @@ constexpr std::size_t kParallelChecks = 1;
 struct alignas(64) Lane {
   TimingWheel wheel;
   std::vector<std::uint32_t> work;  // the ids taken from the wheel for this step
+  std::vector<std::uint32_t> hit;   // the ids of this step's hits
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
   WallTally tally;
   Vec3 kick = Vec3::Zero();
@@ -226,16 +227,28 @@ class FastEngine final : public Engine {
 #endif
     for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j)
       fast::prefetch(&orbits_[lane.work[j]]);
+    // First every check, then the new windows of those hit, then every schedule, each in the
+    // order of the work list (so the wheel's order, and with it every sum, is as if each
+    // particle were done in turn): the windows' long chains of dependent operations then
+    // overlap from one particle to the next.
+    std::size_t checked = 0;
+    lane.hit.clear();
     for (std::size_t j = 0; j < count; ++j) {
       if (j + kPrefetch < count) fast::prefetch(&orbits_[lane.work[j + kPrefetch]]);
       const std::uint32_t i = lane.work[j];
       Body& o = orbits_[i];
       if (o.due != step_) continue;  // rescheduled since it was put here
-      ++lane.checks;
+      o.due = step_ + 1;              // checked: a second entry of i in this step is stale
+      lane.work[checked++] = i;
       Vec3 dv;
-      if (fast::reflect_if_leaving(o, d, lane.tally, dv)) lane.kick += (o.m / M_) * dv;
-      schedule(i, step_ + 1);
+      if (fast::reflect_if_leaving(o, d, lane.tally, dv)) {
+        lane.kick += (o.m / M_) * dv;
+        lane.hit.push_back(i);
+      }
     }
+    lane.checks = std::int64_t(checked);
+    make_windows(lane.hit);
+    for (std::size_t j = 0; j < checked; ++j) schedule(lane.work[j], step_ + 1);
     lane.work.clear();
     fast::release_if_large(lane.work, lane_split_);
   }
@@ -404,14 +417,7 @@ class FastEngine final : public Engine {
     Body& o = orbits_[i];
     // A particle keeps its window, and with it the anchor it relies on, until it hits the
     // wall or that anchor expires: re-bases and new anchors leave the window as it was.
-    if (std::isnan(o.window.first)) {
-      if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
-      const Anchor& current = anchors_.current();
-      o.window = current.threshold > 0
-                     ? fast::window_of(o.a - current.p, o.b - current.q, spring_,
-                                       current.threshold2, phase_per_time_ * epoch_start_)
-                     : fast::always_window(k_);
-    }
+    if (std::isnan(o.window.first)) make_window(i);
     fast::Span span = fast::span_of(o.window, clock_at(first));
     StepIndex due = window_begin(span, first);
     if (due <= step_ + kLookahead) {
@@ -430,6 +436,22 @@ class FastEngine final : public Engine {
     due = std::min(due, step_ + TimingWheel::kHorizon);
     o.due = due;
     enqueue(i, due);
+  }
+
+  /// Particle i's window in the current anchor, which it relies on from now on.
+  void make_window(std::uint32_t i) {
+    Body& o = orbits_[i];
+    if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
+    const Anchor& current = anchors_.current();
+    o.window = current.threshold > 0
+                   ? fast::window_of(o.a - current.p, o.b - current.q, spring_, current.threshold2,
+                                     phase_per_time_ * epoch_start_)
+                   : fast::always_window(k_);
+  }
+
+  /// The windows of the particles `ids`, one after the other with nothing in between.
+  void make_windows(const std::vector<std::uint32_t>& ids) {
+    for (const std::uint32_t i : ids) make_window(i);
   }
 
   /// The time at the end of step m, as the windows count it.
