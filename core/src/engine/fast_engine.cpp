@@ -24,6 +24,7 @@
 #include "engine/fast_engine_body.h"
 #include "engine/fast_engine_lookahead.h"
 #include "engine/fast_engine_window.h"
+#include "engine/fast_engine_window_batch.h"
 #include "engine/timing_wheel.h"
 #include "engine/two_lane_worker.h"
 #include "swarm/physics/flow.h"
@@ -72,6 +73,8 @@ struct alignas(64) Lane {
   TimingWheel wheel;
   std::vector<std::uint32_t> work;  // the ids taken from the wheel for this step
   std::vector<std::uint32_t> hit;   // the ids of this step's hits
+  std::vector<Vec3> hit_a, hit_b;   // their coefficients in the current anchor
+  std::vector<fast::Window> hit_windows;
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
   WallTally tally;
   Vec3 kick = Vec3::Zero();
@@ -247,7 +250,7 @@ class FastEngine final : public Engine {
       }
     }
     lane.checks = std::int64_t(checked);
-    make_windows(lane.hit);
+    make_windows(lane);
     for (std::size_t j = 0; j < checked; ++j) schedule(lane.work[j], step_ + 1);
     lane.work.clear();
     fast::release_if_large(lane.work, lane_split_);
@@ -449,9 +452,26 @@ class FastEngine final : public Engine {
                    : fast::always_window(k_);
   }
 
-  /// The windows of the particles `ids`, one after the other with nothing in between.
-  void make_windows(const std::vector<std::uint32_t>& ids) {
-    for (const std::uint32_t i : ids) make_window(i);
+  /// The new windows of a lane's hits, all at once (fast_engine_window_batch.h).
+  void make_windows(Lane& lane) {
+    const std::size_t n = lane.hit.size();
+    const Anchor& current = anchors_.current();
+    if (current.threshold <= 0) {
+      for (const std::uint32_t i : lane.hit) make_window(i);
+      return;
+    }
+    lane.hit_a.resize(n);
+    lane.hit_b.resize(n);
+    lane.hit_windows.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::uint32_t i = lane.hit[j];
+      if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
+      lane.hit_a[j] = orbits_[i].a - current.p;
+      lane.hit_b[j] = orbits_[i].b - current.q;
+    }
+    fast::windows_of(lane.hit_a.data(), lane.hit_b.data(), n, spring_, current.threshold2,
+                     phase_per_time_ * epoch_start_, lane.hit_windows.data());
+    for (std::size_t j = 0; j < n; ++j) orbits_[lane.hit[j]].window = lane.hit_windows[j];
   }
 
   /// The time at the end of step m, as the windows count it.
