@@ -183,12 +183,18 @@ Options parse(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     const long value = std::atol(argv[i + 1]);
-    if (key == "--only") o.only = argv[i + 1];
-    else if (key == "--particles") o.particles = value;
-    else if (key == "--steps") o.steps = value;
-    else if (key == "--threads") o.threads = int(value);
-    else if (key == "--pairs") o.pairs = int(value);
-    else if (key == "--check") o.check = value;
+    if (key == "--only")
+      o.only = argv[i + 1];
+    else if (key == "--particles")
+      o.particles = value;
+    else if (key == "--steps")
+      o.steps = value;
+    else if (key == "--threads")
+      o.threads = int(value);
+    else if (key == "--pairs")
+      o.pairs = int(value);
+    else if (key == "--check")
+      o.check = value;
     else {
       std::fprintf(stderr, "fireball_bench: unknown option %s\n", key.c_str());
       std::exit(2);
@@ -209,8 +215,8 @@ int main(int argc, char** argv) {
               o.particles, plan.steps, run_plan(preset).steps, o.threads);
   if (o.check > 0 && !check_hits(preset, plan, o.threads, o.check)) return 1;
 
-  std::printf("%5s %10s %10s %8s %12s %12s %11s %18s %12s\n", "pair", "fast s", "loop s",
-              "ratio", "fast hits", "loop hits", "load", "fast state hash", "fast drift");
+  std::printf("%5s %10s %10s %8s %12s %12s %11s %18s %12s\n", "pair", "fast s", "loop s", "ratio",
+              "fast hits", "loop hits", "load", "fast state hash", "fast drift");
   for (int k = 0; k < o.pairs; ++k) {
     const std::string load = load_now();
     Timing fast, loop;

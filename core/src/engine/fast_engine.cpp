@@ -241,7 +241,7 @@ class FastEngine final : public Engine {
       const std::uint32_t i = lane.work[j];
       Body& o = orbits_[i];
       if (o.due != step_) continue;  // rescheduled since it was put here
-      o.due = step_ + 1;              // checked: a second entry of i in this step is stale
+      o.due = step_ + 1;             // checked: a second entry of i in this step is stale
       lane.work[checked++] = i;
       Vec3 dv;
       if (fast::reflect_if_leaving(o, d, lane.tally, dv)) {

@@ -44,8 +44,8 @@ SWARM_AVX2 inline __m256d log4(__m256d x, __m256i& special) {
   const __m256i bits = _mm256_castpd_si256(x);
   const __m256i biased_exponent = _mm256_srli_epi64(bits, 52);  // with the sign bit
   special = _mm256_or_si256(special, _mm256_cmpeq_epi64(biased_exponent, _mm256_setzero_si256()));
-  special = _mm256_or_si256(special,
-                            _mm256_cmpgt_epi64(biased_exponent, _mm256_set1_epi64x(0x7fe)));
+  special =
+      _mm256_or_si256(special, _mm256_cmpgt_epi64(biased_exponent, _mm256_set1_epi64x(0x7fe)));
   constexpr std::int64_t kSqrtHalfBits = 0x3fe6a09e667f3bcd;
   const __m256i relative = _mm256_sub_epi64(bits, _mm256_set1_epi64x(kSqrtHalfBits));
   // The arithmetic shift of relative by 52 (AVX2 has only logical 64-bit shifts): |e| < 1024
@@ -62,10 +62,10 @@ SWARM_AVX2 inline __m256d log4(__m256d x, __m256i& special) {
   const __m256d one = _mm256_set1_pd(1.0);
   const __m256d s = _mm256_div_pd(_mm256_sub_pd(m, one), _mm256_add_pd(m, one));
   const __m256d u = _mm256_mul_pd(s, s), u2 = _mm256_mul_pd(u, u);
-  const __m256d p01 =
-      _mm256_add_pd(_mm256_set1_pd(1.0000000000041793), _mm256_mul_pd(u, _mm256_set1_pd(0.33333332623755507)));
-  const __m256d p23 =
-      _mm256_add_pd(_mm256_set1_pd(0.20000192334836356), _mm256_mul_pd(u, _mm256_set1_pd(0.14267525577504317)));
+  const __m256d p01 = _mm256_add_pd(_mm256_set1_pd(1.0000000000041793),
+                                    _mm256_mul_pd(u, _mm256_set1_pd(0.33333332623755507)));
+  const __m256d p23 = _mm256_add_pd(_mm256_set1_pd(0.20000192334836356),
+                                    _mm256_mul_pd(u, _mm256_set1_pd(0.14267525577504317)));
   const __m256d p4 = _mm256_mul_pd(u2, _mm256_set1_pd(0.11808178694153203));
   const __m256d p = _mm256_add_pd(p01, _mm256_mul_pd(u2, _mm256_add_pd(p23, p4)));
   return _mm256_add_pd(_mm256_mul_pd(e, _mm256_set1_pd(M_LN2)),
@@ -94,17 +94,18 @@ SWARM_AVX2 void repulsive4(const Vec3* a, const Vec3* b, double inv_omega, doubl
   const __m256d common = _mm256_and_pd(
       _mm256_and_pd(_mm256_cmp_pd(beta, zero, _CMP_LT_OQ), _mm256_cmp_pd(disc, zero, _CMP_GT_OQ)),
       _mm256_cmp_pd(cc, zero, _CMP_GT_OQ));
-  __m256i off = _mm256_castpd_si256(_mm256_xor_pd(common, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))));
+  __m256i off =
+      _mm256_castpd_si256(_mm256_xor_pd(common, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))));
   const __m256d q =
       _mm256_add_pd(_mm256_sub_pd(zero, beta), _mm256_sqrt_pd(_mm256_max_pd(disc, zero)));
   const __m256d E_plus = _mm256_div_pd(q, _mm256_mul_pd(two, cc));
   const __m256d E_minus = _mm256_div_pd(_mm256_mul_pd(two, dd), q);
   const __m256d origin = _mm256_set1_pd(phase_origin), widen = _mm256_set1_pd(rounding);
   const __m256d error = _mm256_set1_pd(kLogError);
-  const __m256d first = _mm256_add_pd(
-      _mm256_add_pd(_mm256_add_pd(log4(E_minus, off), error), origin), widen);
-  const __m256d second = _mm256_sub_pd(
-      _mm256_add_pd(_mm256_sub_pd(log4(E_plus, off), error), origin), widen);
+  const __m256d first =
+      _mm256_add_pd(_mm256_add_pd(_mm256_add_pd(log4(E_minus, off), error), origin), widen);
+  const __m256d second =
+      _mm256_sub_pd(_mm256_add_pd(_mm256_sub_pd(log4(E_plus, off), error), origin), widen);
   alignas(32) double f[4], s[4];
   _mm256_store_pd(f, first);
   _mm256_store_pd(s, second);
@@ -141,7 +142,8 @@ void windows_of(const Vec3* a, const Vec3* b, std::size_t n, const Spring& sprin
       int special = 0;
       repulsive4(a + j, b + j, spring.inv_omega, T2, phase_origin, rounding, out + j, special);
       for (int l = 0; l < 4; ++l)
-        if (special & (1 << l)) out[j + l] = window_of(a[j + l], b[j + l], spring, T2, phase_origin);
+        if (special & (1 << l))
+          out[j + l] = window_of(a[j + l], b[j + l], spring, T2, phase_origin);
     }
     windows_one_by_one(a + j, b + j, n - j, spring, T2, phase_origin, out + j);
     return;

@@ -45,8 +45,8 @@ TEST_CASE("the batched windows are window_of's to the last bit, for every J") {
         long differing = 0;
         for (std::size_t j = 0; j < n; ++j) {
           const fast::Window one = fast::window_of(a[j], b[j], spring, T * T, origin);
-          differing += !same_bits(one.first, batch[j].first) ||
-                       !same_bits(one.second, batch[j].second);
+          differing +=
+              !same_bits(one.first, batch[j].first) || !same_bits(one.second, batch[j].second);
         }
         INFO("k = " << k << ", T = " << T << ", phase origin = " << origin
                     << ", four at once: " << fast::windows_use_avx2());
