@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <memory>
 #include <string>
@@ -132,6 +133,7 @@ std::string load_now() {
 
 struct Timing {
   double seconds = 0;
+  double cpu_seconds = 0;  // of every thread of the process: what a busy host does not inflate
   long long hits = 0;
   double drift = 0;
   std::uint64_t hash = 0;  // of the final state: a change of the engine that should not
@@ -140,12 +142,14 @@ struct Timing {
 
 Timing time_run(std::unique_ptr<Engine> engine, const RunPlan& plan) {
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   Run run(std::move(engine), plan);
   run.finish();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cpu_seconds = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   const RunSummary s = run.summary();
-  return {seconds, s.wall_hits, s.energy_drift, state_hash(run.engine().system())};
+  return {seconds, cpu_seconds, s.wall_hits, s.energy_drift, state_hash(run.engine().system())};
 }
 
 /// The loop at 1 and at `threads` threads and the fast engine against the reference engine,
@@ -215,8 +219,9 @@ int main(int argc, char** argv) {
               o.particles, plan.steps, run_plan(preset).steps, o.threads);
   if (o.check > 0 && !check_hits(preset, plan, o.threads, o.check)) return 1;
 
-  std::printf("%5s %10s %10s %8s %12s %12s %11s %18s %12s\n", "pair", "fast s", "loop s", "ratio",
-              "fast hits", "loop hits", "load", "fast state hash", "fast drift");
+  std::printf("%5s %10s %10s %8s %12s %12s %10s %12s %12s %11s %18s %12s\n", "pair", "fast s",
+              "loop s", "ratio", "fast cpu s", "loop cpu s", "cpu ratio", "fast hits", "loop hits",
+              "load", "fast state hash", "fast drift");
   for (int k = 0; k < o.pairs; ++k) {
     const std::string load = load_now();
     Timing fast, loop;
@@ -226,9 +231,11 @@ int main(int argc, char** argv) {
       loop = time_run(
           std::make_unique<StraightforwardLoop>(initial_system(preset), plan.engine, o.threads),
           plan);
-    std::printf("%5d %10.3f %10.3f %8.2f %12lld %12lld %11s 0x%016llx %12.3e\n", k + 1,
-                fast.seconds, loop.seconds, loop.seconds / fast.seconds, fast.hits, loop.hits,
-                load.c_str(), (unsigned long long)fast.hash, fast.drift);
+    std::printf(
+        "%5d %10.3f %10.3f %8.2f %12.3f %12.3f %10.2f %12lld %12lld %11s 0x%016llx %12.3e\n", k + 1,
+        fast.seconds, loop.seconds, loop.seconds / fast.seconds, fast.cpu_seconds, loop.cpu_seconds,
+        loop.cpu_seconds / fast.cpu_seconds, fast.hits, loop.hits, load.c_str(),
+        (unsigned long long)fast.hash, fast.drift);
     std::fflush(stdout);
   }
   return 0;
