@@ -25,6 +25,7 @@
 #include "engine/fast_engine_lookahead.h"
 #include "engine/fast_engine_window.h"
 #include "engine/fast_engine_window_batch.h"
+#include "engine/id_sort.h"
 #include "engine/lane_pool.h"
 #include "engine/timing_wheel.h"
 #include "swarm/physics/flow.h"
@@ -86,7 +87,7 @@ struct alignas(64) Lane {
   std::vector<Hit> hits;
   // The hits in particle-id order once the checks are done: id << 32 | place in `hits` (sorted
   // as integers: cheaper than moving the hits).
-  std::vector<std::uint64_t> order;
+  std::vector<std::uint64_t> order, order_scratch;
   std::int64_t checks = 0;
 #ifdef __EMSCRIPTEN__
   double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped
@@ -273,7 +274,7 @@ class FastEngine final : public Engine {
     lane.order.clear();
     for (std::size_t h = 0; h < lane.hits.size(); ++h)
       lane.order.push_back(std::uint64_t(lane.hits[h].id) << 32 | h);
-    std::sort(lane.order.begin(), lane.order.end());
+    fast::sort_by_id(lane.order, lane.order_scratch);
     lane.work.clear();
     fast::release_if_large(lane.work, lane_size_);
   }
