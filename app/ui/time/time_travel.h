@@ -8,10 +8,13 @@
 
 namespace swarmlab {
 
-/// A move of the run to a target step, under way over several frames.
+/// A move of the run to a target step, under way over several frames. A seek of the window
+/// (the timeline, step back) goes unseen; one asked for by the page (to_time, the JS API's
+/// seek) and the fast-forwards show their progress.
 struct TimeTravel {
-  enum class Kind { none, seek, to_stage_end, to_run_end };
+  enum class Kind { none, seek, to_time, to_stage_end, to_run_end };
   Kind kind = Kind::none;
+  long id = 0;      ///< which travel this is (AppState counts them): the page follows its seek
   long from = 0;    ///< the step it started from (after the jump to a snapshot)
   long target = 0;  ///< the step it goes to
   long chunk = 1;   ///< steps between looks at the clock, doubled or halved to fit the budget
@@ -21,6 +24,14 @@ struct TimeTravel {
   double progress(long step) const {
     return target == from ? 1.0 : double(step - from) / double(target - from);
   }
+};
+
+/// How a seek the page asked for (Kind::to_time) ended, kept until the page reads it.
+struct TravelEnd {
+  long id = 0;
+  long step = 0;  ///< where the run was when it ended
+  /// At its target; false: cancelled (a new seek, Play or Pause, Cancel or Esc, a new preset).
+  bool reached = false;
 };
 
 /// The last fast-forward as its progress bar showed it, kept after it ends: what a test
