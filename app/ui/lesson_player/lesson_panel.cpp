@@ -523,10 +523,11 @@ void draw_welcome_window(AppState& state) {
 void draw_progress_notice(AppState& state) {
   LessonSession& lessons = state.lessons;
   if (lessons.take_progress_notice()) {
-    // Said once: the window, and the status line, which the live region reads as an error.
+    // Shown once: the window, and the status line (the live region says it once too:
+    // classroom_outputs.cpp).
     lessons.show_progress_notice = true;
     state.status = lessons.progress_notice();
-    state.status_is_error = true;
+    state.status_is_error = false;
   }
   if (!lessons.show_progress_notice) return;
   const std::string text = lessons.progress_notice();

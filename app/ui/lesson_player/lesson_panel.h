@@ -17,8 +17,8 @@ void draw_welcome_window(AppState& state);
 /// file (Download progress; Load progress... in the browser).
 void draw_lessons_menu(AppState& state);
 /// When progress is not kept as usual (progress_record.h): once, the notice in the status line
-/// (which the live region reads) and a window that says so, with Download progress, Load
-/// progress... (in the browser) and Close.
+/// and a window that says so, with Download progress, Load progress... (in the browser) and
+/// Close. (The live region says it once: the announcer's Situation::notice.)
 void draw_progress_notice(AppState& state);
 /// Where the open lesson's step hides `what` (lesson.h, LessonHidden) until its question is
 /// answered: draws one line saying so in its place and returns true; false (nothing drawn)
