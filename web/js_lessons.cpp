@@ -202,17 +202,18 @@ EMSCRIPTEN_KEEPALIVE int swarmlab_welcome_shown() {
   return app && app->state().lessons.show_welcome ? 1 : 0;
 }
 
-/// Progress from a file the student picked (Load progress...): "" or why it was refused, in
-/// the language in use; either way said in the status line (and so by the live region).
+/// Progress from a file the student picked (Load progress...): {"loaded": true or false,
+/// "message": what to say, in the language in use}, also put in the status line.
 EMSCRIPTEN_KEEPALIVE const char* swarmlab_load_progress(const char* text) {
-  static std::string error;
+  static std::string answer;
   swarmlab::App* app = swarmlab::web_app();
-  if (!app) return "";
+  if (!app) return "{}";
   swarmlab::AppState& s = app->state();
-  error = s.lessons.load_progress_json(text);
+  const std::string error = s.lessons.load_progress_json(text);
   s.status = error.empty() ? swarmlab::tr("Lesson progress loaded from the file.") : error;
   s.status_is_error = !error.empty();
-  return error.c_str();
+  answer = json{{"loaded", error.empty()}, {"message", s.status}}.dump();
+  return answer.c_str();
 }
 
 }  // extern "C"

@@ -96,7 +96,8 @@ nlohmann::json app_state_json(swarmlab::App& app) {
     j["last_fast_forward"] = {{"kind", kind},
                               {"frames", ff.frames},
                               {"progress", ff.progress},
-                              {"reached", ff.reached}};
+                              {"reached", ff.reached},
+                              {"longest_ms", ff.longest_ms}};
   // The instruments: P and T as the read-outs show them (null without a container or before
   // the first sample; T also before the first wall hit), the stopwatch, the measured period.
   const swarmlab::Instruments& in = s.instruments;

@@ -27,7 +27,8 @@
 //   swarmlab.openLink(hash) opens the preset of a fragment; Promise of "" or the error message
 //   swarmlab.openFile()    the Open preset... button: a file picker, then as load()
 //   swarmlab.pickProgressFile() the Load progress... button: a file picker, then the file's
-//                          lesson progress in place of the progress now
+//                          lesson progress in place of the progress now; the message line
+//                          says whether it was loaded
 //   swarmlab.download()    the Download preset button; returns the file name
 //   swarmlab.exportCsv()   the samples as CSV (swarmlab run --csv's columns) as a download;
 //                          returns the file name
@@ -349,10 +350,11 @@
       pickJsonFile(function (file) {
         if (file.size > SwarmlabLink.maxPresetBytes) return refuse(SwarmlabLink.tooLarge(file.name, file.size));
         file.text().then(function (text) {
-          var error = withHeapText(text, function (pointer) {
+          var result = JSON.parse(withHeapText(text, function (pointer) {
             return Module.ccall('swarmlab_load_progress', 'string', ['number'], [pointer]);
-          });
-          if (error) notice('error', error);
+          }));
+          // The page's message line, a live region: the student hears how it went.
+          notice(result.loaded ? 'info' : 'error', result.message);
         });
       });
     },

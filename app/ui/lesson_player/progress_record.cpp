@@ -16,6 +16,12 @@ ProgressRecordKind progress_record_kind(const std::string& text) {
   if (version == j.end() || !version->is_number_integer()) return ProgressRecordKind::unreadable;
   if (version->get<long long>() > kProgressVersion) return ProgressRecordKind::newer;
   if (version->get<long long>() < 1) return ProgressRecordKind::unreadable;
+  // Lesson progress says whether the welcome was seen, or holds lessons: a preset, which has a
+  // version too, is no progress.
+  const auto welcomed = j.find("welcomed"), lessons = j.find("lessons");
+  if (welcomed == j.end() && lessons == j.end()) return ProgressRecordKind::unreadable;
+  if (welcomed != j.end() && !welcomed->is_boolean()) return ProgressRecordKind::unreadable;
+  if (lessons != j.end() && !lessons->is_object()) return ProgressRecordKind::unreadable;
   return ProgressRecordKind::readable;
 }
 

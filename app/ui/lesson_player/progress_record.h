@@ -14,7 +14,7 @@ constexpr int kProgressVersion = 1;
 /// What a text found in the progress store is.
 enum class ProgressRecordKind {
   none,        ///< nothing stored yet
-  readable,    ///< a record of this version or an older one: read, then saved over
+  readable,    ///< this version's or an older one's, with "welcomed" or "lessons": read, then saved over
   unreadable,  ///< not a record (cut off, edited by hand, another program's): kept aside
   newer,       ///< a newer build's record: left alone, never written over
 };

@@ -71,8 +71,8 @@ void continue_travel(AppState& state, double budget_ms) {
   TimeTravel& travel = state.travel;
   if (!travel.active()) return;
   LiveRun& run = *state.run;
-  run.jump_towards(travel.target);
   const clock::time_point start = clock::now();
+  run.jump_towards(travel.target);
   double spent_ms = 0;
   while (run.step() < travel.target && !run.finished() && spent_ms < budget_ms) {
     const clock::time_point chunk_start = clock::now();
@@ -86,6 +86,8 @@ void continue_travel(AppState& state, double budget_ms) {
       travel.chunk /= 2;
     spent_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
   }
+  if (travel.kind != TimeTravel::Kind::seek)
+    state.last_fast_forward.longest_ms = std::max(state.last_fast_forward.longest_ms, spent_ms);
   if (run.step() >= travel.target || run.finished()) end_travel(state, run.step() >= travel.target);
 }
 

@@ -42,6 +42,7 @@ struct FastForwardRecord {
   int frames = 0;                                  ///< frames its progress bar was drawn
   std::vector<double> progress;  ///< the progress drawn, one a frame (the first kKept)
   bool reached = false;          ///< it got to its target (not cancelled or overtaken)
+  double longest_ms = 0;         ///< the most one frame spent on it (ms of wall time)
 };
 
 }  // namespace swarmlab

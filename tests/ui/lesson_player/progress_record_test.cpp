@@ -17,6 +17,12 @@ TEST_CASE("progress record: what a stored text is decides what is done with it")
   CHECK(progress_record_kind(R"({"welcomed": true})") == ProgressRecordKind::unreadable);
   CHECK(progress_record_kind(R"({"version": "1"})") == ProgressRecordKind::unreadable);
   CHECK(progress_record_kind(R"({"version": 0})") == ProgressRecordKind::unreadable);
+  CHECK(progress_record_kind(R"({"version": 1, "welcomed": true})") == ProgressRecordKind::readable);
+  // A preset has a version too, but no welcome and no lessons: it is no progress.
+  CHECK(progress_record_kind(R"({"version": 1, "name": "Four masses", "J": 1, "dt": 0.01})") ==
+        ProgressRecordKind::unreadable);
+  CHECK(progress_record_kind(R"({"version": 1, "lessons": [1]})") == ProgressRecordKind::unreadable);
+  CHECK(progress_record_kind(R"({"version": 1, "welcomed": "yes"})") == ProgressRecordKind::unreadable);
   // A newer build's record: its version above the one this build writes.
   CHECK(progress_record_kind(R"({"version": 2, "lessons": []})") == ProgressRecordKind::newer);
   CHECK(progress_record_kind("{\"version\": " + std::to_string(kProgressVersion + 1) + "}") ==
