@@ -46,7 +46,7 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_seek_poll() {
     swarmlab::AppState& s = app->state();
     for (const swarmlab::TravelEnd& end : s.travel_ends)
       answer["ended"].push_back({{"id", end.id},
-                                 {"t", double(end.step) * s.preset.dt},
+                                 {"t", end.t},
                                  {"reached", end.reached}});
     s.travel_ends.clear();
     if (s.travel.kind == swarmlab::TimeTravel::Kind::to_time)

@@ -105,7 +105,7 @@ void AppState::revert_draft() {
 void AppState::restart() {
   // A seek under way ends with the run it was in.
   if (travel.kind == TimeTravel::Kind::to_time && run)
-    travel_ends.push_back({travel.id, run->step(), false});
+    travel_ends.push_back({travel.id, run->time(), false});
   travel = {};
   run = std::make_unique<LiveRun>(preset);
   step_debt = 0;

@@ -265,10 +265,11 @@ async function seeks(url) {
   check('the seek\'s own work in a frame stays within its budget (40 ms; under 100 ms of wall time)',
         record && record.kind === 'time' && record.longest_ms > 0 && record.longest_ms < 100,
         record && `longest ${record.longest_ms.toFixed(1)} ms over ${record.frames} frames`);
-  // A machine loaded past its cores stretches every task, the page's playing frames too: then a
-  // seek's frame may take no longer than a playing one plus the seek's budget (40 ms) and 10.
-  check('no main-thread task of 100 ms or more while it ran (on a machine whose playing frames take longer: none longer than they do + 50 ms)',
-        tasks !== null && playing.ok && longest < Math.max(100, playingLongest + 50),
+  // A machine loaded past its cores stretches every task, the page's playing frames too (on 2
+  // cores at a load of 15, up to 300 ms): there the seek may add to a frame no more than the
+  // 100 ms it is allowed, over the longest frame of the page playing, measured just before.
+  check('no main-thread task of 100 ms or more while it ran (where playing frames alone take longer: none longer than they do + 100 ms)',
+        tasks !== null && playing.ok && longest < Math.max(100, playingLongest + 100),
         tasks === null ? 'no longtask observer' : `seeking: ${tasks.length} tasks over 50 ms, longest ${longest.toFixed(0)} ms ` +
         `(at ${tasks.length ? (tasks.find((x) => x.ms === longest).start - startedAt).toFixed(0) : '-'} ms after the seek; Cancel pressed at ${(cancelAt - startedAt).toFixed(0)} ms); ` +
         `playing (${playing.detail}): ${playingTasks.length} tasks over 50 ms, longest ${playingLongest.toFixed(0)} ms`);

@@ -23,7 +23,7 @@ long coarse_steps(AppState& state) {
 /// Ends the travel under way; the page hears how its seek ended.
 void end_travel(AppState& state, bool reached) {
   const TimeTravel& travel = state.travel;
-  if (travel.kind == TimeTravel::Kind::to_time) state.travel_ends.push_back({travel.id, state.run->step(), reached});
+  if (travel.kind == TimeTravel::Kind::to_time) state.travel_ends.push_back({travel.id, state.run->time(), reached});
   if (travel.kind != TimeTravel::Kind::seek && reached) state.last_fast_forward.reached = true;
   state.travel = {};
 }

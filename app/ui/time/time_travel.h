@@ -29,7 +29,7 @@ struct TimeTravel {
 /// How a seek the page asked for (Kind::to_time) ended, kept until the page reads it.
 struct TravelEnd {
   long id = 0;
-  long step = 0;  ///< where the run was when it ended
+  double t = 0;  ///< the run's time when it ended
   /// At its target; false: cancelled (a new seek, Play or Pause, Cancel or Esc, a new preset).
   bool reached = false;
 };

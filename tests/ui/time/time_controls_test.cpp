@@ -68,7 +68,8 @@ TEST_CASE("time controls: the page's seek goes a budget at a time and ends at it
   REQUIRE(state.travel_ends.size() == 1);
   CHECK(state.travel_ends[0].id == id);
   CHECK(state.travel_ends[0].reached);
-  CHECK(state.travel_ends[0].step == state.run->timeline().step_of(target));
+  CHECK(state.run->step() == state.run->timeline().step_of(target));
+  CHECK(state.travel_ends[0].t == state.run->time());
   CHECK(state.last_fast_forward.reached);  // shown like a fast-forward
 
   // The same state as a run that went there in one go.
