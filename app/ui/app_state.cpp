@@ -107,7 +107,7 @@ void AppState::restart() {
   if (travel.kind == TimeTravel::Kind::to_time && run)
     travel_ends.push_back({travel.id, run->time(), false});
   travel = {};
-  run = std::make_unique<LiveRun>(preset);
+  run = std::make_unique<LiveRun>(preset, engine_threads);
   step_debt = 0;
   colour_scale = ColourScale{};
   const swarm::System& s = run->system();
