@@ -69,6 +69,13 @@ async function openWith(url, fault, label) {
   return openApp(`${url}?welcome`, label, init);
 }
 
+/** Lesson 1 opened as a person does, from the Lessons menu (it resumes where it was left). */
+async function openLessonOne(page, me) {
+  await me.press('menuitem', 'Lessons');
+  await me.press('menuitem', LESSON.title);
+  await page.waitForFunction((id) => window.swarmlab.lessonState()?.id === id, LESSON.id, { timeout: 30_000 });
+}
+
 const said = (page) => page.evaluate(() => window.liveRegionSaid);
 const untilSaid = (page, text) => page.waitForFunction((t) => window.liveRegionSaid.some((s) => s.includes(t)), text,
                                                        { timeout: 30_000 }).then(() => true, () => false);
@@ -135,9 +142,7 @@ async function faultsSaid(url) {
     check('a newer record: the notice says a newer version saved it and it is left alone',
           await inDom(me, NEWER) && await untilSaid(page, NEWER));
     const before = (await stored(page))['swarmlab.progress'];
-    await me.press('menuitem', 'Lessons');
-    await me.press('menuitem', LESSON.title);
-    await page.waitForFunction((id) => window.swarmlab.lessonState()?.id === id, LESSON.id, { timeout: 30_000 });
+    await openLessonOne(page, me);
     await me.press('button', /^Next \u2192/);
     await page.waitForFunction(() => window.swarmlab.lessonState()?.step === 1, null, { timeout: 30_000 }).catch(() => {});
     const after = await stored(page);
@@ -158,9 +163,7 @@ async function downloadAndLoad(url) {
   await inDom(me, NOT_SAVED);
   await me.press('button', 'Just the simulation');  // the welcome (a first visit, every visit)
   // Progress: lesson 1 opened from the Lessons menu and moved on a step.
-  await me.press('menuitem', 'Lessons');
-  await me.press('menuitem', LESSON.title);
-  await page.waitForFunction((id) => window.swarmlab.lessonState()?.id === id, LESSON.id, { timeout: 30_000 });
+  await openLessonOne(page, me);
   await me.press('button', /^Next \u2192/);
   await page.waitForFunction(() => window.swarmlab.lessonState()?.step === 1, null, { timeout: 30_000 });
   await me.press('menuitem', 'Lessons');
@@ -185,10 +188,7 @@ async function downloadAndLoad(url) {
   check('Load progress...: the message line (a live region) says it was loaded', await noticeSays(page, 'Lesson progress loaded from the file.'));
   me = person(page, 'mouse');
   await me.press('button', 'Just the simulation');
-  await me.press('menuitem', 'Lessons');
-  await me.press('menuitem', LESSON.title);
-  const resumed = await page.waitForFunction((id) => window.swarmlab.lessonState()?.id === id, LESSON.id, { timeout: 30_000 })
-    .then(() => page.evaluate(() => window.swarmlab.lessonState().step), () => null);
+  const resumed = await openLessonOne(page, me).then(() => page.evaluate(() => window.swarmlab.lessonState().step), () => null);
   check('Load progress...: the lesson resumes at the step of the file', resumed === 1, `step ${resumed}`);
   // A file that is no progress is refused with a reason, and nothing changes.
   const [again] = await Promise.all([page.waitForEvent('filechooser', { timeout: 30_000 }).catch(() => null),
