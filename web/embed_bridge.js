@@ -17,7 +17,9 @@
 // copyLink and shareLesson (a file picker or a clipboard needs the student's own click in the
 // frame, and the frame's address bar is not seen); `ready` answers true once the app runs;
 // `lastMessage` is swarmlab.lastMessage. Calls are run in the order they arrive, each after
-// the app has started; a call that returns a Promise is answered when it settles.
+// the app has started; a call that returns a Promise is answered when it settles, and the
+// next call waits for that, except after seek (a new seek, or state() to follow its progress,
+// goes on at once; a seek cancelled by a new one is answered with its error).
 // Once the app runs it tells its parent window, at each allowed origin only:
 // { swarmlab: 1, event: "ready", embed }.
 // A message from an origin not on the list is ignored, never answered. A message that is no
@@ -178,10 +180,15 @@
               error: e.message });
       return;
     }
-    queue = queue.then(function () { return running; })
-      .then(function () { return run(request); })
+    // The result is wrapped, so that a Promise in it is not waited for before the next call.
+    var started = queue.then(function () { return running; })
+      .then(function () { return { result: run(request) }; });
+    var settled = started.then(function (wrapped) { return wrapped.result; })
       .then(function (result) { reply({ id: request.id, result: result === undefined ? null : result }); },
             function (e) { reply({ id: request.id, error: (e && e.message) || String(e) }); });
+    // A seek is answered when it ends (the time reached, or the error when cancelled or
+    // refused); the calls after it do not wait for that (a new seek cancels it).
+    queue = request.call === 'seek' ? started.then(function () {}, function () {}) : settled;
   });
 
   // The parent (if any) hears that the app runs, at the allowed origins only: a page of another

@@ -1,6 +1,6 @@
 // The C side of the lesson calls of window.swarmlab (lessons, openLesson, lessonState,
 // lessonAnswer, lessonNext, lessonBack, lessonLink in web/swarmlab_api.js), the #lesson= link,
-// and the lesson panel's Share button.
+// the lesson panel's Share button, and the progress loaded again from a file.
 
 #include <emscripten.h>
 
@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "i18n/translator.h"
 #include "lessons/lesson_link.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "web_app.h"
@@ -17,6 +18,10 @@
 // The Share button: the page makes the link from the fragment, copies it and shows it.
 EM_JS(void, js_share_lesson, (const char* fragment),
       { Module.swarmlab.shareLesson(UTF8ToString(fragment)); });
+
+// Load progress...: a file picker (swarmlab_api.js), whose text comes back to
+// swarmlab_load_progress.
+EM_JS(void, js_pick_progress_file, (), { Module.swarmlab.pickProgressFile(); });
 
 namespace {
 
@@ -197,8 +202,23 @@ EMSCRIPTEN_KEEPALIVE int swarmlab_welcome_shown() {
   return app && app->state().lessons.show_welcome ? 1 : 0;
 }
 
+/// Progress from a file the student picked (Load progress...): {"loaded": true or false,
+/// "message": what to say, in the language in use}, also put in the status line.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_load_progress(const char* text) {
+  static std::string answer;
+  swarmlab::App* app = swarmlab::web_app();
+  if (!app) return "{}";
+  swarmlab::AppState& s = app->state();
+  const std::string error = s.lessons.load_progress_json(text);
+  s.status = error.empty() ? swarmlab::tr("Lesson progress loaded from the file.") : error;
+  s.status_is_error = !error.empty();
+  answer = json{{"loaded", error.empty()}, {"message", s.status}}.dump();
+  return answer.c_str();
+}
+
 }  // extern "C"
 
 void swarmlab::install_lesson_share(AppState& state) {
   state.lessons.share = [](const std::string& fragment) { js_share_lesson(fragment.c_str()); };
+  state.lessons.pick_progress_file = [] { js_pick_progress_file(); };
 }

@@ -80,15 +80,24 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["fast_forward"] = s.travel.active() && s.travel.kind != swarmlab::TimeTravel::Kind::seek
                           ? nlohmann::json{{"progress", s.travel.progress(s.run->step())}}
                           : nlohmann::json(nullptr);
+  // A swarmlab.seek under way: its target time and how much of the way is done (0 to 1).
+  j["seek"] = s.travel.kind == swarmlab::TimeTravel::Kind::to_time
+                  ? nlohmann::json{{"t", double(s.travel.target) * s.preset.dt},
+                                   {"progress", s.travel.progress(s.run->step())}}
+                  : nlohmann::json(nullptr);
   // The last fast-forward as its bar showed it, kept after it ends (time_travel.h).
+  // A seek the page asked for (swarmlab.seek) shows its progress the same way, kind "time".
   const swarmlab::FastForwardRecord& ff = s.last_fast_forward;
-  const bool to_run_end = ff.kind == swarmlab::TimeTravel::Kind::to_run_end;
+  const char* kind = ff.kind == swarmlab::TimeTravel::Kind::to_run_end  ? "run_end"
+                     : ff.kind == swarmlab::TimeTravel::Kind::to_time ? "time"
+                                                                       : "stage_end";
   j["last_fast_forward"] = nullptr;
   if (ff.kind != swarmlab::TimeTravel::Kind::none)
-    j["last_fast_forward"] = {{"kind", to_run_end ? "run_end" : "stage_end"},
+    j["last_fast_forward"] = {{"kind", kind},
                               {"frames", ff.frames},
                               {"progress", ff.progress},
-                              {"reached", ff.reached}};
+                              {"reached", ff.reached},
+                              {"longest_ms", ff.longest_ms}};
   // The instruments: P and T as the read-outs show them (null without a container or before
   // the first sample; T also before the first wall hit), the stopwatch, the measured period.
   const swarmlab::Instruments& in = s.instruments;

@@ -4,7 +4,13 @@
 //   swarmlab.time()        the simulated time of the running preset (a number)
 //   swarmlab.state()       what the app shows and runs: { name, edited, playing, t, speed,
 //                          selected, ... } (web/README.md lists every field)
-//   swarmlab.seek(t)       moves the run to time t, back or forward; returns the time reached
+//   swarmlab.seek(t, {onprogress}) moves the run to time t, back or forward, a frame's budget
+//                          at a time (the page never freezes); returns a Promise of the time
+//                          reached. A new seek, Play or Pause, Cancel or Esc cancels it: the
+//                          Promise rejects with an Error named 'AbortError' ({ cancelled: true,
+//                          t: the time then }). onprogress({ progress: 0 to 1, t }) is called
+//                          after each frame while it runs. t before 0 or after the end of the
+//                          preset's run: rejected with an Error saying so; nothing changes
 //   swarmlab.positions()   lab positions [[x, y, z], ...] of the first 10,000 particles
 //   swarmlab.set(changes)  changes what it names, e.g. { theme: 'light', sound: true } (keys in
 //                          web/js_set.cpp); an unknown key or a bad value throws Error naming it
@@ -20,6 +26,9 @@
 //                          clipboard, and shows it on the page; Promise of the link
 //   swarmlab.openLink(hash) opens the preset of a fragment; Promise of "" or the error message
 //   swarmlab.openFile()    the Open preset... button: a file picker, then as load()
+//   swarmlab.pickProgressFile() the Load progress... button: a file picker, then the file's
+//                          lesson progress in place of the progress now; the message line
+//                          says whether it was loaded
 //   swarmlab.download()    the Download preset button; returns the file name
 //   swarmlab.exportCsv()   the samples as CSV (swarmlab run --csv's columns) as a download;
 //                          returns the file name
@@ -142,6 +151,21 @@
     file.text().then(function (text) { openJson(text, file.name, file.name); });
   }
 
+  // A file picker for JSON (a preset, lesson progress): use(file) with the file picked.
+  function pickJsonFile(use) {
+    var input = document.createElement('input');
+    input.type = 'file';
+    input.accept = '.json,application/json';
+    input.style.display = 'none';
+    input.addEventListener('change', function () {
+      var file = input.files && input.files[0];
+      input.remove();
+      if (file) use(file);
+    });
+    document.body.appendChild(input);
+    input.click();
+  }
+
   // { json } or { error } from SwarmlabLink.read, into the app. Returns '' or the message.
   function openLinkResult(result) {
     if (result.error) return refuse(result);
@@ -237,16 +261,51 @@
     return '#lang=' + encodeURIComponent(code) + '&' + fragment.replace(/^#/, '');
   }
 
+  // The seeks under way (swarmlab.seek), by id: { t, resolve, reject, onprogress }. The app
+  // carries a seek on a frame's budget at a time (app/ui/time/time_controls.h); after every
+  // frame each is told its progress, and settled when it ends.
+  var seeks = {};
+  function followSeeks() {
+    if (!Object.keys(seeks).length) return;
+    var now = JSON.parse(Module.ccall('swarmlab_seek_poll', 'string', [], []));
+    now.ended.forEach(function (end) {
+      var seek = seeks[end.id];
+      if (!seek) return;
+      delete seeks[end.id];
+      if (end.reached) return seek.resolve(end.t);
+      var e = new Error('swarmlab.seek(' + seek.t + '): cancelled at t = ' + end.t +
+                        ' (by a new seek, Play or Pause, Cancel, Esc, or another preset)');
+      e.name = 'AbortError';
+      e.cancelled = true;
+      e.t = end.t;
+      seek.reject(e);
+    });
+    var running = now.running && seeks[now.running.id];
+    if (running && running.onprogress) {
+      try { running.onprogress({ progress: now.running.progress, t: now.t }); }
+      catch (e) { console.warn('swarmlab.seek(): onprogress threw: ' + e); }
+    }
+  }
+  (Module.swarmlabEachFrame = Module.swarmlabEachFrame || []).push(followSeeks);
+
   var api = {
     firstFrameMs: null,
     lastMessage: null,
     frames: function () { return frames; },
     time: function () { check(); return Module.ccall('swarmlab_time', 'number', [], []); },
     state: function () { check(); return JSON.parse(Module.ccall('swarmlab_state', 'string', [], [])); },
-    seek: function (t) {
+    seek: function (t, options) {
       check();
-      if (typeof t !== 'number' || !isFinite(t)) throw new Error('swarmlab.seek(t): t must be a finite number');
-      return Module.ccall('swarmlab_seek', 'number', ['number'], [t]);
+      if (typeof t !== 'number' || !isFinite(t))
+        return Promise.reject(new Error('swarmlab.seek(t): t must be a finite number, not ' + String(t)));
+      var started = JSON.parse(Module.ccall('swarmlab_seek_start', 'string', ['number'], [t]));
+      if (started.error) return Promise.reject(new Error('swarmlab.seek(t): ' + started.error));
+      var onprogress = options && typeof options.onprogress === 'function' ? options.onprogress : null;
+      var done = new Promise(function (resolve, reject) {
+        seeks[started.id] = { t: t, resolve: resolve, reject: reject, onprogress: onprogress };
+      });
+      followSeeks();
+      return done;
     },
     positions: function () { check(); return JSON.parse(Module.ccall('swarmlab_positions', 'string', [], [])); },
     preset: function () { check(); return presetText(2); },
@@ -282,17 +341,22 @@
     },
     openFile: function () {
       check();
-      var input = document.createElement('input');
-      input.type = 'file';
-      input.accept = '.json,application/json';
-      input.style.display = 'none';
-      input.addEventListener('change', function () {
-        var file = input.files && input.files[0];
-        input.remove();
-        if (file) openFileObject(file);
+      pickJsonFile(openFileObject);
+    },
+    // Load progress... (the Lessons menu, the progress notice): a file picker; the file's
+    // lesson progress replaces the progress now (js_lessons.cpp says how it went).
+    pickProgressFile: function () {
+      check();
+      pickJsonFile(function (file) {
+        if (file.size > SwarmlabLink.maxPresetBytes) return refuse(SwarmlabLink.tooLarge(file.name, file.size));
+        file.text().then(function (text) {
+          var result = JSON.parse(withHeapText(text, function (pointer) {
+            return Module.ccall('swarmlab_load_progress', 'string', ['number'], [pointer]);
+          }));
+          // The page's message line, a live region: the student hears how it went.
+          notice(result.loaded ? 'info' : 'error', result.message);
+        });
       });
-      document.body.appendChild(input);
-      input.click();
     },
     download: function () { check(); return Module.ccall('swarmlab_download', 'string', [], []); },
     exportCsv: function () { check(); return Module.ccall('swarmlab_export_csv', 'string', [], []); },

@@ -22,8 +22,8 @@ std::string open_preset_json(AppState& state, const std::string& json, const std
 /// The student's lesson progress in the page's localStorage (web_progress_store.cpp).
 std::unique_ptr<ProgressStore> make_web_progress_store();
 
-/// Gives the lesson panel its Share button: the page's address + the lesson's fragment, copied
-/// and shown (js_lessons.cpp).
+/// Gives the lesson panel its Share button (the page's address + the lesson's fragment, copied
+/// and shown) and Load progress... its file picker (js_lessons.cpp).
 void install_lesson_share(AppState& state);
 
 /// Starts a browser download of the running preset (the same JSON a desktop Save writes) and

@@ -52,10 +52,12 @@ std::optional<std::string> Announcer::next(const Situation& now, double wall_sec
   const bool lesson_said =
       !now.lesson.empty() && (!last_ || now.lesson_place != last_->lesson_place || new_turn);
   const bool time_due = now.playing && wall_seconds - said_at_ >= kTimeInterval;
+  const bool notice_said = !now.notice.empty() && (!last_ || now.notice != last_->notice);
   last_ = now;
-  if (!event && !lesson_said && !time_due) return std::nullopt;
+  if (!event && !lesson_said && !time_due && !notice_said) return std::nullopt;
   std::string text = describe(now);
   if (lesson_said) text = event ? now.lesson + " " + text : now.lesson;
+  if (notice_said) text = event || lesson_said || time_due ? now.notice + " " + text : now.notice;
   if (text == said_ && !(lesson_said && new_turn)) return std::nullopt;
   said_ = text;
   said_at_ = wall_seconds;

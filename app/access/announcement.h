@@ -27,6 +27,9 @@ struct Situation {
   /// again), not when only their wording for the device does.
   std::string lesson_place;
   std::size_t lesson_turn = 0;
+  /// A notice said once, first, when it appears or changes, and not repeated with the rest
+  /// (lesson progress not kept as usual: app/ui/lesson_player/progress_record.h); "" when none.
+  std::string notice;
 };
 
 /// "Four masses (paper Fig. 1). Playing, t = 12.5. P = 0.0312, T = 1.05. Particle 3 selected."
@@ -36,7 +39,7 @@ std::string describe(const Situation& s);
 std::string page_title(const Situation& s);
 
 /// Decides when to speak: at once when the preset, playing or paused, the selection or the
-/// error changes; a lesson's new words (a step, feedback) at once, before the rest, and its
+/// error changes; a notice once, first; a lesson's new words (a step, feedback) at once, before the rest, and its
 /// feedback again on each new answer; while playing, at most every kTimeInterval seconds of wall
 /// time for the time and P and T alone; otherwise never twice the same text.
 class Announcer {

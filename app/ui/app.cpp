@@ -249,6 +249,7 @@ void App::layout_windows() {
   if (roomy) ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(pad_y, pad_y));
   draw_help_window(s);
   draw_welcome_window(s);
+  draw_progress_notice(s);
   record_floating_windows(s);
   if (roomy) ImGui::PopStyleVar();
   if (roomy) ImGui::PopStyleVar(4);

@@ -103,9 +103,12 @@ void AppState::revert_draft() {
 }
 
 void AppState::restart() {
+  // A seek under way ends with the run it was in.
+  if (travel.kind == TimeTravel::Kind::to_time && run)
+    travel_ends.push_back({travel.id, run->time(), false});
+  travel = {};
   run = std::make_unique<LiveRun>(preset, engine_threads);
   step_debt = 0;
-  travel = {};
   colour_scale = ColourScale{};
   const swarm::System& s = run->system();
   if (selected && *selected >= s.particles.size()) selected.reset();

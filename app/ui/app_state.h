@@ -154,6 +154,8 @@ struct AppState {
   double step_debt = 0;    ///< fractional steps carried to the next frame
   bool step_once = false;  ///< single step requested while paused
   TimeTravel travel;       ///< a seek or fast-forward under way (time_travel.h)
+  long travels_started = 0;             ///< the last travel's id
+  std::vector<TravelEnd> travel_ends;   ///< the page's seeks that ended, until it reads them
   FastForwardRecord last_fast_forward;  ///< kept after it ends (time_travel.h)
   /// Frames run with a fixed wall-clock step and no time budget (--frames, screenshots), so
   /// that the picture does not depend on the machine's speed.

@@ -131,3 +131,30 @@ TEST_CASE("Announcer: a step is not said again when only its words for the devic
   s.lesson_place = "one-period/4";  // the next step is said
   REQUIRE(a.next(s, 0.2));
 }
+
+TEST_CASE("Announcer: a notice is said once, first, and not with every update after it") {
+  Announcer a;
+  Situation s = four_masses();
+  REQUIRE(a.next(s, 0.0));
+  s.notice = "Your lesson progress cannot be saved here.";
+  const auto first = a.next(s, 0.1);
+  REQUIRE(first);
+  CHECK(*first == s.notice);  // only the notice is new: only it is said
+  int repeated = 0, said = 0;
+  for (int frame = 1; frame <= 1200; ++frame) {  // 20 s playing, then a pause
+    s.t = 12.5 + frame / 60.0;
+    s.playing = frame < 1200;
+    if (const auto text = a.next(s, 0.1 + frame / 60.0)) {
+      ++said;
+      repeated += contains(*text, s.notice);
+    }
+  }
+  CHECK(said >= 4);
+  CHECK(repeated == 0);
+  // A new notice comes before what else changed.
+  s.notice = "Your saved lesson progress could not be read.";
+  s.playing = true;
+  const auto second = a.next(s, 30.0);
+  REQUIRE(second);
+  CHECK(second->rfind(s.notice + " Four masses (paper Fig. 1). Playing", 0) == 0);
+}

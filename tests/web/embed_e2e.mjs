@@ -208,6 +208,21 @@ async function main(url) {
           (await frame.evaluate(() => window.swarmlab.lessonState().id)) === 'gas-at-the-wall', `"${s2.name}"`);
     check('the app keeps drawing after the bad messages', await framesAdvance(frame));
 
+    // 4b. seek through the bridge: answered when it settles (the time reached), while the calls
+    // after it go on at once: a second seek cancels the first, whose answer is its error; a
+    // time beyond the run is refused with the rule.
+    const tEnd = (await frameState(frame)).timeline.t_end;
+    const near = Math.min(0.5, tEnd / 2);
+    const [far, nearer] = await Promise.all([call(page, 's1', 'seek', [tEnd]), call(page, 's2', 'seek', [near])]);
+    check('seek through the bridge: a second seek cancels the first (answered with its error)',
+          far && /cancelled at t = /.test(far.error || ''), JSON.stringify(far));
+    check('seek through the bridge: the second is answered with the time reached',
+          nearer && typeof nearer.result === 'number' && Math.abs(nearer.result - near) < 0.02, JSON.stringify(nearer));
+    const beyond = await call(page, 's3', 'seek', [1e9]);
+    check('seek through the bridge: a time beyond the run is refused with the rule',
+          beyond && /swarmlab\.seek\(t\): t = 1000000000 is beyond the run: t must be from 0 to the end/.test(beyond.error || ''),
+          JSON.stringify(beyond));
+
     // 5. The embed flag both ways through the bridge: the menu bar comes back, and goes again.
     await call(page, 'm1', 'set', [{ embed: false }]);
     const back = await frame.waitForFunction(() => document.querySelectorAll('#parallel-dom [role="menuitem"]').length >= 3, null, { timeout: 20_000 })

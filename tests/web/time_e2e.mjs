@@ -1,4 +1,5 @@
-// Browser checks of time travel (issue 13): swarmlab.seek(t) back and forth lands on the same
+// Browser checks of time travel (issue 13): swarmlab.seek(t) (a Promise of the time reached,
+// awaited through page.evaluate; its bounds are tests/web/storage_e2e.mjs's) back and forth lands on the same
 // positions() to the last digit, with a container too; on the isolated Fig. 1 preset a seek
 // gives the analytic solution (computed here, independently) and the positions of a fresh run
 // taken to the same time; state().t_reached; the End key fast-forwards with its progress

@@ -67,6 +67,7 @@ Situation situation_of(AppState& state) {
   }
   s.selected = state.selected;
   if (state.status_is_error) s.error = state.status;
+  s.notice = state.lessons.progress_notice();
   const LessonSpeech speech = lesson_speech(state.lessons, input_kind(state));
   s.lesson = speech.words;
   s.lesson_place = speech.place;

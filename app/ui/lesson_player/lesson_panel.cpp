@@ -1,6 +1,7 @@
 // [SECTION] prose: wrapped paragraphs with *emphasis*
 // [SECTION] the lesson panel: step text, task, feedback, back and next
 // [SECTION] the welcome window and the Lessons menu
+// [SECTION] the progress notice: progress not kept as usual, download it, load it again
 
 #include "ui/lesson_player/lesson_panel.h"
 
@@ -12,6 +13,7 @@
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/parallel_dom/item_tooltip.h"
 #include "ui/parallel_dom/parallel_dom.h"
+#include "ui/platform/save_dialog.h"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -25,6 +27,12 @@
 
 namespace swarmlab {
 namespace {
+
+/// The progress as a JSON file: a download in the browser, the save dialog on the desktop.
+void download_progress(AppState& state) {
+  request_save(state, {tr("your lesson progress"), "swarmlab-progress.json",
+                       state.lessons.progress_json() + "\n", "application/json", false});
+}
 
 /// Keeps the current window inside the main viewport (after the browser window shrinks, a
 /// phone turns, or the student drags it off), no wider or taller than the viewport.
@@ -436,6 +444,11 @@ void draw_lessons_menu(AppState& state) {
   }
   ImGui::Separator();
   if (ImGui::MenuItem(tr_id("Welcome..."))) state.lessons.show_welcome = true;
+  // The progress as a file, to carry it to another computer or to keep it where the browser
+  // will not.
+  if (ImGui::MenuItem(tr_id("Download progress"))) download_progress(state);
+  if (state.lessons.pick_progress_file && ImGui::MenuItem(tr_id("Load progress...")))
+    state.lessons.pick_progress_file();
   ImGui::EndMenu();
 }
 
@@ -503,6 +516,50 @@ void draw_welcome_window(AppState& state) {
   }
   ImGui::End();
   if (!open) lessons.dismiss_welcome();
+}
+
+// [SECTION] the progress notice: progress not kept as usual, download it, load it again -------
+
+void draw_progress_notice(AppState& state) {
+  LessonSession& lessons = state.lessons;
+  if (lessons.take_progress_notice()) {
+    // Shown once: the window, and the status line (the live region says it once too:
+    // classroom_outputs.cpp).
+    lessons.show_progress_notice = true;
+    state.status = lessons.progress_notice();
+    state.status_is_error = false;
+  }
+  if (!lessons.show_progress_notice) return;
+  const std::string text = lessons.progress_notice();
+  if (text.empty()) {
+    lessons.show_progress_notice = false;
+    return;
+  }
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float font = ImGui::GetFontSize();
+  ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + 0.5f * viewport->Size.x, viewport->Pos.y + 3 * font),
+                          ImGuiCond_Appearing, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowSize(ImVec2(std::min(30 * font, viewport->Size.x - font), 0),
+                           ImGuiCond_Appearing);
+  bool open = true;
+  if (ImGui::Begin(tr_id("Lesson progress"), &open,
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
+                       ImGuiWindowFlags_AlwaysAutoResize)) {
+    keep_inside_viewport();
+    ImGui::PushTextWrapPos(std::min(30 * font, viewport->Size.x - 2 * font));
+    ImGui::TextUnformatted(text.c_str());
+    mirror_text(ItemRole::paragraph, text);
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button(tr_id("Download progress"))) download_progress(state);
+    if (lessons.pick_progress_file) {
+      ImGui::SameLine();
+      if (ImGui::Button(tr_id("Load progress..."))) lessons.pick_progress_file();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button(tr_id("Close"))) open = false;
+  }
+  ImGui::End();
+  if (!open) lessons.show_progress_notice = false;
 }
 
 }  // namespace swarmlab

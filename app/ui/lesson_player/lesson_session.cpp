@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -22,16 +23,6 @@ namespace {
 using json = nlohmann::json;
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
-class MemoryProgressStore final : public ProgressStore {
- public:
-  explicit MemoryProgressStore(std::string text) : text_(std::move(text)) {}
-  std::string load() override { return text_; }
-  void save(const std::string& json) override { text_ = json; }
-
- private:
-  std::string text_;
-};
-
 class FileProgressStore final : public ProgressStore {
  public:
   FileProgressStore() {
@@ -48,18 +39,39 @@ class FileProgressStore final : public ProgressStore {
     std::string text = read_text_file(folder_ + "/progress.json", error);
     return error.empty() ? text : std::string();
   }
-  void save(const std::string& json) override {
-    if (folder_.empty()) return;
+  std::string save(const std::string& json) override {
+    if (folder_.empty()) return tr("no home folder to keep it in");
     std::error_code ignored;
     std::filesystem::create_directories(folder_, ignored);
-    // Progress is a convenience: a read-only home folder must not stop a lesson.
     const std::string error = write_file_atomically(folder_ + "/progress.json", json + "\n");
     if (!error.empty()) std::fprintf(stderr, "swarmlab: lesson progress not saved: %s\n", error.c_str());
+    return error;
+  }
+  std::string set_aside(const std::string& text) override {
+    if (folder_.empty()) return {};
+    char stamp[32];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(stamp, sizeof stamp, "%Y%m%dT%H%M%SZ", std::gmtime(&now));
+    std::string path = folder_ + "/progress.unreadable-" + stamp + ".json";
+    for (int n = 2; std::filesystem::exists(path); ++n)
+      path = folder_ + "/progress.unreadable-" + stamp + "-" + std::to_string(n) + ".json";
+    const std::string error = write_file_atomically(path, text);
+    if (!error.empty()) {
+      std::fprintf(stderr, "swarmlab: unreadable lesson progress not copied: %s\n", error.c_str());
+      return {};
+    }
+    return path;
   }
 
  private:
   std::string folder_;
 };
+
+/// A record's true/false field; anything else (a newer build's, a hand edit) counts as false.
+bool flag(const json& j, const char* key) {
+  const auto found = j.find(key);
+  return found != j.end() && found->is_boolean() && found->get<bool>();
+}
 
 /// The step whose preset sets the scene of step i (the last one at or before it).
 std::size_t scene_of(const Lesson& lesson, std::size_t i) {
@@ -68,6 +80,19 @@ std::size_t scene_of(const Lesson& lesson, std::size_t i) {
 }
 
 }  // namespace
+
+std::string MemoryProgressStore::save(const std::string& json) {
+  if (refuses) return "refused";
+  text = json;
+  return {};
+}
+
+std::string MemoryProgressStore::set_aside(const std::string& record) {
+  if (refuses) return {};
+  const std::string name = "unreadable-" + std::to_string(aside.size() + 1);
+  aside[name] = record;
+  return name;
+}
 
 std::unique_ptr<ProgressStore> make_memory_progress_store(std::string initial) {
   return std::make_unique<MemoryProgressStore>(std::move(initial));
@@ -98,34 +123,31 @@ void LessonSession::load(const std::string& lesson_directory, std::unique_ptr<Pr
   std::string problems;
   shipped_ = load_shipped_lessons(lesson_directory, lookup, problems);
   if (!problems.empty()) std::fprintf(stderr, "%s", problems.c_str());
-  // Progress that cannot be read is started afresh rather than refused: it is the app's own.
   progress_.clear();
   welcomed_ = false;
-  const json j = json::parse(store_->load(), nullptr, false);
-  if (j.is_object()) {
-    welcomed_ = j.value("welcomed", false);
-    if (j.contains("lessons") && j["lessons"].is_object())
-      for (const auto& [id, p] : j["lessons"].items()) {
-        if (!p.is_object()) continue;
-        LessonProgress& lp = progress_[id];
-        if (p.contains("step") && p["step"].is_number_unsigned()) lp.step = p["step"].get<std::size_t>();
-        if (p.contains("solved") && p["solved"].is_array())
-          for (const json& s : p["solved"])
-            if (s.is_number_unsigned()) lp.solved.insert(s.get<std::size_t>());
-        if (p.contains("predicted") && p["predicted"].is_object())
-          for (const auto& [step, option] : p["predicted"].items())
-            if (option.is_number_unsigned())
-              lp.predicted[std::size_t(std::atol(step.c_str()))] = option.get<std::size_t>();
-        if (p.contains("answers") && p["answers"].is_object())
-          for (const auto& [step, a] : p["answers"].items()) {
-            if (!a.is_object() || !a.contains("answer") || !a["answer"].is_string()) continue;
-            StepAnswer& sa = lp.answers[std::size_t(std::atol(step.c_str()))];
-            sa.answer = a["answer"].get<std::string>();
-            if (a.contains("correct") && a["correct"].is_boolean()) sa.correct = a["correct"].get<bool>();
-            if (a.contains("tries") && a["tries"].is_number_unsigned()) sa.tries = a["tries"].get<std::size_t>();
-          }
-        lp.finished = p.value("finished", false) == true;
-      }
+  trouble_ = ProgressTrouble::none;
+  notice_due_ = false;
+  aside_.clear();
+  const std::string text = store_->load();
+  switch (progress_record_kind(text)) {
+    case ProgressRecordKind::none:
+      break;
+    case ProgressRecordKind::readable:
+      read_progress(text);
+      break;
+    case ProgressRecordKind::unreadable:
+      // Lessons start afresh, the record kept for whoever can mend it; if it cannot be copied
+      // it is not written over.
+      aside_ = store_->set_aside(text);
+      trouble(aside_.empty() ? ProgressTrouble::unreadable_left
+                             : ProgressTrouble::unreadable_set_aside);
+      break;
+    case ProgressRecordKind::newer: {
+      // Left alone; only whether the welcome was seen is read, so that it does not return.
+      welcomed_ = flag(json::parse(text, nullptr, false), "welcomed");
+      trouble(ProgressTrouble::newer);
+      break;
+    }
   }
   // The welcome is shown once: on the first start, whether or not it is closed.
   show_welcome = !welcomed_;
@@ -135,7 +157,47 @@ void LessonSession::load(const std::string& lesson_directory, std::unique_ptr<Pr
   }
 }
 
-void LessonSession::save_progress() {
+void LessonSession::read_progress(const std::string& text) {
+  const json j = json::parse(text, nullptr, false);
+  progress_.clear();
+  welcomed_ = flag(j, "welcomed");
+  if (!j.contains("lessons") || !j["lessons"].is_object()) return;
+  for (const auto& [id, p] : j["lessons"].items()) {
+    if (!p.is_object()) continue;
+    LessonProgress& lp = progress_[id];
+    if (p.contains("step") && p["step"].is_number_unsigned()) lp.step = p["step"].get<std::size_t>();
+    if (p.contains("solved") && p["solved"].is_array())
+      for (const json& s : p["solved"])
+        if (s.is_number_unsigned()) lp.solved.insert(s.get<std::size_t>());
+    if (p.contains("predicted") && p["predicted"].is_object())
+      for (const auto& [step, option] : p["predicted"].items())
+        if (option.is_number_unsigned())
+          lp.predicted[std::size_t(std::atol(step.c_str()))] = option.get<std::size_t>();
+    if (p.contains("answers") && p["answers"].is_object())
+      for (const auto& [step, a] : p["answers"].items()) {
+        if (!a.is_object() || !a.contains("answer") || !a["answer"].is_string()) continue;
+        StepAnswer& sa = lp.answers[std::size_t(std::atol(step.c_str()))];
+        sa.answer = a["answer"].get<std::string>();
+        if (a.contains("correct") && a["correct"].is_boolean()) sa.correct = a["correct"].get<bool>();
+        if (a.contains("tries") && a["tries"].is_number_unsigned()) sa.tries = a["tries"].get<std::size_t>();
+      }
+    lp.finished = flag(p, "finished");
+  }
+}
+
+void LessonSession::trouble(ProgressTrouble t) {
+  if (t == trouble_) return;
+  trouble_ = t;
+  notice_due_ = t != ProgressTrouble::none;
+}
+
+bool LessonSession::take_progress_notice() {
+  const bool due = notice_due_;
+  notice_due_ = false;
+  return due;
+}
+
+std::string LessonSession::progress_json() const {
   json lessons = json::object();
   for (const auto& [id, p] : progress_) {
     json predicted = json::object();
@@ -148,7 +210,31 @@ void LessonSession::save_progress() {
     lessons[id] = {{"step", p.step},       {"solved", p.solved},     {"predicted", predicted},
                    {"answers", answers},   {"finished", p.finished}};
   }
-  store_->save(json{{"version", 1}, {"welcomed", welcomed_}, {"lessons", lessons}}.dump());
+  return json{{"version", kProgressVersion}, {"welcomed", welcomed_}, {"lessons", lessons}}.dump();
+}
+
+void LessonSession::save_progress() {
+  if (!progress_writes(trouble_)) return;  // a record left alone stays as it is
+  if (!store_->save(progress_json()).empty())
+    trouble(ProgressTrouble::not_saved);
+  else if (trouble_ == ProgressTrouble::not_saved)
+    trouble(ProgressTrouble::none);  // room again (a quota freed): saved as usual, nothing to say
+}
+
+std::string LessonSession::load_progress_json(const std::string& text) {
+  switch (progress_record_kind(text)) {
+    case ProgressRecordKind::none:
+    case ProgressRecordKind::unreadable:
+      return tr("This file is not Swarm Lab lesson progress.");
+    case ProgressRecordKind::newer:
+      return tr("This file was saved by a newer version of Swarm Lab.");
+    case ProgressRecordKind::readable:
+      break;
+  }
+  read_progress(text);
+  welcomed_ = true;
+  save_progress();
+  return {};
 }
 
 void LessonSession::dismiss_welcome() { show_welcome = false; }

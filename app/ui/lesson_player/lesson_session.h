@@ -14,22 +14,42 @@
 #include <vector>
 
 #include "lessons/lesson.h"
+#include "ui/lesson_player/progress_record.h"
 #include "ui/time/live_run.h"
 
 namespace swarmlab {
 
 /// Where the student's progress lives between visits: a file on the desktop, localStorage in
-/// the browser. One JSON text, read once and written on every change.
+/// the browser. One JSON text, read once and written on every change (progress_record.h says
+/// what is done with which text).
 class ProgressStore {
  public:
   virtual ~ProgressStore() = default;
   virtual std::string load() = 0;  ///< "" when there is none yet
-  virtual void save(const std::string& json) = 0;
+  /// Writes the record: "" or why it could not (the session says so once).
+  virtual std::string save(const std::string& json) = 0;
+  /// Keeps a record that cannot be read under a new name beside it, never over another: that
+  /// name, or "" when it could not (the record is then left where it is).
+  virtual std::string set_aside(const std::string& text) = 0;
 };
 
 /// Keeps nothing between visits (scripted runs and screenshots leave the user's progress alone).
+/// Tests read what it holds and make it refuse.
+class MemoryProgressStore final : public ProgressStore {
+ public:
+  explicit MemoryProgressStore(std::string initial = {}) : text(std::move(initial)) {}
+  std::string load() override { return text; }
+  std::string save(const std::string& json) override;
+  std::string set_aside(const std::string& record) override;
+
+  std::string text;                       ///< the record
+  std::map<std::string, std::string> aside;  ///< records set aside, by name
+  bool refuses = false;                   ///< saves and set-asides fail, as a full storage's
+};
+
 std::unique_ptr<ProgressStore> make_memory_progress_store(std::string initial = {});
-/// $XDG_CONFIG_HOME/swarmlab/progress.json (or ~/.config/...), written atomically.
+/// $XDG_CONFIG_HOME/swarmlab/progress.json (or ~/.config/...), written atomically; a record set
+/// aside goes beside it as progress.unreadable-<time>.json.
 std::unique_ptr<ProgressStore> make_file_progress_store();
 
 /// A student's last answer to one step's task, for the summary.
@@ -133,6 +153,23 @@ class LessonSession {
   bool show_welcome = false;
   void dismiss_welcome();
 
+  /// Why progress is not kept as usual now (progress_record.h); none when it is.
+  ProgressTrouble progress_trouble() const { return trouble_; }
+  /// The notice for progress_trouble() in the language in use, "" when none.
+  std::string progress_notice() const { return progress_trouble_text(trouble_, aside_); }
+  /// True once for each new trouble: the app then shows the notice and says it aloud.
+  bool take_progress_notice();
+  /// The progress as the store keeps it: the file a student downloads to keep it.
+  std::string progress_json() const;
+  /// Progress from such a file, in place of the progress now (and saved where the store
+  /// allows): "" or why the file was refused, in the language in use.
+  std::string load_progress_json(const std::string& text);
+  /// Set by the browser: a file picker whose file goes to load_progress_json (the notice's and
+  /// the Lessons menu's Load progress...). Unset on the desktop.
+  std::function<void()> pick_progress_file;
+  /// The notice window (lesson_panel.h) is up.
+  bool show_progress_notice = false;
+
   /// What the answer field of a measure task holds (the panel edits it).
   std::string typed;
   /// The last refusal of a lesson (a broken link or file), shown in the panel.
@@ -140,6 +177,8 @@ class LessonSession {
 
  private:
   void save_progress();
+  void read_progress(const std::string& text);
+  void trouble(ProgressTrouble t);
 
   std::vector<Lesson> shipped_;
   std::optional<Lesson> open_;
@@ -154,6 +193,9 @@ class LessonSession {
   std::map<std::string, LessonProgress> progress_;
   bool welcomed_ = false;
   std::unique_ptr<ProgressStore> store_ = make_memory_progress_store();
+  ProgressTrouble trouble_ = ProgressTrouble::none;
+  std::string aside_;            ///< where an unreadable record was kept
+  bool notice_due_ = false;      ///< take_progress_notice() has a new trouble to give
   PresetLookup lookup_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "swarm/physics/regime.h"
 
@@ -19,21 +20,29 @@ long coarse_steps(AppState& state) {
   return std::max(1L, std::lround(length / 100 / state.preset.dt));
 }
 
+/// Ends the travel under way; the page hears how its seek ended.
+void end_travel(AppState& state, bool reached) {
+  const TimeTravel& travel = state.travel;
+  if (travel.kind == TimeTravel::Kind::to_time) state.travel_ends.push_back({travel.id, state.run->time(), reached});
+  if (travel.kind != TimeTravel::Kind::seek && reached) state.last_fast_forward.reached = true;
+  state.travel = {};
+}
+
 }  // namespace
 
-void travel_to(AppState& state, TimeTravel::Kind kind, long target) {
+long travel_to(AppState& state, TimeTravel::Kind kind, long target) {
   const swarm::Timeline& timeline = state.run->timeline();
   target = std::clamp(target, 0L, timeline.end_step());
-  state.run->jump_towards(target);
   const long chunk = state.travel.active() ? state.travel.chunk : 1;
-  state.travel = {kind, state.run->step(), target, chunk};
+  if (state.travel.active()) end_travel(state, false);  // overtaken
+  state.run->jump_towards(target);
+  state.travel = {kind, ++state.travels_started, state.run->step(), target, chunk};
   state.playing = false;
   state.step_debt = 0;
   if (kind != TimeTravel::Kind::seek) state.last_fast_forward = {kind, 0, {}, false};
-  if (state.run->step() == target) {
-    state.travel = {};
-    if (kind != TimeTravel::Kind::seek) state.last_fast_forward.reached = true;
-  }
+  const long id = state.travel.id;
+  if (state.run->step() == target) end_travel(state, true);
+  return id;
 }
 
 void step_back(AppState& state, bool coarse) {
@@ -53,15 +62,17 @@ void fast_forward_to_run_end(AppState& state) {
   travel_to(state, TimeTravel::Kind::to_run_end, state.run->timeline().end_step());
 }
 
-void cancel_travel(AppState& state) { state.travel = {}; }
+void cancel_travel(AppState& state) {
+  if (state.travel.active()) end_travel(state, false);
+}
 
 void continue_travel(AppState& state, double budget_ms) {
   using clock = std::chrono::steady_clock;
   TimeTravel& travel = state.travel;
   if (!travel.active()) return;
   LiveRun& run = *state.run;
-  run.jump_towards(travel.target);
   const clock::time_point start = clock::now();
+  run.jump_towards(travel.target);
   double spent_ms = 0;
   while (run.step() < travel.target && !run.finished() && spent_ms < budget_ms) {
     const clock::time_point chunk_start = clock::now();
@@ -75,11 +86,9 @@ void continue_travel(AppState& state, double budget_ms) {
       travel.chunk /= 2;
     spent_ms = std::chrono::duration<double, std::milli>(clock::now() - start).count();
   }
-  if (run.step() >= travel.target || run.finished()) {
-    if (travel.kind != TimeTravel::Kind::seek && run.step() >= travel.target)
-      state.last_fast_forward.reached = true;
-    travel = {};
-  }
+  if (travel.kind != TimeTravel::Kind::seek)
+    state.last_fast_forward.longest_ms = std::max(state.last_fast_forward.longest_ms, spent_ms);
+  if (run.step() >= travel.target || run.finished()) end_travel(state, run.step() >= travel.target);
 }
 
 void play_or_continue(AppState& state) {
@@ -89,13 +98,21 @@ void play_or_continue(AppState& state) {
   state.playing = !state.playing;
 }
 
-double seek_now(AppState& state, double t) {
-  const long target = state.run->timeline().step_of(t);
-  cancel_travel(state);
-  state.playing = false;
-  state.run->jump_towards(target);
-  state.run->advance(target - state.run->step());
-  return state.run->time();
+std::string seek_refusal(const AppState& state, double t) {
+  const swarm::Timeline& timeline = state.run->timeline();
+  const double end = double(timeline.end_step()) * state.preset.dt;
+  // Half a step of slack either side: t is rounded to a step.
+  if (std::isfinite(t) && t >= -0.5 * state.preset.dt && t <= end + 0.5 * state.preset.dt) return {};
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "t = %.10g is beyond the run: t must be from 0 to the end of the preset's run, "
+                "t = %.10g",
+                t, end);
+  return text;
+}
+
+long seek_in_frames(AppState& state, double t) {
+  return travel_to(state, TimeTravel::Kind::to_time, state.run->timeline().step_of(t));
 }
 
 }  // namespace swarmlab

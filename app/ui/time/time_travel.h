@@ -8,10 +8,13 @@
 
 namespace swarmlab {
 
-/// A move of the run to a target step, under way over several frames.
+/// A move of the run to a target step, under way over several frames. A seek of the window
+/// (the timeline, step back) goes unseen; one asked for by the page (to_time, the JS API's
+/// seek) and the fast-forwards show their progress.
 struct TimeTravel {
-  enum class Kind { none, seek, to_stage_end, to_run_end };
+  enum class Kind { none, seek, to_time, to_stage_end, to_run_end };
   Kind kind = Kind::none;
+  long id = 0;      ///< which travel this is (AppState counts them): the page follows its seek
   long from = 0;    ///< the step it started from (after the jump to a snapshot)
   long target = 0;  ///< the step it goes to
   long chunk = 1;   ///< steps between looks at the clock, doubled or halved to fit the budget
@@ -23,6 +26,14 @@ struct TimeTravel {
   }
 };
 
+/// How a seek the page asked for (Kind::to_time) ended, kept until the page reads it.
+struct TravelEnd {
+  long id = 0;
+  double t = 0;  ///< the run's time when it ended
+  /// At its target; false: cancelled (a new seek, Play or Pause, Cancel or Esc, a new preset).
+  bool reached = false;
+};
+
 /// The last fast-forward as its progress bar showed it, kept after it ends: what a test
 /// (state().last_fast_forward) reads instead of catching a bar that may last a frame or two.
 struct FastForwardRecord {
@@ -31,6 +42,7 @@ struct FastForwardRecord {
   int frames = 0;                                  ///< frames its progress bar was drawn
   std::vector<double> progress;  ///< the progress drawn, one a frame (the first kKept)
   bool reached = false;          ///< it got to its target (not cancelled or overtaken)
+  double longest_ms = 0;         ///< the most one frame spent on it (ms of wall time)
 };
 
 }  // namespace swarmlab

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "lessons/lesson_file.h"
@@ -183,6 +184,93 @@ TEST_CASE("lesson session: Share links a shipped lesson by id and a lesson from 
   REQUIRE(session.open_json(json, &scene).empty());
   CHECK(session.share_fragment() == lesson_link_fragment("", json));
   CHECK(session.next_lesson() == nullptr);  // not one of the shipped row
+}
+
+namespace {
+
+/// A session over `store` (kept by the caller, to look into).
+LessonSession over(MemoryProgressStore* store) {
+  LessonSession session;
+  session.load(SWARM_LESSON_DIR, std::unique_ptr<ProgressStore>(store),
+               shipped_preset_lookup(SWARM_PRESET_DIR));
+  return session;
+}
+
+/// Answers the first option of lesson "springs-to-cm" (a recorded answer) and finishes it.
+void make_progress(LessonSession& session) {
+  session.open(shipped_lesson(session, "springs-to-cm"));
+  bool play = false;
+  session.answer_option(1, &play);
+  session.finish();
+}
+
+}  // namespace
+
+TEST_CASE("lesson session: progress that cannot be saved is said once, and still lasts the visit") {
+  auto* store = new MemoryProgressStore();
+  store->refuses = true;
+  LessonSession session = over(store);
+  // The first visit's save (the welcome seen) is refused: one notice.
+  CHECK(session.progress_trouble() == ProgressTrouble::not_saved);
+  CHECK(session.take_progress_notice());
+  CHECK_FALSE(session.take_progress_notice());
+  make_progress(session);
+  CHECK_FALSE(session.take_progress_notice());  // said once, not at every change
+  CHECK(store->text.empty());
+  REQUIRE(session.progress_of("springs-to-cm"));
+  CHECK(session.progress_of("springs-to-cm")->finished);
+  // The file to download holds it, and loads again into a new visit.
+  const std::string file = session.progress_json();
+  LessonSession next = loaded();
+  CHECK(next.progress_of("springs-to-cm") == nullptr);
+  REQUIRE(next.load_progress_json(file).empty());
+  REQUIRE(next.progress_of("springs-to-cm"));
+  CHECK(next.progress_of("springs-to-cm")->finished);
+  // Storage that takes it again: saved as usual, nothing more to say.
+  store->refuses = false;
+  session.restart();
+  session.next();
+  CHECK(session.progress_trouble() == ProgressTrouble::none);
+  CHECK_FALSE(store->text.empty());
+}
+
+TEST_CASE("lesson session: a record that cannot be read is kept aside, never destroyed") {
+  const std::string broken = R"({"version": 1, "welcomed": true, "lessons": {"springs-to-c)";
+  auto* store = new MemoryProgressStore(broken);
+  LessonSession session = over(store);
+  CHECK(session.progress_trouble() == ProgressTrouble::unreadable_set_aside);
+  REQUIRE(store->aside.size() == 1);
+  CHECK(store->aside.begin()->second == broken);
+  CHECK(session.progress_notice().find(store->aside.begin()->first) != std::string::npos);
+  CHECK(session.take_progress_notice());
+  // Lessons start afresh and are saved in its place.
+  CHECK(session.show_welcome);
+  CHECK(progress_record_kind(store->text) == ProgressRecordKind::readable);
+
+  // Where it cannot even be copied aside, it is left where it is.
+  auto* full = new MemoryProgressStore(broken);
+  full->refuses = true;
+  LessonSession left = over(full);
+  CHECK(left.progress_trouble() == ProgressTrouble::unreadable_left);
+  make_progress(left);
+  CHECK(full->text == broken);
+  CHECK(full->aside.empty());
+}
+
+TEST_CASE("lesson session: a newer version's record is left alone, and the welcome not shown again") {
+  const std::string newer = R"({"version": 2, "welcomed": true, "lessons": {"x": {"stars": 3}}})";
+  auto* store = new MemoryProgressStore(newer);
+  LessonSession session = over(store);
+  CHECK(session.progress_trouble() == ProgressTrouble::newer);
+  CHECK(session.take_progress_notice());
+  CHECK_FALSE(session.show_welcome);
+  make_progress(session);
+  CHECK(store->text == newer);  // progress made now lasts the visit
+  CHECK(session.progress_of("springs-to-cm"));
+  // A file from a newer build, or no progress at all, is refused with a reason.
+  CHECK_FALSE(session.load_progress_json(newer).empty());
+  CHECK_FALSE(session.load_progress_json("{\"preset\": 1}").empty());
+  CHECK_FALSE(session.load_progress_json("not json").empty());
 }
 
 }  // namespace swarmlab
