@@ -17,7 +17,8 @@ import { chromium } from 'playwright-core';
 import * as harness from './harness.mjs';
 import { person } from './person.mjs';
 
-const { root, webDir, outDir, chromiumPath, check, runSuite, clockAdvances, pageErrors, consoleErrors, watch, freePort } = harness;
+const { root, webDir, outDir, chromiumPath, check, runSuite, clockAdvances, pageErrors, consoleErrors, watch, freePort,
+        published } = harness;
 
 const OFFLINE_TEXT = 'Offline: running from this browser\u2019s saved copy.';
 const PROBE = 'fonts/offline-e2e-probe.txt';  // a file fetched on demand, as a font subset is
@@ -148,9 +149,11 @@ async function main() {
     const probe = await page.evaluate((p) => fetch(p).then((r) => r.text()), PROBE);
     let caches1 = await cached(page);
     const files = caches1[`swarmlab-${v1}`] || [];
-    const wanted = ['index.html', 'swarmlab.js', 'swarmlab.wasm', 'offline.js', 'manifest.webmanifest', 'icon-192.png', 'icon-512.png'];
+    // By the names the build published them under (with their content's hash).
+    const wanted = ['index.html', 'manifest.webmanifest',
+                    ...['swarmlab.js', 'swarmlab.wasm', 'offline.js', 'icon-192.png', 'icon-512.png'].map(published)];
     check('the cache holds the page, its script, its wasm, the manifest and the icons, keyed on the version',
-          Object.keys(caches1).length === 1 && wanted.every((f) => files.includes(f)), JSON.stringify(caches1));
+          Object.keys(caches1).length === 1 && wanted.every((f) => f && files.includes(f)), JSON.stringify(caches1));
     check('a file fetched on demand (fonts/...) goes into the cache when first fetched',
           probe === 'probe' && files.includes(PROBE), files.join(', '));
 
@@ -230,7 +233,7 @@ async function main() {
     const caches2 = await cached(page);
     st = await offlineState(page);
     check('a new version is fetched on the next visit and replaces the cached one', took &&
-          Object.keys(caches2).join() === `swarmlab-${v1}-next` && caches2[`swarmlab-${v1}-next`].includes('swarmlab.wasm'),
+          Object.keys(caches2).join() === `swarmlab-${v1}-next` && caches2[`swarmlab-${v1}-next`].includes(published('swarmlab.wasm')),
           `installed ${st.installed} ${tookMs} ms after the visit, caches ${JSON.stringify(Object.keys(caches2))}`);
     check('the page that fetched it runs on unchanged, without a notice', st.version === v1 && st.offline === false &&
           !(await page.evaluate(() => window.noticesShown.some((t) => /updated/.test(t)))));
