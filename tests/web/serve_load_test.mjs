@@ -9,9 +9,12 @@
 // (Content-Encoding, Vary) and decodes to the file built, the cache headers (hashed names kept
 // forever, the rest revalidated: a 304 for an unchanged index.html), the wasm's MIME type;
 // prints the bytes sent and the slowest client's time per round.
-//   node tests/web/serve_load_test.mjs        (after scripts/web.sh --build-only)
+//   node tests/web/serve_load_test.mjs           (after scripts/web.sh --build-only)
+//   node tests/web/serve_load_test.mjs --nginx   the same against Debian's nginx with
+//        web/serve/nginx.conf (the README's lines for a school's server; needs nginx and
+//        libnginx-mod-http-brotli-static; its temporary files go to build/serve/nginx)
 import { spawn, spawnSync } from 'node:child_process';
-import { existsSync, readFileSync } from 'node:fs';
+import { existsSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
 import http from 'node:http';
 import { createServer } from 'node:net';
 import { join, dirname, resolve } from 'node:path';
@@ -25,8 +28,10 @@ const CONNECTIONS = 6;  // per client, as a browser opens to one server
 const LIMIT_MS = 120_000;
 const HASHED = /\.[0-9a-f]{8}\.[0-9a-z]+$/;
 const FOREVER = 'public, max-age=31536000, immutable';
-const TYPES = { '.wasm': 'application/wasm', '.js': 'text/javascript', '.html': 'text/html',
-                '.webmanifest': 'application/manifest+json', '.png': 'image/png' };
+// (Debian's nginx says application/javascript, which browsers take alike.)
+const TYPES = { '.wasm': /^application\/wasm/, '.js': /^(text|application)\/javascript/, '.html': /^text\/html/,
+                '.webmanifest': /^application\/manifest\+json/, '.png': /^image\/png/ };
+const nginx = process.argv.includes('--nginx');
 
 let passed = 0, failed = 0;
 function check(name, ok, detail = '') {
@@ -90,7 +95,7 @@ function problem(path, r, accept) {
   if (encoding !== expected) return `${path}: Content-Encoding ${encoding}, not ${expected}`;
   if (compressible && !/Accept-Encoding/i.test(r.headers.vary || '')) return `${path}: Vary ${r.headers.vary}`;
   if (r.headers['cache-control'] !== cache) return `${path}: Cache-Control ${r.headers['cache-control']}`;
-  if (!(r.headers['content-type'] || '').startsWith(type)) return `${path}: Content-Type ${r.headers['content-type']}`;
+  if (!type.test(r.headers['content-type'] || '')) return `${path}: Content-Type ${r.headers['content-type']}`;
   if (!decode(r.body, encoding).equals(readFileSync(file))) return `${path}: not the file built`;
   return '';
 }
@@ -112,11 +117,27 @@ async function student(port, accept) {
   return { ms, responses, bytes: responses.reduce((sum, [, r]) => sum + r.body.length, 0) };
 }
 
+// web/serve/nginx.conf's site on loopback, in an nginx of its own (not the system's).
+function startNginx(port) {
+  const dir = join(root, 'build/serve/nginx');
+  mkdirSync(dir, { recursive: true });
+  const site = readFileSync(join(root, 'web/serve/nginx.conf'), 'utf8')
+    .replace(/listen 8080;/, `listen 127.0.0.1:${port};`).replace(/root \/srv\/swarmlab;/, `root ${webDir};`);
+  const temp = ['client_body', 'proxy', 'fastcgi', 'uwsgi', 'scgi'].map((t) => `${t}_temp_path ${dir}/${t};`).join(' ');
+  writeFileSync(join(dir, 'nginx.conf'), `load_module /usr/lib/nginx/modules/ngx_http_brotli_static_module.so;
+pid ${dir}/nginx.pid; error_log stderr; daemon off; events {}
+http { include /etc/nginx/mime.types; default_type application/octet-stream; access_log off; ${temp}
+${site} }
+`);
+  return spawn('nginx', ['-c', join(dir, 'nginx.conf'), '-e', 'stderr'], { stdio: ['ignore', 'ignore', 'pipe'] });
+}
+
 async function main() {
   if (!check('build/web holds a published page', existsSync(join(webDir, 'index.html')) && existsSync(join(webDir, 'service_worker.js')),
              'scripts/web.sh --build-only first')) return;
   const port = await freePort();
-  server = spawn(join(root, 'scripts/web.sh'), ['--no-build', '--port', String(port)], { stdio: ['ignore', 'ignore', 'pipe'] });
+  server = nginx ? startNginx(port)
+                 : spawn(join(root, 'scripts/web.sh'), ['--no-build', '--port', String(port)], { stdio: ['ignore', 'ignore', 'pipe'] });
   let said = '';
   server.stderr.on('data', (d) => { said += d; });
   let up = false;
@@ -124,15 +145,17 @@ async function main() {
     up = await get(undefined, port, '', {}).then((r) => r.status === 200, () => false);
     if (!up) await new Promise((r) => setTimeout(r, 100));
   }
-  if (!check('scripts/web.sh --no-build serves build/web on loopback', up, said.trim().split('\n').slice(-3).join(' | '))) return;
+  if (!check(`${nginx ? 'nginx with web/serve/nginx.conf' : 'scripts/web.sh --no-build'} serves build/web on loopback`, up, said.trim().split('\n').slice(-3).join(' | '))) return;
 
   // --lan: the same config on every interface (read, not served: this test stays on loopback).
-  const lan = spawnSync('caddy', ['adapt', '--adapter', 'caddyfile', '--config', join(root, 'web/serve/Caddyfile')],
-                        { env: { ...process.env, SWARMLAB_BIND: '0.0.0.0', SWARMLAB_PORT: String(port) }, encoding: 'utf8' });
-  const adapted = lan.status === 0 ? JSON.parse(lan.stdout) : {};
-  check('for --lan the config listens on every interface, with no admin endpoint',
-        JSON.stringify(adapted.apps?.http?.servers?.srv0?.listen) === JSON.stringify([`0.0.0.0:${port}`]) &&
-        adapted.admin?.disabled === true, lan.stderr.trim().split('\n').pop());
+  if (!nginx) {
+    const lan = spawnSync('caddy', ['adapt', '--adapter', 'caddyfile', '--config', join(root, 'web/serve/Caddyfile')],
+                          { env: { ...process.env, SWARMLAB_BIND: '0.0.0.0', SWARMLAB_PORT: String(port) }, encoding: 'utf8' });
+    const adapted = lan.status === 0 ? JSON.parse(lan.stdout) : {};
+    check('for --lan the config listens on every interface, with no admin endpoint',
+          JSON.stringify(adapted.apps?.http?.servers?.srv0?.listen) === JSON.stringify([`0.0.0.0:${port}`]) &&
+          adapted.admin?.disabled === true, lan.stderr.trim().split('\n').pop());
+  }
 
   const index = await get(undefined, port, '', { 'Accept-Encoding': 'gzip' });
   const again = await get(undefined, port, '', { 'Accept-Encoding': 'gzip', 'If-None-Match': index.headers.etag });
