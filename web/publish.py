@@ -78,22 +78,19 @@ def write_if_changed(path, content):
 
 
 def compress(path, changed):
+    """The .br and .gz copies beside path (made again only if it changed or one is missing);
+    their paths."""
     if not path.endswith(COMPRESSED):
         return []
-    made = []
-    for ext, command in (('.br', ['brotli', '--best', '--force', '--output=' + path + '.br.tmp', path]),
-                         ('.gz', None)):
+    commands = {'.br': ['brotli', '--best', '--stdout', path],
+                '.gz': ['gzip', '-9', '--no-name', '--stdout', path]}
+    for ext, command in commands.items():
         out = path + ext
-        made.append(out)
-        if not changed and os.path.exists(out):
-            continue
-        if command:
-            subprocess.run(command, check=True)
-        else:
-            with open(path + '.gz.tmp', 'wb') as f:
-                subprocess.run(['gzip', '-9', '--no-name', '--stdout', path], stdout=f, check=True)
-        os.replace(out + '.tmp', out)
-    return made
+        if changed or not os.path.exists(out):
+            with open(out + '.tmp', 'wb') as f:
+                subprocess.run(command, stdout=f, check=True)
+            os.replace(out + '.tmp', out)
+    return [path + ext for ext in commands]
 
 
 def fill(name, text, tokens):
@@ -155,8 +152,10 @@ def main(argv):
     hashed_names = set(published.values())
     for name, content in contents.items():
         path = os.path.join(out, name)
-        # A hashed name is its content: present means done (compressed copies too).
-        changed = write_if_changed(path, content) if name not in hashed_names or not os.path.exists(path) else False
+        if name in hashed_names and os.path.exists(path):
+            changed = False  # a hashed name is its content: present means done
+        else:
+            changed = write_if_changed(path, content)
         written.append(name)
         written += [os.path.relpath(p, out) for p in compress(path, changed)]
 
