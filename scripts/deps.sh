@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Swarm Lab needs, only those still missing, so a second run
-# costs a second. Usage: scripts/deps.sh [native] [desktop] [web] [webtest] [fuzz]
+# costs a second. Usage: scripts/deps.sh [native] [desktop] [web] [serve] [webtest] [fuzz]
 set -euo pipefail
 
 # Each group holds everything its own build or run needs, so that any one script works on a
@@ -8,7 +8,9 @@ set -euo pipefail
 declare -A groups=(
   [native]="g++ cmake make python3 libeigen3-dev nlohmann-json3-dev doctest-dev libcli11-dev libbenchmark-dev librsvg2-bin parallel"
   [desktop]="dpkg-dev libsdl2-dev libstb-dev fonts-dejavu-core fonts-noto-cjk fonttools xvfb xauth xdotool"
-  [web]="emscripten nodejs npm cmake make python3 dpkg-dev libeigen3-dev nlohmann-json3-dev doctest-dev libstb-dev fonts-noto-cjk fonttools librsvg2-bin"
+  [web]="emscripten nodejs npm cmake make python3 dpkg-dev libeigen3-dev nlohmann-json3-dev doctest-dev libstb-dev fonts-noto-cjk fonttools librsvg2-bin brotli gzip"
+  # The web server of scripts/web.sh (web/serve/Caddyfile).
+  [serve]="caddy"
   [webtest]="chromium"
   [fuzz]="clang libclang-rt-14-dev libeigen3-dev nlohmann-json3-dev nodejs"
 )

@@ -19,14 +19,17 @@ import * as harness from './harness.mjs';
 const { root, webDir, outDir, check, base64url, shipped, openApp, state, clockAdvances, clockStands,
         keepsDrawing, screenshot, clickButton, cliMessage, launchBrowser, runSuite, pageErrors,
         consoleErrors, consoleLog, WASM_LIMIT, START_LIMIT_MS, DEFAULT_PRESET, VIEW_RECTS, PLOT_RECTS, vividIn,
-        cliPath } = harness;
+        cliPath, published } = harness;
 
 async function main(url) {
   // 1. The build output.
-  for (const f of ['index.html', 'swarmlab.js', 'swarmlab.wasm']) {
-    if (!check(`build/web/${f} exists`, existsSync(join(webDir, f)))) return;
+  if (!check('build/web/index.html exists', existsSync(join(webDir, 'index.html')))) return;
+  for (const f of ['swarmlab.js', 'swarmlab.wasm']) {
+    const name = published(f);
+    if (!check(`build/web has ${f}, under a name with its content's hash`,
+               /\.[0-9a-f]{8}\./.test(name) && existsSync(join(webDir, name)), String(name))) return;
   }
-  const wasmSize = statSync(join(webDir, 'swarmlab.wasm')).size;
+  const wasmSize = statSync(join(webDir, published('swarmlab.wasm'))).size;
   check('swarmlab.wasm < 4 MB', wasmSize < WASM_LIMIT, `${(wasmSize / 1048576).toFixed(2)} MB`);
 
   const context = await launchBrowser({ width: 1280, height: 720 });
@@ -303,7 +306,7 @@ async function main(url) {
   await noGl.goto(url, { waitUntil: 'load' });
   await noGl.waitForFunction(() => window.swarmlabError, null, { timeout: 10_000 }).catch(() => {});
   const msg = await noGl.evaluate(() => ({
-    error: window.swarmlabError || '', loaded: !!window.Module || !!document.querySelector('script[src^="swarmlab.js"]'),
+    error: window.swarmlabError || '', loaded: !!window.Module || !!document.querySelector('script[src^="swarmlab."]'),
     visible: !document.getElementById('overlay').classList.contains('hidden'),
   }));
   check('without WebGL2: a clear message and no download', /WebGL 2/.test(msg.error) && !msg.loaded && msg.visible,

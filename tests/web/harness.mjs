@@ -19,6 +19,14 @@ export const chromiumPath = process.env.CHROMIUM || '/usr/bin/chromium';
 // The native CLI, to compare validation messages with (skipped when it is not built).
 export const cliPath = process.env.SWARMLAB_CLI || join(root, 'build/app/swarmlab');
 export const WASM_LIMIT = 4 * 1024 * 1024;
+/** The name under which the build published a file that changes with a build (web/publish.py):
+ *  'swarmlab.wasm' is 'swarmlab.3f2a9c1b.wasm', with its content's hash, as index.html names it
+ *  (window.swarmlabFiles); undefined for a name it does not know. */
+export function published(name) {
+  const page = readFileSync(join(webDir, 'index.html'), 'utf8');
+  const map = page.match(/window\.swarmlabFiles = (\{[^}]*\});/);
+  return map ? JSON.parse(map[1])[name] : undefined;
+}
 export const START_LIMIT_MS = 3000;  // navigation start to the first frame
 export const DEFAULT_PRESET = 'Four masses (paper Fig. 1)';
 

@@ -78,9 +78,9 @@ async function main(url) {
   // 4. Chinese: the font is fetched only now, and its glyphs are drawn (the view's text is
   //    mirrored, the pixels are looked at in the screenshot).
   const fontRequests = [];
-  page.on('request', (r) => { if (/fonts\/noto-sans-sc-subset\.otf$/.test(r.url())) fontRequests.push(r.url()); });
+  page.on('request', (r) => { if (/fonts\/noto-sans-sc-subset\.[0-9a-f]{8}\.otf$/.test(r.url())) fontRequests.push(r.url()); });
   check('no Chinese font is fetched for Spanish and German', fontRequests.length === 0);
-  const fetched = page.waitForResponse((r) => /fonts\/noto-sans-sc-subset\.otf$/.test(r.url()), { timeout: 30_000 })
+  const fetched = page.waitForResponse((r) => /fonts\/noto-sans-sc-subset\.[0-9a-f]{8}\.otf$/.test(r.url()), { timeout: 30_000 })
     .then((r) => r.ok(), () => false);
   check('View > Language > 中文（简体） switches to Chinese', await chooseLanguage(me, page, 'de', 'zh-CN'), await language(page));
   check('the Chinese font subset is fetched when Chinese is chosen', await fetched, fontRequests.join(', '));

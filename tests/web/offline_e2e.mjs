@@ -17,10 +17,13 @@ import { chromium } from 'playwright-core';
 import * as harness from './harness.mjs';
 import { person } from './person.mjs';
 
-const { root, webDir, outDir, chromiumPath, check, runSuite, clockAdvances, pageErrors, consoleErrors, watch, freePort } = harness;
+const { root, webDir, outDir, chromiumPath, check, runSuite, clockAdvances, pageErrors, consoleErrors, watch, freePort,
+        published } = harness;
 
 const OFFLINE_TEXT = 'Offline: running from this browser\u2019s saved copy.';
 const PROBE = 'fonts/offline-e2e-probe.txt';  // a file fetched on demand, as a font subset is
+// The Chinese font as an older build published it (another content, another hash in its name).
+const OLD_FONT = 'fonts/noto-sans-sc-subset.00000000.otf';
 const TYPES = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.wasm': 'application/wasm',
                 '.png': 'image/png', '.svg': 'image/svg+xml', '.webmanifest': 'application/manifest+json',
                 '.json': 'application/json', '.txt': 'text/plain', '.woff2': 'font/woff2' };
@@ -35,6 +38,7 @@ async function startSite() {
     if (site.failFiles && path !== 'service_worker.js') { res.writeHead(503); res.end(); return; }
     let body, modified = new Date(0);
     if (path === PROBE) body = Buffer.from('probe');
+    else if (path === OLD_FONT) body = Buffer.from('an older build\'s font');
     else {
       const file = normalize(join(webDir, path));
       if (!file.startsWith(webDir) || !existsSync(file) || !statSync(file).isFile()) { res.writeHead(404); res.end(); return; }
@@ -146,11 +150,14 @@ async function main() {
     const v1 = st.version;
     check('online, the page does not say it is offline', st.offline === false && st.onLine === true);
     const probe = await page.evaluate((p) => fetch(p).then((r) => r.text()), PROBE);
+    await page.evaluate((p) => fetch(p).then((r) => r.text()), OLD_FONT);
     let caches1 = await cached(page);
     const files = caches1[`swarmlab-${v1}`] || [];
-    const wanted = ['index.html', 'swarmlab.js', 'swarmlab.wasm', 'offline.js', 'manifest.webmanifest', 'icon-192.png', 'icon-512.png'];
+    // By the names the build published them under (with their content's hash).
+    const wanted = ['index.html', 'manifest.webmanifest',
+                    ...['swarmlab.js', 'swarmlab.wasm', 'offline.js', 'icon-192.png', 'icon-512.png'].map(published)];
     check('the cache holds the page, its script, its wasm, the manifest and the icons, keyed on the version',
-          Object.keys(caches1).length === 1 && wanted.every((f) => files.includes(f)), JSON.stringify(caches1));
+          Object.keys(caches1).length === 1 && wanted.every((f) => f && files.includes(f)), JSON.stringify(caches1));
     check('a file fetched on demand (fonts/...) goes into the cache when first fetched',
           probe === 'probe' && files.includes(PROBE), files.join(', '));
 
@@ -230,11 +237,16 @@ async function main() {
     const caches2 = await cached(page);
     st = await offlineState(page);
     check('a new version is fetched on the next visit and replaces the cached one', took &&
-          Object.keys(caches2).join() === `swarmlab-${v1}-next` && caches2[`swarmlab-${v1}-next`].includes('swarmlab.wasm'),
+          Object.keys(caches2).join() === `swarmlab-${v1}-next` && caches2[`swarmlab-${v1}-next`].includes(published('swarmlab.wasm')),
           `installed ${st.installed} ${tookMs} ms after the visit, caches ${JSON.stringify(Object.keys(caches2))}`);
     check('the page that fetched it runs on unchanged, without a notice', st.version === v1 && st.offline === false &&
           !(await page.evaluate(() => window.noticesShown.some((t) => /updated/.test(t)))));
     check('a file fetched on demand is carried into the new version\'s cache', (caches2[`swarmlab-${v1}-next`] || []).includes(PROBE));
+    const font = published('fonts/noto-sans-sc-subset.otf');
+    check('a font fetched under an older build\'s name is fetched again under this build\'s, the old one left behind',
+          (caches1[`swarmlab-${v1}`] || []).includes(OLD_FONT) &&
+          (caches2[`swarmlab-${v1}-next`] || []).includes(font) && !caches2[`swarmlab-${v1}-next`].includes(OLD_FONT),
+          `${font}; before ${(caches1[`swarmlab-${v1}`] || []).filter((f) => f.startsWith('fonts/'))}, after ${(caches2[`swarmlab-${v1}-next`] || []).filter((f) => f.startsWith('fonts/'))}`);
     error = await visit(page);
     await page.waitForFunction(() => window.noticesShown.includes('Swarm Lab was updated.'), null, { timeout: 10_000 }).catch(() => {});
     st = await offlineState(page);

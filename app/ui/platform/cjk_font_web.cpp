@@ -19,10 +19,12 @@ namespace swarmlab {
 namespace {
 
 // (EM_JS bodies: double quotes and no backslashes.) The service worker, when there is one,
-// keeps the fetched font for offline visits.
+// keeps the fetched font for offline visits. The page names the font as the build published
+// it, with its content's hash (window.swarmlabFiles, web/publish.py).
 // clang-format off
 EM_JS(void, fetch_cjk_font, (), {
-  fetch("fonts/noto-sans-sc-subset.otf")
+  var name = "fonts/noto-sans-sc-subset.otf";
+  fetch((window.swarmlabFiles && window.swarmlabFiles[name]) || name)
     .then(function(r) { if (!r.ok) throw new Error("HTTP " + r.status); return r.arrayBuffer(); })
     .then(function(b) { FS.writeFile("/cjk-font.otf", new Uint8Array(b)); _swarmlab_cjk_font_ready(); })
     .catch(function(e) { console.warn("Swarm Lab: the Chinese font did not load: " + e); _swarmlab_cjk_font_ready(); });
