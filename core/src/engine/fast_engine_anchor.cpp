@@ -14,11 +14,16 @@ constexpr std::size_t kShellBudget = 100;
 
 }  // namespace
 
-Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in) {
+Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs& in) {
+  const double base = offset.norm();
   const double Rw = in.R;
   constexpr int kBins = GapHistogram::kBins;
   double extra = kMarginFloor * Rw;
-  if (in.k != 0) extra = std::max(extra, kMarginDriftTimes * in.cm_speed / in.omega);
+  if (in.k != 0) {
+    const double u = kMarginDriftTimes / in.omega;
+    extra = std::max(extra, kMarginDriftTimes * in.cm_speed / in.omega +
+                                0.5 * in.cm_acceleration * u * u);
+  }
   if (in.k > 0) {
     const std::size_t budget = std::max<std::size_t>(64, in.particles / kShellBudget);
     std::size_t within = 0;
@@ -32,6 +37,10 @@ Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in) {
   anchor.threshold = Rw - anchor.margin;
   anchor.threshold2 = anchor.threshold * anchor.threshold;
   anchor.renew_level = base + 0.5 * extra;
+  if (in.floor) {
+    anchor.floor_low = offset.z() - extra;
+    anchor.floor_renew = offset.z() - 0.5 * extra;
+  }
   return anchor;
 }
 

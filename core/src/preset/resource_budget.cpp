@@ -19,14 +19,21 @@ constexpr double kOutputBytesPerParticle = 1400;
 constexpr double kSampleBytes = 2 * double(sizeof(Sample));  // with a vector's spare capacity
 constexpr double kComparisonSampleBytes = 2 * 24;  // a ComparisonSample, likewise
 constexpr double kOutputBytesPerSample = 2000;     // JSON tree and text, CSV, figures
-/// Gravity, a floor or drag take the analytic method off the fast engine (fast_engine_applies):
+/// An inelastic floor takes the analytic method off the fast engine (fast_engine_applies):
 /// the reference engine's particle-step costs about as much as 50 of the fast engine's
-/// (6e7 against 3e9 a second, README's Performance table).
+/// (6e7 against 3e9 a second, README's Performance table). Gravity, mass-proportional drag and
+/// an elastic floor stay on it at up to kForcedParticleStepCost times its plain cost
+/// (bench/forces_bench.cpp).
 constexpr double kReferenceParticleStepCost = 50;
+constexpr double kForcedParticleStepCost = 2;
 
 bool off_the_fast_engine(const Preset& p) {
+  return p.floor && p.floor->restitution != 1 && p.method == Method::analytic;
+}
+
+bool forced_on_the_fast_engine(const Preset& p) {
   const bool forces = (p.gravity && *p.gravity != Vec3::Zero()) || p.drag || p.floor;
-  return forces && p.method == Method::analytic;
+  return forces && p.method == Method::analytic && !off_the_fast_engine(p);
 }
 
 // [Appendix B walls and contacts] A moving or hot wall runs on the reference engine, which
@@ -42,14 +49,16 @@ double particle_step_weight(const Preset& p) {
   if (p.sphere_radius) return kHardSphereCost;
   if (off_the_fast_engine(p)) return kReferenceParticleStepCost;
   if (!p.wall_moves.empty() || p.wall_temperature) return kReferenceWallCost;
+  if (forced_on_the_fast_engine(p)) return kForcedParticleStepCost;
   return 1;
 }
 
 /// Why a particle-step of p costs particle_step_weight(p) times the fast engine's.
 const char* particle_step_weight_reason(const Preset& p) {
   if (p.sphere_radius) return "hard-sphere contacts";
-  if (off_the_fast_engine(p)) return "gravity, a floor or drag: the reference engine";
-  return "a moving or hot wall";
+  if (off_the_fast_engine(p)) return "an inelastic floor: the reference engine";
+  if (!p.wall_moves.empty() || p.wall_temperature) return "a moving or hot wall";
+  return "gravity, a floor or drag";
 }
 
 double force_evaluations_per_step(Method m) {

@@ -27,8 +27,9 @@ struct EngineConfig {
   /// Threads for the engine's work, 1 or 2 (more count as 2; the browser always uses 1).
   /// Results do not depend on it: sums are combined in a fixed order.
   int threads = default_threads();
-  /// Gravity and drag (Appendix B), and a floor beside the container: they run on the
-  /// reference engine (fast_engine_applies is false).
+  /// Gravity and drag (Appendix B), and a floor beside the container: the fast engine runs
+  /// gravity, mass-proportional drag and an elastic floor; drag b on chosen particles and an
+  /// inelastic floor run on the reference engine (fast_engine_applies).
   ExternalForces forces;
   std::optional<Floor> floor;
 

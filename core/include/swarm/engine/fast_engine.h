@@ -3,7 +3,8 @@
 /// the number of wall hits rather than with N times the number of steps.
 ///
 /// Each lab position is split as r_i(t) = y_i(t) + o(t). y_i is a free oscillator about the
-/// origin (y'' = -k y, k = J M) that changes only at particle i's own wall hits; o = R_cm - Y,
+/// origin (y'' = -k y, k = J M; under mass-proportional drag gamma, the damped y'' = -k y -
+/// gamma y') that changes only at particle i's own wall hits; o = R_cm - Y,
 /// with Y = sum m_i y_i / M, is one shared 3-vector. Right after a re-base y_i is particle i's
 /// displacement from the CM and Y = 0; later hits move Y away from 0. A hit of particle j changes
 /// v_j by dv: that is y_j's velocity alone, plus m_j dv / M on the shared R_cm and Y velocities,
@@ -11,7 +12,10 @@
 ///
 /// |y_i(t)|^2 is a constant plus a sinusoid in 2 omega t (exponentials for J < 0, a quadratic
 /// for J = 0), so the first time particle i can come within a margin G of the wall is known
-/// in closed form (core/src/engine/fast_engine_window.h); a particle is checked only in the steps it
+/// in closed form (core/src/engine/fast_engine_window.h); under drag it is that times the
+/// decaying exp(-gamma t), bounded by its value when the window is made. Gravity moves only
+/// R_cm, along a parabola; an elastic floor is a plane wall with a window of its own, for the
+/// times y_i's z can be below it; a particle is checked only in the steps it
 /// is due, which a timing wheel keeps (core/src/engine/timing_wheel.h). Within a few steps of that
 /// window its exact predicted positions at the next step ends are looked at
 /// (core/src/engine/fast_engine_lookahead.h), so it is checked again only when it can actually hit.
@@ -43,7 +47,10 @@
 namespace swarm {
 
 /// Whether make_fast_engine can run this configuration: the analytic method with paper
-/// collisions (with a container or without: isolated, it is the analytic solution).
+/// collisions (with a container or without: isolated, it is the analytic solution), also
+/// under gravity, mass-proportional drag and an elastic floor. Not drag b on chosen particles
+/// (each particle's own rate couples them all through the CM: no closed form per particle),
+/// an inelastic floor (particles come to rest on it), moving or thermal walls, hard spheres.
 bool fast_engine_applies(const EngineConfig& config);
 
 /// The most particles the fast engine takes (ids are packed into 26 bits).
@@ -56,7 +63,7 @@ std::unique_ptr<Engine> make_fast_engine(System initial, const EngineConfig& con
 /// Work counters of a fast engine, for benchmarks and tests.
 struct FastEngineStats {
   std::int64_t checks = 0;          ///< particles whose hit predicate was evaluated
-  std::int64_t hits = 0;            ///< wall hits
+  std::int64_t hits = 0;            ///< wall hits (floor bounces not included)
   std::int64_t rebases = 0;         ///< O(N) re-bases (each sets a new anchor)
   std::int64_t reschedules = 0;     ///< O(N) full reschedules (radius or dt changed)
   std::int64_t expired = 0;         ///< particles rescheduled because their anchor expired
