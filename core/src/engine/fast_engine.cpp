@@ -155,11 +155,15 @@ class FastEngine final : public Engine {
     // For J >= 0 a new anchor comes with a re-base, which also renews the margin's statistics.
     // For J < 0 the anchors are renewed without one, but Y, which the kicks make grow like
     // exp(Omega tau), must stay small: measured on the fireball, letting |Y| reach 0.02 R
-    // instead of 0.005 R makes the energy drift 40 times larger.
+    // instead of 0.005 R makes the energy drift 40 times larger. Under gravity or drag the
+    // CM keeps moving against the wall (the wall holds the swarm up; drag slows it), so an
+    // anchor lives only a few dozen steps and is renewed without a re-base too.
+    const bool anchors_in_o1 = k_ < 0 || forced_;
     const Anchor& current = anchors_.current();
-    const bool rebased = epoch_too_old(dt) ||
-                         (k_ >= 0 ? current.wants_renewal(current.offset(motion_, d.f1, step_flow))
-                                  : (d.f1.xc * motion_.aY + d.f1.xs * motion_.bY).norm() >
+    const bool rebased =
+        epoch_too_old(dt) ||
+        (!anchors_in_o1 ? current.wants_renewal(current.offset(motion_, d.f1, step_flow))
+                        : k_ < 0 && (d.f1.xc * motion_.aY + d.f1.xs * motion_.bY).norm() >
                                         kMaxRepulsiveY * length());
     if (rebased) {
       rebase();
@@ -172,8 +176,8 @@ class FastEngine final : public Engine {
                        config_.floor ? config_.floor->z : -std::numeric_limits<double>::infinity());
     if (schedule_all_pending_)
       schedule_all();
-    else if (k_ < 0 &&
-             (step_ - anchors_.current().start >= kRepulsiveAnchorSteps ||
+    else if (anchors_in_o1 &&
+             ((k_ < 0 && step_ - anchors_.current().start >= kRepulsiveAnchorSteps) ||
               anchors_.current().wants_renewal(anchors_.current().offset(motion_, d.f1, step_flow))))
       next_anchor();
     redo_lookahead_if_kicks_too_large();
@@ -409,7 +413,6 @@ class FastEngine final : public Engine {
                                     k_,
                                     omega(),
                                     motion_.V_cm.norm(),
-                                    motion_.g.norm(),
                                     config_.floor.has_value(),
                                     orbits_.size(),
                                     &gaps_};

@@ -19,11 +19,7 @@ Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs&
   const double Rw = in.R;
   constexpr int kBins = GapHistogram::kBins;
   double extra = kMarginFloor * Rw;
-  if (in.k != 0) {
-    const double u = kMarginDriftTimes / in.omega;
-    extra = std::max(extra, kMarginDriftTimes * in.cm_speed / in.omega +
-                                0.5 * in.cm_acceleration * u * u);
-  }
+  if (in.k != 0) extra = std::max(extra, kMarginDriftTimes * in.cm_speed / in.omega);
   if (in.k > 0) {
     const std::size_t budget = std::max<std::size_t>(64, in.particles / kShellBudget);
     std::size_t within = 0;

@@ -98,14 +98,13 @@ struct MarginInputs {
   double k = 0;         ///< J M
   double omega = 0;     ///< sqrt|k|
   double cm_speed = 0;  ///< |V_cm|
-  double cm_acceleration = 0;  ///< |g|: gravity bends the CM's drift into a parabola
   bool floor = false;  ///< whether the anchor also bounds the offset's z for a floor
   std::size_t particles = 0;
   const GapHistogram* gaps = nullptr;  ///< J > 0: from the last epoch's start
 };
 
 /// An anchor whose offset is `offset` now. Its margin covers that, the drift of
-/// the CM (and its fall under gravity) over a few time units, and, when few particles can come near the wall (the
+/// the CM over a few time units, and, when few particles can come near the wall (the
 /// attractive expansion's later stages), as much more as leaves at most N / 100 of them
 /// within reach: a wide margin then costs little and lets the anchor live long. With a floor,
 /// the offset's z may sink by as much as the margin's width beyond |offset|.
