@@ -347,8 +347,8 @@ class FastEngine final : public Engine {
 
   bool epoch_too_old(double dt) const {
     if (rebase_pending_) return true;
-    if (k_ > 0) return omega() * (tau_ + dt) > kMaxAttractivePhase;
     if (gamma_ * (tau_ + dt) > kMaxDragDecay) return true;
+    if (k_ > 0) return omega() * (tau_ + dt) > kMaxAttractivePhase;
     if (k_ < 0) return omega() * (tau_ + dt) > kMaxRepulsivePhase;
     return tau_ + dt > kMaxFreeSteps * dt;
   }
@@ -419,7 +419,7 @@ class FastEngine final : public Engine {
     anchors_.make_current(fast::anchor_with_margin(next, offset, margin));
   }
 
-  /// A new current anchor without a re-base (J < 0): O(1).
+  /// A new current anchor without a re-base (J < 0, or under gravity or drag): O(1).
   void next_anchor() {
     anchors_.retire_current();
     start_anchor();
