@@ -50,6 +50,12 @@ int main(int argc, char** argv) {
                  "Speak this language: en, es, de, fr, pt-BR or zh-CN (default: the one chosen "
                  "last in View > Language, else the system's; English with --frames)");
 
+  int window_threads = 0;
+  app.add_option("--threads", window_threads,
+                 "Engine threads for the window's runs: any count (default: every hardware "
+                 "thread; the results are the same)")
+      ->check(CLI::Range(1, 65535));
+
   std::string items;
   app.add_option("--items", items,
                  "After every frame, write its items (role, name, rectangle) to this JSON "
@@ -67,8 +73,10 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--png", run.png, "With --plots: a PNG of each figure too (needs rsvg-convert)")
       ->needs(plots);
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress bar and no table on the terminal");
-  run_cmd->add_option("--threads", run.threads, "Engine threads, 1 or 2 (the results are the same)")
-      ->check(CLI::Range(1, 2));
+  run_cmd->add_option("--threads", run.threads,
+                      "Engine threads: any count (default: every hardware thread; the results "
+                      "are the same to the last bit)")
+      ->check(CLI::Range(1, 65535));
   CLI::Option* run_seed = run_cmd->add_option(
       "--seed", run.seed,
       "Draw the generated swarm from this seed instead of particles.seed (an ensemble's run)");
@@ -122,8 +130,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 4096));
   ensemble_cmd
       ->add_option("--threads", ensemble.threads,
-                   "Engine threads per run, 1 or 2 (default: 1 when runs share the cores)")
-      ->check(CLI::Range(1, 2));
+                   "Engine threads per run: any count (default: 1 when runs share the cores, "
+                   "else every hardware thread; the results are the same)")
+      ->check(CLI::Range(1, 65535));
   plan_cmd->add_flag("--slurm", plan.slurm, "Also write DIR/array.sbatch, a Slurm job array");
   plan_cmd->add_option("--at-once", plan.slurm_at_once, "With --slurm: at most this many tasks at once")
       ->check(CLI::NonNegativeNumber);
@@ -174,7 +183,7 @@ int main(int argc, char** argv) {
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop(
       {window_preset, frames, screenshot, select, presentation, plot_tab, sound, lesson_summary,
-       items, lang});
+       items, lang, window_threads});
 #else
   std::fprintf(stderr, "swarmlab: this build has no desktop window; see swarmlab --help\n");
   return 2;

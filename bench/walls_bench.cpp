@@ -40,10 +40,12 @@ void run_steps(benchmark::State& state, std::unique_ptr<Engine> engine, double d
   state.counters["hits/step"] = double(hits) / double(state.iterations());
 }
 
-/// Hard spheres filling 15 % of the room the centres have (the shipped preset's packing).
+/// Hard spheres filling 15 % of the room the centres have (the shipped preset's packing), on
+/// state.range(1) threads.
 void BM_HardSpheres(benchmark::State& state) {
   const long n = long(state.range(0));
   EngineConfig config;
+  config.threads = int(state.range(1));
   config.container_radius = 1.0;
   config.sphere_radius = std::cbrt(0.15 / double(n)) * 0.9;
   run_steps(state, make_engine(gas(n), config), 1e-3);
@@ -63,7 +65,7 @@ void BM_Wall(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_HardSpheres)->Name("walls/hard_spheres")->Arg(4000)->Arg(40000)->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HardSpheres)->Name("walls/hard_spheres")->ArgsProduct({{4000, 40000}, {1, 2, 4}})->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wall<0>)->Name("walls/plain_fast")->Arg(4000)->Arg(40000)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wall<1>)->Name("walls/plain_reference")->Arg(4000)->Arg(40000)->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Wall<2>)->Name("walls/thermal")->Arg(4000)->Arg(40000)->UseRealTime()->Unit(benchmark::kMillisecond);

@@ -4,13 +4,13 @@
 #                            Emscripten, then the doctest suite natively and under node, the CLI
 #                            as a process, the desktop window under Xvfb, native == wasm, the
 #                            browser suites and the walkthroughs in headless Chromium, and a
-#                            minute of fuzzing. About 35 minutes on a fresh clone of a 2-core
+#                            minute of fuzzing. About 25 minutes on a fresh clone of a 2-core
 #                            machine.
 #   scripts/test.sh --quick  before a commit: the doctest suite, the CLI tests and one browser
 #                            smoke test, under 3 minutes once built.
 # Installs what is missing first. Each stage runs through ctest's labels (unit, cli, desktop,
 # wasm, web, walkthrough, fuzz, smoke) where it can; a failed test stage does not stop the later
-# ones; after the builds the browser tests run beside the others. Ends with a table of the
+# ones; the native and the wasm lane run side by side from the start. Ends with a table of the
 # stages and their times; exits non-zero if any stage failed.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -64,33 +64,56 @@ wasm_build() {
     { [ -f build-wasm/CMakeCache.txt ] || emcmake cmake -S . -B build-wasm -DCMAKE_BUILD_TYPE=Release >/dev/null; } &&
     cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab swarmlab_web
 }
-build "native build" scripts/build.sh
-build "wasm build: core, tests, CLI for node, the page" wasm_build
 
-# Two lanes at once: the browser (its suites one at a time, then the walkthroughs two at a
-# time, a core a page) beside the native, wasm and fuzzing checks. The browser suites' timing
-# limits leave room for a loaded machine, not for three pages at once: they never run beside
-# the walkthroughs. Each lane's output goes to its log, shown after.
-mkdir -p build/test-logs
-browser_lane() {
-  stage "browser suites, one at a time (ctest -L web)" native_ctest -L web
-  stage "walkthroughs: every lesson on four devices, two at a time (ctest -L walkthrough)" \
-    native_ctest -L walkthrough -j2
+# Two lanes from the start, each building what it needs and then testing it, so that one
+# lane's single-threaded stretches (configuring, linking, SDL2's configure, emcc's wasm link,
+# a page waiting on its frames) are filled by the other's work:
+#   native: the native build, the doctest, CLI and desktop tests, fuzzing (its own build),
+#           then, once the wasm build is done, the doctest suite under node and native == wasm;
+#   wasm:   the wasm build, then, once the native build is done (ctest runs from build/), the
+#           browser suites one at a time and the walkthroughs two at a time. The browser
+#           suites' timing limits leave room for a loaded machine, not for three pages at
+#           once: they never run beside the walkthroughs.
+# A lane waits for the other's build through a file in build/test-logs that says how it ended.
+# Each lane's output goes to its log, shown after.
+logs=build/test-logs
+mkdir -p "$logs"
+rm -f "$logs"/*.built
+built() { echo "$2" >"$logs/$1.built"; }
+# await NAME: waits until the build NAME has ended; true if it succeeded.
+await() {
+  while [ ! -f "$logs/$1.built" ]; do sleep 2; done
+  [ "$(cat "$logs/$1.built")" = ok ]
 }
-checks_lane() {
+native_lane() {
+  if stage "native build" scripts/build.sh; then built native ok; else built native failed; return 1; fi
   stage "doctest, CLI, desktop window (ctest -L 'unit|cli|desktop')" native_ctest -L 'unit|cli|desktop' -j2
+  stage "fuzzing, a minute (ctest -L fuzz)" native_ctest -L fuzz
+  await wasm || return 1
   stage "doctest suite under node (ctest in build-wasm)" bash -c 'cd build-wasm && ctest --output-on-failure'
   stage "native and wasm reach the same final state" python3 tests/wasm/same_final_state.py \
     build/app/swarmlab build-wasm/app/swarmlab.js \
     tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
     assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
-  stage "fuzzing, a minute (ctest -L fuzz)" native_ctest -L fuzz
 }
-echo "== two lanes: browser (build/test-logs/browser.log) and checks (build/test-logs/checks.log)"
-browser_lane >build/test-logs/browser.log 2>&1 &
-browser=$!
-checks_lane >build/test-logs/checks.log 2>&1
-wait $browser
-cat build/test-logs/checks.log build/test-logs/browser.log
-failed && exit 1
+wasm_lane() {
+  if stage "wasm build: core, tests, CLI for node, the page" wasm_build; then built wasm ok
+  else built wasm failed; return 1; fi
+  await native || return 1
+  stage "browser suites, one at a time (ctest -L web)" native_ctest -L web
+  stage "walkthroughs: every lesson on four devices, two at a time (ctest -L walkthrough)" \
+    native_ctest -L walkthrough -j2
+}
+echo "== two lanes: native ($logs/native.log) and wasm, then the browser ($logs/wasm.log)"
+wasm_lane >"$logs/wasm.log" 2>&1 &
+wasm=$!
+native_lane >"$logs/native.log" 2>&1
+wait $wasm
+cat "$logs/native.log" "$logs/wasm.log"
+# A build that failed leaves its lane's tests unrun: say so in the table.
+for lane in native wasm; do
+  [ "$(cat "$logs/$lane.built" 2>/dev/null)" = ok ] ||
+    printf '%-66s %6s   %s\n' "tests after the $lane build" "-" "NOT RUN" >>"$rows"
+done
+failed || grep -q 'NOT RUN$' "$rows" && exit 1
 exit 0

@@ -175,8 +175,9 @@ CLI::App* add_bench_subcommand(CLI::App& app, BenchOptions& o) {
          "Afterwards, check the first STEPS steps against the reference engine, step by step")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--threads", o.threads,
-                  "Threads for the engine (1 or 2; default 2 where there are two cores)")
-      ->check(CLI::Range(1, 2));
+                  "Threads for the engine: any count (default: every hardware thread; the "
+                  "results are the same)")
+      ->check(CLI::Range(1, 65535));
   return cmd;
 }
 

@@ -17,7 +17,7 @@ struct BenchOptions {
   std::string engine = "fast";        // fast | reference
   std::string preset_path;            // headline, fireball: this preset instead of the built-in
   long compare_steps = 0;             // also check the first steps against the reference engine
-  int threads = 0;                    // 0: the default (2 where there are two cores)
+  int threads = 0;                    // 0: the default (every hardware thread)
 };
 
 /// Registers `bench` on app; the options are filled when it runs.

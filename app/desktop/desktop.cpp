@@ -80,6 +80,10 @@ int run_desktop(const DesktopOptions& options) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
     return 1;
   }
+  if (options.threads > 0) {
+    f.app->state().engine_threads = options.threads;
+    f.app->state().restart();
+  }
   // A lesson file (swarmlab LESSON.json) opens as a lesson over the default preset.
   std::string lesson_text, lesson_read_error;
   if (!options.preset_path.empty()) {

@@ -20,6 +20,7 @@ struct DesktopOptions {
   /// The language to speak (a code of app/i18n/language.h); empty: the one remembered, else
   /// the system's, English in scripted runs (frames > 0).
   std::string language;
+  int threads = 0;  ///< engine threads for the runs; 0: the default (swarm::default_threads)
 };
 
 /// Opens the window and runs until it is closed (or for options.frames frames).

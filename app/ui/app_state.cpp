@@ -103,7 +103,7 @@ void AppState::revert_draft() {
 }
 
 void AppState::restart() {
-  run = std::make_unique<LiveRun>(preset);
+  run = std::make_unique<LiveRun>(preset, engine_threads);
   step_debt = 0;
   travel = {};
   colour_scale = ColourScale{};

@@ -148,6 +148,7 @@ struct AppState {
   std::function<void(AppState&)> storage_controls;
 
   std::unique_ptr<LiveRun> run;
+  int engine_threads = 0;  ///< threads of the runs' engines (desktop --threads); 0: the default
   bool playing = true;
   double speed = 1;        ///< simulated time per second of wall time
   double step_debt = 0;    ///< fractional steps carried to the next frame

@@ -82,6 +82,24 @@ fi
 "$bin" run "$work/good.json" --out "$work/no/such/dir/r.json" --quiet 2>"$work/stderr" &&
   bad "unwritable output accepted" || { grep -q "cannot write here" "$work/stderr" && ok || bad "unwritable: $(cat "$work/stderr")"; }
 
+# --threads takes any count, and the run's numbers do not change with it: 1, 2 and 7 threads
+# (more than this machine's cores) write the same result, summary and final state to the bit.
+printf '%s' '{"J": 5.6e-05, "particles": {"count": 4000, "mass": {"min": 4.0, "max": 5.0},
+  "position_radius": 1.0, "velocity": {"speed": 1.0}, "seed": 7}, "container": {"radius": 1.0},
+  "dt": 0.01, "duration": 20, "sample_every": 100}' >"$work/threads.json"
+for t in 1 2 7; do
+  "$bin" run "$work/threads.json" --threads $t --out "$work/threads-$t.json" --quiet ||
+    bad "--threads $t failed"
+done
+python3 - "$work"/threads-{1,2,7}.json <<'PY' && ok || bad "--threads changed the results"
+import json, sys
+runs = [json.load(open(p)) for p in sys.argv[1:]]
+assert runs[0]["summary"]["wall_hits"] > 100
+for r in runs[1:]:
+    assert r["final"] == runs[0]["final"] and r["samples"] == runs[0]["samples"]
+PY
+"$bin" run "$work/threads.json" --threads 0 --quiet 2>/dev/null && bad "--threads 0 accepted" || ok
+
 # Output files that cannot hurt (app/files/atomic_file.h). A run of a few seconds, to tell a
 # refusal before the run from one after it, and to interrupt.
 printf '{"J": 1, "method": "rk4", "particles": {"count": 400, "position_radius": 1, "velocity": {"speed": 1}}, "dt": 0.001, "duration": 6}' >"$work/long.json"

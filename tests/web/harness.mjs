@@ -1,8 +1,9 @@
 // What every browser suite in tests/web/ shares: the served build/web, one headless Chromium
 // with a persistent profile, pages that report their errors, screenshots measured by colour,
-// clicks, the CLI's validation message, and the "N passed, M failed" line. Every wait is on a
-// condition (the state an action should produce), never on a frame count or a sleep. A suite
-// calls runSuite(name, overallMs, main) with main(url) doing its checks.
+// clicks, the CLI's validation message, and the "N passed, M failed in S s" line (each check's
+// line ends with the seconds since the suite started). Every wait is on a condition (the
+// state an action should produce), never on a frame count or a sleep. A suite calls
+// runSuite(name, overallMs, main) with main(url) doing its checks.
 import { chromium } from 'playwright-core';
 import { spawn, spawnSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, rmSync, existsSync, writeFileSync, readFileSync } from 'node:fs';
@@ -22,9 +23,13 @@ export const START_LIMIT_MS = 3000;  // navigation start to the first frame
 export const DEFAULT_PRESET = 'Four masses (paper Fig. 1)';
 
 export let passed = 0, failed = 0;
+const suiteStart = Date.now();
+// Each line ends with the seconds since the suite started, so that a slow suite's log says
+// where its time went.
+const since = () => ` [${((Date.now() - suiteStart) / 1000).toFixed(1)} s]`;
 export function check(name, ok, detail = '') {
-  if (ok) { passed++; console.log(`ok    ${name}${detail ? ' (' + detail + ')' : ''}`); }
-  else { failed++; console.log(`FAIL  ${name}${detail ? ': ' + detail : ''}`); }
+  if (ok) { passed++; console.log(`ok    ${name}${detail ? ' (' + detail + ')' : ''}${since()}`); }
+  else { failed++; console.log(`FAIL  ${name}${detail ? ': ' + detail : ''}${since()}`); }
   return ok;
 }
 export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
@@ -48,7 +53,7 @@ export async function cleanup() {
   if (profile) rmSync(profile, { recursive: true, force: true });
 }
 export function finish() {
-  console.log(`${passed} passed, ${failed} failed`);
+  console.log(`${passed} passed, ${failed} failed in ${((Date.now() - suiteStart) / 1000).toFixed(1)} s`);
   process.exit(failed > 0 || passed === 0 ? 1 : 0);
 }
 

@@ -74,7 +74,14 @@ async function walk(url, name) {
   const { page, started, error } = await openApp(url + '?welcome', `walk-${name}`, listenToLiveRegion);
   if (!check(`${name}: the app starts`, started, error || '')) return;
   const me = person(page, device.touch ? 'touch' : 'keyboard');
-  const shot = (file) => page.screenshot({ path: join(shots, `${name}-${file}.png`) });
+  // Timed, so that the log says what the screenshots cost of the walk.
+  const shots_taken = { count: 0, ms: 0 };
+  const shot = async (file) => {
+    const start = Date.now();
+    await page.screenshot({ path: join(shots, `${name}-${file}.png`) });
+    shots_taken.count += 1;
+    shots_taken.ms += Date.now() - start;
+  };
   const said = (text) => me.dom.getByText(text, { exact: false }).first().waitFor({ state: 'attached', timeout: 20_000 });
 
   await me.find('heading', 'Welcome to Swarm Lab').waitFor({ state: 'attached', timeout: 20_000 });
@@ -103,7 +110,8 @@ async function walk(url, name) {
     await shot(`L${l + 1}-summary`);
     if (l + 1 < lessons.length) await me.press('button', `Next lesson: ${lessons[l + 1].title}`);
   }
-  check(`${name}: every lesson walked to its summary`, summaries === lessons.length, `${summaries} of ${lessons.length}`);
+  check(`${name}: every lesson walked to its summary`, summaries === lessons.length,
+        `${summaries} of ${lessons.length}; ${shots_taken.count} screenshots took ${(shots_taken.ms / 1000).toFixed(1)} s`);
   await checkTranscript(page, name);
   checkLessonText(domText, name);
 }

@@ -11,10 +11,11 @@ namespace {
 constexpr std::size_t kTrailPoints = 600;
 
 /// The preset's plan, with stages by hand: "Expand now" ends a stage averaged like the
-/// protocol's.
-swarm::RunPlan plan_of(const swarm::Preset& preset) {
+/// protocol's; threads > 0 sets the engine's thread count.
+swarm::RunPlan plan_of(const swarm::Preset& preset, int threads) {
   swarm::RunPlan plan = swarm::run_plan(preset);
   plan.stages_by_hand = true;
+  if (threads > 0) plan.engine.threads = threads;
   return plan;
 }
 
@@ -30,9 +31,10 @@ swarm::TimelineLimits limits_here() {
 
 }  // namespace
 
-LiveRun::LiveRun(const swarm::Preset& preset)
+LiveRun::LiveRun(const swarm::Preset& preset, int threads)
     : preset_(preset),
-      timeline_(swarm::initial_system(preset), plan_of(preset), preset.compare, limits_here()) {
+      timeline_(swarm::initial_system(preset), plan_of(preset, threads), preset.compare,
+                limits_here()) {
   static long runs_made = 0;
   id_ = ++runs_made;
   // About 150 trail points per period (or per the same time when J <= 0).

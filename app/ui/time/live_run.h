@@ -22,7 +22,8 @@ struct Trail {
 class LiveRun {
  public:
   /// The preset must be valid (swarm::preset_error(preset) empty).
-  explicit LiveRun(const swarm::Preset& preset);
+  /// threads: the engine's (EngineConfig::threads); 0: the default.
+  explicit LiveRun(const swarm::Preset& preset, int threads = 0);
 
   /// Advances every method by up to `steps` steps in lockstep; returns the steps taken
   /// (fewer at the end of the run).

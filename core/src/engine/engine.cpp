@@ -1,6 +1,7 @@
 #include "swarm/engine/engine.h"
 
 #ifndef __EMSCRIPTEN__
+#include <algorithm>
 #include <thread>
 #endif
 
@@ -10,7 +11,8 @@ namespace swarm {
 
 int default_threads() {
 #ifndef __EMSCRIPTEN__
-  static const int threads = std::thread::hardware_concurrency() >= 2 ? 2 : 1;
+  // hardware_concurrency may say 0 when it cannot tell.
+  static const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
   return threads;
 #else
   return 1;

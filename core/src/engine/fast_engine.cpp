@@ -24,8 +24,8 @@
 #include "engine/fast_engine_body.h"
 #include "engine/fast_engine_lookahead.h"
 #include "engine/fast_engine_window.h"
+#include "engine/lane_pool.h"
 #include "engine/timing_wheel.h"
-#include "engine/two_lane_worker.h"
 #include "math/portable_math.h"
 #include "swarm/methods/external_forces.h"
 #include "swarm/physics/regime.h"
@@ -59,26 +59,36 @@ constexpr double kMaxFreeSteps = 1024;
 constexpr double kMaxDragDecay = 1;
 // How many ids ahead of the one being checked the particle data is fetched.
 constexpr std::size_t kPrefetch = 8;
-// The particles are split into kLanes halves by index, each with its own buckets and sums, so
-// that a step's checks can run on two cores; the sums are always combined in lane order, so
-// the numbers do not depend on how many threads ran (one in the browser).
-constexpr int kLanes = 2;
-// Steps with fewer checks than this run on one thread. With the worker's busy-polling
-// hand-over even a step of a few dozen checks gains from the second core (the headline: about
-// 40 per step), so only steps without any run on one.
+// The particles are split by index into one lane per thread, each with its own buckets, so
+// that a step's checks run on all the threads. No number depends on that split: a step's hits
+// are combined in particle-id order (the reference engine's order), and the epoch's sums over
+// all particles in blocks of kSumBlock particles, in block order.
+constexpr std::size_t kSumBlock = 4096;
+// Steps with fewer checks than this run on one thread. With the pool's busy-polling hand-over
+// even a step of a few dozen checks gains from a second core (the headline: about 40 per
+// step), so only steps without any run on one.
 constexpr std::size_t kParallelChecks = 1;
 
 // [SECTION] State
 
-/// One lane of the schedule: its timing wheel and the sums of one step. Each lane's thread
-/// writes its own sums in every check: a cache line apart, they never share one.
+/// A hit of one step, kept apart until the step's hits are combined in particle-id order.
+struct Hit {
+  std::uint32_t id;
+  Vec3 kick;  // m dv / M: its share of the change of V_cm
+  WallTally tally;
+  fast::CoefficientSums sums_change{};  // under drag: what it changed in the energy sums
+};
+
+/// One lane of the schedule: its timing wheel and the hits of one step. Each lane's thread
+/// writes its own in every check: a cache line apart, lanes never share one.
 struct alignas(64) Lane {
   TimingWheel wheel;
   std::vector<std::uint32_t> work;  // the ids taken from the wheel for this step
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
-  WallTally tally;
-  Vec3 kick = Vec3::Zero();
-  fast::CoefficientSums sums_change;  // under drag: what this step's hits changed
+  std::vector<Hit> hits;
+  // The hits in particle-id order once the checks are done: id << 32 | place in `hits` (sorted
+  // as integers: cheaper than moving the hits).
+  std::vector<std::uint64_t> order;
   std::int64_t checks = 0;
 #ifdef __EMSCRIPTEN__
   double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped
@@ -90,7 +100,10 @@ struct alignas(64) Lane {
 class FastEngine final : public Engine {
  public:
   FastEngine(System initial, const EngineConfig& config)
-      : config_(config), anchors_(initial.particles.size()), worker_(config.threads) {
+      : config_(config),
+        lanes_(lane_count(config.threads)),
+        anchors_(initial.particles.size(), lanes_.size()),
+        pool_(config.threads) {
     if (!fast_engine_applies(config))
       throw std::invalid_argument("the fast engine runs the analytic method with paper collisions");
     if (initial.particles.size() > kMaxFastEngineParticles)
@@ -120,8 +133,8 @@ class FastEngine final : public Engine {
       swarm_size_ = std::max(swarm_size_, orbits_[i].a.norm());
     }
     if (!(swarm_size_ > 0)) swarm_size_ = 1;
-    lane_split_ = orbits_.size() / 2;
-    for (Lane& lane : lanes_) lane.wheel = TimingWheel(lane_split_);
+    lane_size_ = std::max<std::size_t>(1, (orbits_.size() + lanes_.size() - 1) / lanes_.size());
+    for (Lane& lane : lanes_) lane.wheel = TimingWheel(lane_size_);
 
     cache_ = std::move(initial);
     cache_valid_ = true;
@@ -192,13 +205,20 @@ class FastEngine final : public Engine {
 
     std::size_t pending = 0;
     for (const Lane& lane : lanes_) pending += lane.wheel.waiting(step_);
-    if (worker_.run([this](int lane) { check_lane(lanes_[lane]); }, pending >= kParallelChecks))
+    if (pool_.run(
+            lanes_.size(), [this](std::size_t lane) { check_lane(lanes_[lane]); },
+            pending >= kParallelChecks))
       ++stats_.parallel_steps;
+    // The lanes are consecutive ranges of ids, each with its hits sorted: in lane order the
+    // hits come in id order, whatever the number of lanes.
     Vec3 kick = Vec3::Zero();  // sum of m dv / M: the change of V_cm (and of Y')
     for (const Lane& lane : lanes_) {
-      tally.add(lane.tally);
-      kick += lane.kick;
-      if (gamma_ > 0) sums_.add(lane.sums_change);
+      for (const std::uint64_t key : lane.order) {
+        const Hit& hit = lane.hits[key & 0xffffffff];
+        tally.add(hit.tally);
+        kick += hit.kick;
+        if (gamma_ > 0) sums_.add(hit.sums_change);
+      }
       stats_.checks += lane.checks;
     }
     stats_.hits += tally.hits;
@@ -213,7 +233,7 @@ class FastEngine final : public Engine {
       cache_.J = J_;
       cache_.t = t_;
       cache_.particles.resize(orbits_.size());
-      worker_.run([&](int lane) {
+      pool_.run(lanes_.size(), [&](std::size_t lane) {
         for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
           cache_.particles[i] = fast::particle_of(orbits_[i], f, o, ov);
       });
@@ -244,9 +264,7 @@ class FastEngine final : public Engine {
   /// hits, so the lanes are independent.
   void check_lane(Lane& lane) {
     const fast::StepData& d = now_;
-    lane.tally = WallTally{};
-    lane.kick = Vec3::Zero();
-    lane.sums_change = {};
+    lane.hits.clear();
     lane.checks = 0;
     lane.wheel.take(step_, lane.work);
     const std::size_t count = lane.work.size();
@@ -255,6 +273,7 @@ class FastEngine final : public Engine {
 #endif
     for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j)
       fast::prefetch(&orbits_[lane.work[j]]);
+    WallTally one;  // a hit's own tally
     for (std::size_t j = 0; j < count; ++j) {
       if (j + kPrefetch < count) fast::prefetch(&orbits_[lane.work[j + kPrefetch]]);
       const std::uint32_t i = lane.work[j];
@@ -262,32 +281,52 @@ class FastEngine final : public Engine {
       if (o.due != step_) continue;  // rescheduled since it was put here
       ++lane.checks;
       Vec3 dv;
-      if (checks_more_)
-        check_under_forces(o, lane);
-      else if (fast::reflect_if_leaving(o, d, lane.tally, dv))
-        lane.kick += (o.m / M_) * dv;
+      if (checks_more_) {
+        Hit hit{i, Vec3::Zero(), WallTally{}, {}};
+        if (check_under_forces(o, hit)) lane.hits.push_back(hit);
+      } else if (fast::reflect_if_leaving(o, d, one, dv)) {
+        lane.hits.push_back({i, (o.m / M_) * dv, one});
+        one = WallTally{};
+      }
       schedule(i, step_ + 1);
     }
+    lane.order.clear();
+    for (std::size_t h = 0; h < lane.hits.size(); ++h)
+      lane.order.push_back(std::uint64_t(lane.hits[h].id) << 32 | h);
+    std::sort(lane.order.begin(), lane.order.end());
     lane.work.clear();
-    fast::release_if_large(lane.work, lane_split_);
+    fast::release_if_large(lane.work, lane_size_);
   }
 
   /// check_lane's check of one particle with a floor or under drag: the wall, then the floor
   /// on the same prediction (the reference engine's order), and what the hits changed in the
-  /// drag's energy sums.
-  void check_under_forces(Body& o, Lane& lane) {
+  /// drag's energy sums, all into `hit`. Says whether the particle hit either.
+  bool check_under_forces(Body& o, Hit& hit) {
     const Body before = o;
     Vec3 dv;
-    if (fast::reflect_if_leaving(o, now_, lane.tally, dv)) lane.kick += (o.m / M_) * dv;
-    if (config_.floor && fast::bounce_if_falling(o, before, now_, *config_.floor, lane.tally, dv))
-      lane.kick += (o.m / M_) * dv;
-    if (gamma_ > 0) lane.sums_change.replace(before, o);
+    bool any = false;
+    if (fast::reflect_if_leaving(o, now_, hit.tally, dv)) {
+      hit.kick += (o.m / M_) * dv;
+      any = true;
+    }
+    if (config_.floor && fast::bounce_if_falling(o, before, now_, *config_.floor, hit.tally, dv)) {
+      hit.kick += (o.m / M_) * dv;
+      any = true;
+    }
+    if (any && gamma_ > 0) hit.sums_change.replace(before, o);
+    return any;
   }
 
+  /// One lane per thread, at most LanePool::kMaxLanes.
+  static std::size_t lane_count(int threads) {
+    return std::clamp<std::size_t>(std::size_t(std::max(threads, 1)), 1, fast::LanePool::kMaxLanes);
+  }
   /// The particles of lane `lane`: [begin, end).
-  std::size_t lane_begin(int lane) const { return lane == 0 ? 0 : lane_split_; }
-  std::size_t lane_end(int lane) const { return lane == 0 ? lane_split_ : orbits_.size(); }
-  int lane_index(std::uint32_t i) const { return i < lane_split_ ? 0 : 1; }
+  std::size_t lane_begin(std::size_t lane) const {
+    return std::min(lane * lane_size_, orbits_.size());
+  }
+  std::size_t lane_end(std::size_t lane) const { return lane_begin(lane + 1); }
+  int lane_index(std::uint32_t i) const { return int(i / lane_size_); }
   Lane& lane_of(std::uint32_t i) { return lanes_[std::size_t(lane_index(i))]; }
 
   // [SECTION] Shared motion
@@ -365,37 +404,43 @@ class FastEngine final : public Engine {
     const double inv_omega = spring_.inv_omega, eta = spring_.eta;
     const bool histogram = window_k_ > 0 && Rw > 0;
     const bool drag = gamma_ > 0;
-    // Per-lane sums, combined in lane order: the rounding does not depend on the threads.
-    std::array<Vec3, kLanes> sum_a, sum_b;
-    std::array<fast::CoefficientSums, kLanes> sums{};
-    std::array<fast::GapHistogram, kLanes> gaps{};
-    worker_.run([&](int lane) {
+    // Sums over fixed blocks, combined in block order: the rounding does not depend on the
+    // threads. (The histogram's counts are integers.)
+    const std::size_t blocks = (orbits_.size() + kSumBlock - 1) / kSumBlock;
+    std::vector<Vec3> sum_a(blocks), sum_b(blocks);
+    std::vector<fast::CoefficientSums> sums(drag ? blocks : 0);
+    std::vector<fast::GapHistogram> gaps(histogram ? blocks : 0);
+    pool_.run(blocks, [&](std::size_t block) {
       Vec3 sa = Vec3::Zero(), sb = Vec3::Zero();
-      fast::CoefficientSums& lane_sums = sums[std::size_t(lane)];
-      auto& count = gaps[std::size_t(lane)].counts;
-      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
+      const std::size_t end = std::min(orbits_.size(), (block + 1) * kSumBlock);
+      for (std::size_t i = block * kSumBlock; i < end; ++i) {
         Body& o = orbits_[i];
         if (shift) fast::shift(o, *shift);
         sa += o.m * o.a;
         sb += o.m * o.b;
-        if (drag) lane_sums.include(o);
+        if (drag) sums[block].include(o);
         if (!histogram) continue;
         // Under drag the largest |y| to come is at most that of the free oscillation the
         // windows see (fast_engine_window.h).
         const fast::Swing swing =
             fast::swing_of(o.a, drag ? Vec3(o.b + eta * o.a) : o.b, inv_omega);
-        count[fast::GapHistogram::bin_of(swing.P + swing.A, reach, bins_per_length)]++;
+        gaps[block].counts[fast::GapHistogram::bin_of(swing.P + swing.A, reach, bins_per_length)]++;
       }
-      sum_a[std::size_t(lane)] = sa;
-      sum_b[std::size_t(lane)] = sb;
+      sum_a[block] = sa;
+      sum_b[block] = sb;
     });
     sums_ = {};
-    for (const fast::CoefficientSums& lane : sums) sums_.add(lane);
+    for (const fast::CoefficientSums& block : sums) sums_.add(block);
     gaps_.counts.fill(0);
-    for (const auto& lane : gaps)
-      for (int b = 0; b < kBins; ++b) gaps_.counts[std::size_t(b)] += lane.counts[std::size_t(b)];
-    motion_.aY = (sum_a[0] + sum_a[1]) / M_;
-    motion_.bY = (sum_b[0] + sum_b[1]) / M_;
+    for (const auto& block : gaps)
+      for (int b = 0; b < kBins; ++b) gaps_.counts[std::size_t(b)] += block.counts[std::size_t(b)];
+    Vec3 total_a = Vec3::Zero(), total_b = Vec3::Zero();
+    for (std::size_t block = 0; block < blocks; ++block) {
+      total_a += sum_a[block];
+      total_b += sum_b[block];
+    }
+    motion_.aY = total_a / M_;
+    motion_.bY = total_b / M_;
     epoch_start_ += tau_;
     tau_ = 0;
   }
@@ -454,11 +499,11 @@ class FastEngine final : public Engine {
 
   /// Reschedules, in the current anchor, every particle still scheduled in anchor id.
   void expire(std::uint8_t id) {
-    std::array<std::int64_t, kLanes> expired{};
-    worker_.run([&](int lane) {
+    std::vector<std::int64_t> expired(lanes_.size());
+    pool_.run(lanes_.size(), [&](std::size_t lane) {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
         if (anchors_.anchor_of(i) == id) {
-          ++expired[std::size_t(lane)];
+          ++expired[lane];
           orbits_[i].window.first = kUnknown;
           schedule(std::uint32_t(i), step_);
         }
@@ -475,8 +520,11 @@ class FastEngine final : public Engine {
     }
     // With the old anchors gone, no window may rely on one: every particle gets a window in
     // the current anchor.
-    anchors_.move_all_to_current({lane_end(0) - lane_begin(0), lane_end(1) - lane_begin(1)});
-    worker_.run([&](int lane) {
+    std::vector<std::size_t> lane_sizes(lanes_.size());
+    for (std::size_t lane = 0; lane < lanes_.size(); ++lane)
+      lane_sizes[lane] = lane_end(lane) - lane_begin(lane);
+    anchors_.move_all_to_current(lane_sizes);
+    pool_.run(lanes_.size(), [&](std::size_t lane) {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
         orbits_[i].window.first = kUnknown;
         schedule(std::uint32_t(i), step_);
@@ -619,8 +667,8 @@ class FastEngine final : public Engine {
   // The schedule.
   StepIndex step_ = 0;
   double dt_ = 0;
-  std::array<Lane, kLanes> lanes_;
-  std::size_t lane_split_ = 0;  // particles below it are in lane 0
+  std::vector<Lane> lanes_;
+  std::size_t lane_size_ = 1;  // particles per lane (the last may have fewer)
   fast::StepData now_{};
   bool flow_carried_ = false;  // now_.f1 holds the flow at tau_
   fast::Anchors anchors_;
@@ -634,8 +682,8 @@ class FastEngine final : public Engine {
   System cache_;
   bool cache_valid_ = false;
   FastEngineStats stats_;
-  // Last, so that it is destroyed first: its thread stops before the data it works on goes.
-  fast::TwoLaneWorker worker_;
+  // Last, so that it is destroyed first: its threads stop before the data they work on goes.
+  fast::LanePool pool_;
 };
 
 }  // namespace

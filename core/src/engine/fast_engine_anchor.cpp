@@ -40,7 +40,7 @@ Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs&
   return anchor;
 }
 
-void Anchors::move_all_to_current(const std::array<std::size_t, 2>& lane_sizes) {
+void Anchors::move_all_to_current(const std::vector<std::size_t>& lane_sizes) {
   old_.clear();
   std::fill(anchor_of_.begin(), anchor_of_.end(), current_.id);
   for (std::size_t lane = 0; lane < relying_.size(); ++lane) {

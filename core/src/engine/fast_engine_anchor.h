@@ -115,13 +115,13 @@ Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs&
 /// The current anchor, the older ones that particles still rely on, and which anchor each
 /// particle's window was made in. A particle keeps its window, and the anchor it relies on,
 /// until its next hit or until that anchor expires. Counts are kept per lane, so that the
-/// two lanes of the engine can move their particles to the current anchor at the same time.
+/// lanes of the engine can move their particles to the current anchor at the same time.
 class Anchors {
  public:
   /// Beyond this many old anchors, the oldest is expired.
   static constexpr std::size_t kMaxOld = 64;
 
-  explicit Anchors(std::size_t particles) : anchor_of_(particles, 0) {}
+  Anchors(std::size_t particles, std::size_t lanes) : anchor_of_(particles, 0), relying_(lanes) {}
 
   const Anchor& current() const { return current_; }
   std::vector<Anchor>& old() { return old_; }
@@ -143,7 +143,7 @@ class Anchors {
   }
   /// Every particle relies on the current anchor, and no old one is kept.
   /// lane_sizes: how many particles each lane has.
-  void move_all_to_current(const std::array<std::size_t, 2>& lane_sizes);
+  void move_all_to_current(const std::vector<std::size_t>& lane_sizes);
 
   /// Drops the old anchors no particle relies on any more, and expires those whose offset
   /// leaves their margin at the step's end (f1: the flow then; step: the flow over the step),
@@ -176,7 +176,7 @@ class Anchors {
   std::vector<Anchor> old_;
   std::uint8_t next_id_ = 0;
   std::vector<std::uint8_t> anchor_of_;  // scanned on expiry
-  std::array<Relying, 2> relying_;       // per lane: how many particles rely on each anchor
+  std::vector<Relying> relying_;         // per lane: how many particles rely on each anchor
 };
 
 }  // namespace swarm::fast

@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <cmath>
 #include <vector>
 #ifndef __EMSCRIPTEN__
+#include <atomic>
 #include <thread>
 #endif
 
@@ -19,6 +21,11 @@ namespace {
 
 // Below this many particles a second thread costs more than it saves.
 [[maybe_unused]] constexpr std::size_t kThreadedPairs = 400;  // threads only exist natively
+// The rows are cut into blocks of about this many pairs (at least 2 blocks, at most
+// kMaxBlocks), whatever the thread count: each block has its own accumulators, a pass of 3 N
+// additions at the end, small beside its pairs.
+constexpr std::size_t kPairsPerBlock = 50000;
+constexpr std::size_t kMaxBlocks = 64;
 
 struct Columns {
   std::vector<double> x, y, z, m;
@@ -67,31 +74,46 @@ void pairwise_accelerations(const System& s, std::vector<Vec3>& a, int threads) 
     c.z[i] = s.particles[i].r.z();
     c.m[i] = s.particles[i].m;
   }
-  // Two blocks of rows with about as many pairs each (row i has n - 1 - i), each summed into
-  // its own arrays and then added in a fixed order: the result is the same whether the blocks
-  // run on two threads or, as in the browser, one after the other.
-  const auto split = std::size_t(double(n) * (1 - std::sqrt(0.5)));
-  std::vector<double> first(3 * n, 0.0), second(3 * n, 0.0);
-  auto block = [&](std::vector<double>& acc, std::size_t begin, std::size_t end) {
-    add_rows(c, begin, end, acc.data(), acc.data() + n, acc.data() + 2 * n);
+  // Blocks of rows with about as many pairs each (row i has n - 1 - i; the rows before block
+  // b's first hold b / blocks of the pairs), each summed into its own arrays and then added in
+  // block order: the block count depends on n alone, so the result is the same on any number
+  // of threads or, as in the browser, one block after the other.
+  const std::size_t blocks =
+      std::clamp<std::size_t>(n * (n > 0 ? n - 1 : 0) / 2 / kPairsPerBlock, 2, kMaxBlocks);
+  std::vector<std::size_t> first_row(blocks + 1, n);
+  for (std::size_t b = 0; b < blocks; ++b)
+    first_row[b] = std::size_t(double(n) * (1 - std::sqrt(1 - double(b) / double(blocks))));
+  std::vector<std::vector<double>> acc(blocks, std::vector<double>(3 * n, 0.0));
+  auto block = [&](std::size_t b) {
+    add_rows(c, first_row[b], first_row[b + 1], acc[b].data(), acc[b].data() + n,
+             acc[b].data() + 2 * n);
   };
 #ifdef __EMSCRIPTEN__
   (void)threads;  // the browser build has no threads
 #else
-  if (n >= kThreadedPairs && threads >= 2) {
-    std::thread helper([&] { block(second, split, n); });
-    block(first, 0, split);
-    helper.join();
+  const auto helpers = std::size_t(std::clamp(threads, 1, int(blocks))) - 1;
+  if (n >= kThreadedPairs && helpers > 0) {
+    // Whichever thread is free takes the next block.
+    std::atomic<std::size_t> next{0};
+    auto take_blocks = [&] {
+      for (std::size_t b; (b = next.fetch_add(1)) < blocks;) block(b);
+    };
+    std::vector<std::thread> pool;
+    for (std::size_t h = 0; h < helpers; ++h) pool.emplace_back(take_blocks);
+    take_blocks();
+    for (std::thread& t : pool) t.join();
   } else
 #endif
   {
-    block(first, 0, split);
-    block(second, split, n);
+    for (std::size_t b = 0; b < blocks; ++b) block(b);
   }
   a.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    a[i] = s.J * Vec3(first[i] + second[i], first[n + i] + second[n + i],
-                      first[2 * n + i] + second[2 * n + i]);
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 sum(acc[0][i], acc[0][n + i], acc[0][2 * n + i]);
+    for (std::size_t b = 1; b < blocks; ++b)
+      sum += Vec3(acc[b][i], acc[b][n + i], acc[b][2 * n + i]);
+    a[i] = s.J * sum;
+  }
 }
 
 }  // namespace swarm

@@ -16,16 +16,19 @@
 
 namespace swarm {
 
-/// How many threads an engine uses by default: 2 where the platform has threads and at
-/// least two cores, 1 in the browser.
+/// How many threads an engine uses by default: the machine's hardware threads
+/// (std::thread::hardware_concurrency), 1 in the browser. The WebAssembly build has no threads:
+/// they would need SharedArrayBuffer, which needs the COOP/COEP headers that static hosting
+/// cannot send.
 int default_threads();
 
 struct EngineConfig {
   Method method = Method::analytic;
   CollisionMode collisions = CollisionMode::paper;
   std::optional<double> container_radius;  ///< none: an isolated system
-  /// Threads for the engine's work, 1 or 2 (more count as 2; the browser always uses 1).
-  /// Results do not depend on it: sums are combined in a fixed order.
+  /// Threads for the engine's work: any count >= 1 (more than the machine has works, at a
+  /// cost; the browser always uses 1). Results do not depend on it, bit for bit: the work is
+  /// split and its sums combined in ways that do not depend on the count.
   int threads = default_threads();
   /// Gravity and drag (Appendix B), and a floor beside the container: the fast engine runs
   /// gravity, mass-proportional drag and an elastic floor; drag b on chosen particles and an

@@ -31,9 +31,9 @@
 /// and then, folding Y into every y_i (O(N)), to keep the digits of the y_i, which the
 /// anchors carry over.
 ///
-/// The particles are split into two lanes by index, checked on two threads when
-/// EngineConfig::threads is 2 (core/src/engine/two_lane_worker.h); the lanes' sums are combined in
-/// lane order, so the results do not depend on the thread count.
+/// The particles are split by index into one lane per thread (EngineConfig::threads; run by
+/// core/src/engine/lane_pool.h). A step's hits are combined in particle-id order and the O(N)
+/// sums in fixed blocks in block order, so the results do not depend on the thread count.
 ///
 /// The engine reproduces the reference engine's wall hits step by step (same predicate on the
 /// same prediction, evaluated from an algebraically identical state) up to rounding.
@@ -67,7 +67,7 @@ struct FastEngineStats {
   std::int64_t rebases = 0;         ///< O(N) re-bases (each sets a new anchor)
   std::int64_t reschedules = 0;     ///< O(N) full reschedules (radius or dt changed)
   std::int64_t expired = 0;         ///< particles rescheduled because their anchor expired
-  std::int64_t parallel_steps = 0;  ///< steps whose checks ran on two threads
+  std::int64_t parallel_steps = 0;  ///< steps whose checks ran on several threads
 };
 
 /// The counters of engine if it is a fast engine, else nothing.

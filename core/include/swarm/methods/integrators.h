@@ -1,7 +1,7 @@
 #pragma once
 /// One step of each method on an isolated system. All share the signature
 /// void(System&, double dt, int threads) so that any two can run side by side from one
-/// initial state. threads (1 or 2) is how many threads the pairwise forces may use; the
+/// initial state. threads (any count >= 1) is how many threads the pairwise forces may use; the
 /// results do not depend on it.
 
 #include <vector>
