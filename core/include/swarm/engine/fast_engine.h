@@ -26,8 +26,10 @@
 /// that the anchor's offset moves only with the CM and the later kicks. A particle keeps its
 /// window, and the anchor it was made in, until its next hit; the anchor stays valid while its
 /// offset stays within its margin, which is checked every step, and when it does not the
-/// particles relying on it are rescheduled. When J < 0 the kicks' effect grows like
-/// exp(Omega t), so a new anchor is set every few steps (O(1)); the engine also re-bases now
+/// particles relying on it are rescheduled (with a floor, the anchor also keeps o's height
+/// above a level, for the floor's windows). When J < 0 the kicks' effect grows like
+/// exp(Omega t), so a new anchor is set every few steps (O(1)), and under gravity or drag,
+/// whose CM the wall keeps moving, new anchors come in O(1) too; the engine also re-bases now
 /// and then, folding Y into every y_i (O(N)), to keep the digits of the y_i, which the
 /// anchors carry over.
 ///
