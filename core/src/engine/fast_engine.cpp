@@ -24,6 +24,8 @@
 #include "engine/fast_engine_body.h"
 #include "engine/fast_engine_lookahead.h"
 #include "engine/fast_engine_window.h"
+#include "engine/fast_engine_window_batch.h"
+#include "engine/id_sort.h"
 #include "engine/lane_pool.h"
 #include "engine/timing_wheel.h"
 #include "math/portable_math.h"
@@ -84,11 +86,13 @@ struct Hit {
 struct alignas(64) Lane {
   TimingWheel wheel;
   std::vector<std::uint32_t> work;  // the ids taken from the wheel for this step
+  std::vector<Vec3> hit_a, hit_b;   // the coefficients of its hits in the current anchor
+  std::vector<fast::Window> hit_windows;
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
   std::vector<Hit> hits;
   // The hits in particle-id order once the checks are done: id << 32 | place in `hits` (sorted
   // as integers: cheaper than moving the hits).
-  std::vector<std::uint64_t> order;
+  std::vector<std::uint64_t> order, order_scratch;
   std::int64_t checks = 0;
 #ifdef __EMSCRIPTEN__
   double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped
@@ -273,13 +277,19 @@ class FastEngine final : public Engine {
 #endif
     for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j)
       fast::prefetch(&orbits_[lane.work[j]]);
+    // First every check, then the new windows of those hit, then every schedule, each in the
+    // order of the work list (so the wheel's order is as if each particle were done in turn):
+    // the windows' long chains of dependent operations then overlap from one particle to the
+    // next.
+    std::size_t checked = 0;
     WallTally one;  // a hit's own tally
     for (std::size_t j = 0; j < count; ++j) {
       if (j + kPrefetch < count) fast::prefetch(&orbits_[lane.work[j + kPrefetch]]);
       const std::uint32_t i = lane.work[j];
       Body& o = orbits_[i];
       if (o.due != step_) continue;  // rescheduled since it was put here
-      ++lane.checks;
+      o.due = step_ + 1;             // checked: a second entry of i in this step is stale
+      lane.work[checked++] = i;
       Vec3 dv;
       if (checks_more_) {
         Hit hit{i, Vec3::Zero(), WallTally{}, {}};
@@ -288,12 +298,14 @@ class FastEngine final : public Engine {
         lane.hits.push_back({i, (o.m / M_) * dv, one});
         one = WallTally{};
       }
-      schedule(i, step_ + 1);
     }
+    lane.checks = std::int64_t(checked);
+    make_windows(lane);
+    for (std::size_t j = 0; j < checked; ++j) schedule(lane.work[j], step_ + 1);
     lane.order.clear();
     for (std::size_t h = 0; h < lane.hits.size(); ++h)
       lane.order.push_back(std::uint64_t(lane.hits[h].id) << 32 | h);
-    std::sort(lane.order.begin(), lane.order.end());
+    fast::sort_by_id(lane.order, lane.order_scratch);
     lane.work.clear();
     fast::release_if_large(lane.work, lane_size_);
   }
@@ -540,21 +552,7 @@ class FastEngine final : public Engine {
     Body& o = orbits_[i];
     // A particle keeps its window, and with it the anchor it relies on, until it hits the
     // wall or that anchor expires: re-bases and new anchors leave the window as it was.
-    if (std::isnan(o.window.first)) {
-      if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
-      const Anchor& current = anchors_.current();
-      o.window = !config_.container_radius ? fast::never_window(window_k_)
-                 : current.threshold > 0
-                     ? fast::window_of(o.a - current.p, o.b - current.q, spring_,
-                                       current.threshold2, phase_per_time_ * epoch_start_,
-                                       growth_)
-                     : fast::always_window(window_k_);
-      if (config_.floor)
-        floor_windows_[i] = fast::floor_window_of(
-            o.a.z() - current.p.z(), o.b.z() - current.q.z(), spring_,
-            config_.floor->z - current.floor_low,
-            fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
-    }
+    if (std::isnan(o.window.first)) make_window(i);
     fast::Span span = span_at(i, first);
     StepIndex due = window_begin(span, first);
     if (due <= step_ + kLookahead) {
@@ -573,6 +571,47 @@ class FastEngine final : public Engine {
     due = std::min(due, step_ + TimingWheel::kHorizon);
     o.due = due;
     enqueue(i, due);
+  }
+
+  /// Particle i's window in the current anchor, which it relies on from now on (with a
+  /// floor, its floor window too).
+  void make_window(std::uint32_t i) {
+    Body& o = orbits_[i];
+    if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
+    const Anchor& current = anchors_.current();
+    o.window = !config_.container_radius ? fast::never_window(window_k_)
+               : current.threshold > 0
+                   ? fast::window_of(o.a - current.p, o.b - current.q, spring_, current.threshold2,
+                                     phase_per_time_ * epoch_start_, growth_)
+                   : fast::always_window(window_k_);
+    if (config_.floor)
+      floor_windows_[i] = fast::floor_window_of(
+          o.a.z() - current.p.z(), o.b.z() - current.q.z(), spring_,
+          config_.floor->z - current.floor_low,
+          fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
+  }
+
+  /// The new windows of a lane's hits, all at once (fast_engine_window_batch.h); one by one
+  /// under drag, with a floor or without a wall, which the batch does not know.
+  void make_windows(Lane& lane) {
+    const std::size_t n = lane.hits.size();
+    const Anchor& current = anchors_.current();
+    if (current.threshold <= 0 || checks_more_ || !config_.container_radius) {
+      for (const Hit& hit : lane.hits) make_window(hit.id);
+      return;
+    }
+    lane.hit_a.resize(n);
+    lane.hit_b.resize(n);
+    lane.hit_windows.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::uint32_t i = lane.hits[j].id;
+      if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
+      lane.hit_a[j] = orbits_[i].a - current.p;
+      lane.hit_b[j] = orbits_[i].b - current.q;
+    }
+    fast::windows_of(lane.hit_a.data(), lane.hit_b.data(), n, spring_, current.threshold2,
+                     phase_per_time_ * epoch_start_, lane.hit_windows.data());
+    for (std::size_t j = 0; j < n; ++j) orbits_[lane.hits[j].id].window = lane.hit_windows[j];
   }
 
   /// Where particle i's windows lie, seen from the end of step m: the wall's, or with a floor
