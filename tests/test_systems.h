@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "swarm/engine/engine.h"
+#include "swarm/measure/state_hash.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/system.h"
 #include "swarm/preset/initial_conditions.h"
@@ -52,6 +54,26 @@ inline System crowded_swarm(long n, double sign, std::uint64_t seed, double spee
   System s = random_swarm(n, 1.0, seed, 1.0, speed);
   s.J = sign / total_mass(s);
   return s;
+}
+
+/// The largest difference in any particle's position or velocity between two states of the
+/// same particles.
+inline double max_state_difference(const System& a, const System& b) {
+  double worst = 0;
+  for (std::size_t i = 0; i < a.particles.size(); ++i) {
+    worst = std::max(worst, (a.particles[i].r - b.particles[i].r).norm());
+    worst = std::max(worst, (a.particles[i].v - b.particles[i].v).norm());
+  }
+  return worst;
+}
+
+/// The hash of the state that `engine` ends in after `steps` steps of dt, having hit the wall
+/// more than min_hits times: for pinning a run's final state (native == wasm).
+inline std::uint64_t final_state_hash(Engine& engine, int steps, double dt, std::int64_t min_hits) {
+  std::int64_t hits = 0;
+  for (int i = 0; i < steps; ++i) hits += engine.step(dt).hits;
+  CHECK(hits > min_hits);
+  return state_hash(engine.system());
 }
 
 /// 100,000 steps in the unit sphere, attractive and repulsive: the energy must hold to 1e-10

@@ -7,6 +7,7 @@
 // [SECTION] Engine: construction, step, system()
 // [SECTION] Checks: Appendix A for the particles due in a step
 // [SECTION] Shared motion: the CM, Y and the step's end
+// [SECTION] The wall: where it is, for the hits and for the schedules
 // [SECTION] Epochs and anchors: re-bases, new anchors, expiry
 // [SECTION] Scheduling: windows, the lookahead, the timing wheel
 // [SECTION] Factory
@@ -23,6 +24,7 @@
 #include "engine/fast_engine_anchor.h"
 #include "engine/fast_engine_body.h"
 #include "engine/fast_engine_lookahead.h"
+#include "engine/fast_engine_wall.h"
 #include "engine/fast_engine_window.h"
 #include "engine/fast_engine_window_batch.h"
 #include "engine/id_sort.h"
@@ -137,6 +139,9 @@ class FastEngine final : public Engine {
       swarm_size_ = std::max(swarm_size_, orbits_[i].a.norm());
     }
     if (!(swarm_size_ > 0)) swarm_size_ = 1;
+    if (!config.wall_moves.empty() && config.container_radius)
+      path_.emplace(*config.container_radius, config.wall_moves);
+    wall_ = sphere_wall();
     lane_size_ = std::max<std::size_t>(1, (orbits_.size() + lanes_.size() - 1) / lanes_.size());
     for (Lane& lane : lanes_) lane.wheel = TimingWheel(lane_size_);
 
@@ -151,6 +156,7 @@ class FastEngine final : public Engine {
     cache_valid_ = false;
     if (!has_walls() || orbits_.empty()) {
       if (epoch_too_old(dt)) rebase();
+      if (path_) config_.container_radius = path_->radius_at(t_ + dt);
       finish_step(flow_at(tau_), flow_at(tau_ + dt), ForcedFlow::over(k_, gamma_, dt), dt,
                   Vec3::Zero(), 1, tally);
       flow_carried_ = false;
@@ -164,6 +170,7 @@ class FastEngine final : public Engine {
       schedule_all_pending_ = true;
     }
     fast::StepData& d = now_;
+    const WallRadii radii = wall_radii(dt);
     // The flow at the step's end; at its start it is the last step's end, unless a re-base
     // restarted the epoch's time since.
     const ForcedFlow last_end = d.f1;
@@ -174,14 +181,16 @@ class FastEngine final : public Engine {
     // exp(Omega tau), must stay small: measured on the fireball, letting |Y| reach 0.02 R
     // instead of 0.005 R makes the energy drift 40 times larger. Under gravity or drag the
     // CM keeps moving against the wall (the wall holds the swarm up; drag slows it), so an
-    // anchor lives only a few dozen steps and is renewed without a re-base too.
+    // anchor lives only a few dozen steps and is renewed without a re-base too. A moving wall
+    // spends the anchor's margin too (Anchor::margin_at, Anchor::wants_renewal).
     const bool anchors_in_o1 = k_ < 0 || forced_;
     const Anchor& current = anchors_.current();
     const bool rebased =
         epoch_too_old(dt) ||
-        (!anchors_in_o1 ? current.wants_renewal(current.offset(motion_, d.f1, step_flow))
-                        : k_ < 0 && (d.f1.xc * motion_.aY + d.f1.xs * motion_.bY).norm() >
-                                        kMaxRepulsiveY * length());
+        (!anchors_in_o1
+             ? current.wants_renewal(current.offset(motion_, d.f1, step_flow), radii.end)
+             : k_ < 0 && (d.f1.xc * motion_.aY + d.f1.xs * motion_.bY).norm() >
+                             kMaxRepulsiveY * length());
     if (rebased) {
       rebase();
       d.f1 = flow_at(tau_ + dt);
@@ -189,23 +198,27 @@ class FastEngine final : public Engine {
     d.f0 = rebased || !flow_carried_ ? flow_at(tau_) : last_end;
     flow_carried_ = true;
     if (gamma_ > 0) growth_ = portable::exp(gamma_ * tau_);
-    lookahead_.prepare(motion_, d.f1, flows_ahead_, omega(), length(),
+    lookahead_.prepare(motion_, d.f1, flows_ahead_, omega(), radii.ahead,
                        config_.floor ? config_.floor->z : -std::numeric_limits<double>::infinity());
     if (schedule_all_pending_)
       schedule_all();
     else if (anchors_in_o1 &&
              ((k_ < 0 && step_ - anchors_.current().start >= kRepulsiveAnchorSteps) ||
-              anchors_.current().wants_renewal(anchors_.current().offset(motion_, d.f1, step_flow))))
+              anchors_.current().wants_renewal(anchors_.current().offset(motion_, d.f1, step_flow),
+                                               radii.end)))
       next_anchor();
-    redo_lookahead_if_kicks_too_large();
+    redo_lookahead_if_kicks_too_large(radii.around);
 
     d.o0 = motion_.offset_at(d.f0, flows_ahead_[0]);
     d.o0v = motion_.offset_velocity_at(d.f0);
     d.o1 = motion_.offset_at(d.f1, step_flow);
-    d.R2 = config_.container_radius ? *config_.container_radius * *config_.container_radius
-                                    : std::numeric_limits<double>::infinity();
     d.determinant = d.f0.xc * d.f0.vs - d.f0.vc * d.f0.xs;
-    anchors_.drop_expired(motion_, d.f1, step_flow, [this](std::uint8_t id) { expire(id); });
+    wall_.R2 = config_.container_radius ? radii.end * radii.end
+                                        : std::numeric_limits<double>::infinity();
+    wall_.u = path_ ? (radii.end - *config_.container_radius) / dt : 0.0;
+    wall_.step = std::uint64_t(step_);
+    anchors_.drop_expired(motion_, d.f1, step_flow, radii.end,
+                          [this](std::uint8_t id) { expire(id); });
 
     std::size_t pending = 0;
     for (const Lane& lane : lanes_) pending += lane.wheel.waiting(step_);
@@ -227,6 +240,7 @@ class FastEngine final : public Engine {
     }
     stats_.hits += tally.hits;
     finish_step(d.f0, d.f1, step_flow, dt, kick, d.determinant, tally);
+    if (path_) config_.container_radius = radii.end;
     return tally;
   }
 
@@ -250,6 +264,8 @@ class FastEngine final : public Engine {
 
   void set_container_radius(std::optional<double> R) override {
     config_.container_radius = R;
+    path_.reset();  // a wall that was moving stops
+    wall_ = sphere_wall();
     // A new wall invalidates every schedule; start from a fresh anchor sized for it.
     rebase_pending_ = true;
     schedule_all_pending_ = true;
@@ -294,7 +310,7 @@ class FastEngine final : public Engine {
       if (checks_more_) {
         Hit hit{i, Vec3::Zero(), WallTally{}, {}};
         if (check_under_forces(o, hit)) lane.hits.push_back(hit);
-      } else if (fast::reflect_if_leaving(o, d, one, dv)) {
+      } else if (fast::reflect_if_leaving(o, i, d, wall_, one, dv)) {
         lane.hits.push_back({i, (o.m / M_) * dv, one});
         one = WallTally{};
       }
@@ -317,7 +333,7 @@ class FastEngine final : public Engine {
     const Body before = o;
     Vec3 dv;
     bool any = false;
-    if (fast::reflect_if_leaving(o, now_, hit.tally, dv)) {
+    if (fast::reflect_if_leaving(o, hit.id, now_, wall_, hit.tally, dv)) {
       hit.kick += (o.m / M_) * dv;
       any = true;
     }
@@ -394,6 +410,32 @@ class FastEngine final : public Engine {
     return about_cm + 0.5 * M_ * motion_.V_cm.squaredNorm() - M_ * motion_.g.dot(motion_.R_cm);
   }
 
+  // [SECTION] The wall: where it is, for the hits and for the schedules
+
+  /// The wall's radius at the end of the step of length dt that starts now, and, for the
+  /// lookahead, the least it has over the next kLookahead + 1 steps (ahead) and over those and
+  /// the last kLookahead + 1 steps (around), whose lookaheads are still relied on. Without a
+  /// wall (a floor alone) all three are length(), the size the anchors were made for.
+  struct WallRadii {
+    double end, ahead, around;
+  };
+  WallRadii wall_radii(double dt) const {
+    const double R = length();
+    if (!path_) return {R, R, R};
+    const double span = (kLookahead + 1) * dt;
+    return {path_->radius_at(t_ + dt), path_->lowest_between(t_, t_ + span),
+            path_->lowest_between(t_ - span, t_ + span)};
+  }
+
+  /// The hit's rules that stay from step to step (fast_engine_wall.h); the step sets the rest.
+  fast::SphereWall sphere_wall() const {
+    fast::SphereWall wall;
+    wall.moving = path_.has_value();
+    wall.temperature = config_.wall_temperature.value_or(0.0);
+    wall.stream = config_.wall_stream;
+    return wall;
+  }
+
   // [SECTION] Epochs and anchors
 
   bool epoch_too_old(double dt) const {
@@ -458,7 +500,9 @@ class FastEngine final : public Engine {
   }
 
   /// Makes a new anchor current, taking p, q from Y now and a margin sized for the wall (see
-  /// fast::anchor_with_margin).
+  /// fast::anchor_with_margin). A moving wall's anchor is made for the smaller of its radii
+  /// now and at the end of the step (of the last step's length), so that a wall moving in
+  /// spends none of the margin in the step the anchor starts in.
   void start_anchor() {
     Anchor next;
     next.id = anchors_.next_id();
@@ -466,7 +510,14 @@ class FastEngine final : public Engine {
     next.p = motion_.aY;
     next.q = motion_.bY;
     const Vec3 offset = next.offset(motion_, flow_at(tau_), ForcedFlow{});
-    const fast::MarginInputs margin{length(),
+    double R = length(), wall_step = 0;
+    if (path_ && dt_ > 0) {
+      const double R_end = path_->radius_at(t_ + dt_);
+      wall_step = std::abs(R_end - R);
+      R = std::min(R, R_end);
+    }
+    const fast::MarginInputs margin{R,
+                                    wall_step,
                                     k_,
                                     omega(),
                                     motion_.V_cm.norm(),
@@ -654,9 +705,10 @@ class FastEngine final : public Engine {
   }
 
   /// The lookahead of the last kLookahead + 1 steps relied on their kicks staying within
-  /// budget. If they did not, every particle it skipped ahead is rescheduled without it.
-  void redo_lookahead_if_kicks_too_large() {
-    if (k_ == 0 || lookahead_.kicks_within_budget(omega(), length())) {
+  /// budget (made for a wall of radius R at least). If they did not, every particle it skipped
+  /// ahead is rescheduled without it.
+  void redo_lookahead_if_kicks_too_large(double R) {
+    if (k_ == 0 || lookahead_.kicks_within_budget(omega(), R)) {
       // The schedules made kLookahead + 1 steps ago no longer rely on anything unchecked.
       for (Lane& lane : lanes_) lane.lookahead[std::size_t(step_) % (kLookahead + 1)].clear();
       return;
@@ -685,6 +737,8 @@ class FastEngine final : public Engine {
   }
 
   EngineConfig config_;
+  std::optional<WallPath> path_;  ///< a moving wall's radius over time
+  fast::SphereWall wall_;         ///< the wall as this step's hits see it
   double J_ = 0, M_ = 0, k_ = 0, t_ = 0;
   double two_omega_ = 0;  // 2 sqrt|k|
   bool forced_ = false;   // gravity or drag
@@ -740,12 +794,13 @@ bool fast_engine_applies(const EngineConfig& config) {
   // closed-form path. On an inelastic one particles come to rest (rest_on_floor), held up
   // out of any closed form.
   if (config.floor && config.floor->restitution != 1) return false;
+  // Hard spheres touch every particle in every step (their contacts are between particles,
+  // not with the wall), so no schedule of wall windows can skip them (docs/architecture.md).
+  // A moving wall (its radius bracketed over each schedule's life, fast_engine_anchor.h) and a
+  // thermal wall (a hit re-emits the particle onto a new orbit, fast_engine_wall.h) run here,
+  // with forces and a floor or without: the hit only needs dv, whatever the wall does.
   return config.method == Method::analytic && config.collisions == CollisionMode::paper &&
-         // Its windows assume a wall that stands still, and hard spheres touch every particle
-         // in every step (docs/architecture.md); the thermal wall is left to the reference
-         // engine until the fast engine's hit takes a wall model (its draws are keyed on step
-         // and particle so that it could).
-         config.wall_moves.empty() && !config.wall_temperature && !config.sphere_radius;
+         !config.sphere_radius;
 }
 
 std::unique_ptr<Engine> make_fast_engine(System initial, const EngineConfig& config) {

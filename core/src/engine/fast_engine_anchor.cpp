@@ -11,6 +11,10 @@ constexpr double kMarginFloor = 0.004;
 constexpr double kMarginDriftTimes = 4;
 // At most N / kShellBudget particles within reach of a widened margin (J > 0).
 constexpr std::size_t kShellBudget = 100;
+// A moving wall spends an anchor's margin (Anchor::margin_at), which is renewed at half of it:
+// it should last this many steps of the wall's travel, so that new anchors (and for J >= 0
+// their re-bases, O(N)) stay rare.
+constexpr double kMarginWallSteps = 512;
 
 }  // namespace
 
@@ -20,6 +24,7 @@ Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs&
   constexpr int kBins = GapHistogram::kBins;
   double extra = kMarginFloor * Rw;
   if (in.k != 0) extra = std::max(extra, kMarginDriftTimes * in.cm_speed / in.omega);
+  extra = std::max(extra, kMarginWallSteps * in.wall_step);
   if (in.k > 0) {
     const std::size_t budget = std::max<std::size_t>(64, in.particles / kShellBudget);
     std::size_t within = 0;
@@ -30,6 +35,7 @@ Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs&
   }
   extra = std::min(extra, 0.5 * Rw);
   anchor.margin = base + extra;
+  anchor.radius = Rw;
   anchor.threshold = Rw - anchor.margin;
   anchor.threshold2 = anchor.threshold * anchor.threshold;
   anchor.renew_level = base + 0.5 * extra;

@@ -1,7 +1,8 @@
 #pragma once
 // A particle as the fast engine keeps it: the coefficients of its free oscillation about the
 // CM path and its place in the schedule; and what is done to it: the wall check of Appendix A
-// and a hit's velocity jump, a re-base's shift, and its lab state when one is materialised.
+// (against any wall: fast_engine_wall.h) and a hit's velocity jump, a re-base's shift, and its
+// lab state when one is materialised.
 
 #include <cstddef>
 #include <cstdint>
@@ -91,20 +92,23 @@ struct CoefficientSums {
 struct StepData {
   ForcedFlow f0, f1;
   Vec3 o0, o0v, o1;
-  double R2;           ///< the wall's radius, squared
   double determinant;  ///< xc vs - vc xs of f0: exp(-gamma tau), 1 up to rounding without drag
 };
 
-/// Appendix A for one particle: if its position predicted for the step's end lies outside
-/// the wall and it moves outward now, it is reflected now (at the step's start), the wall's
-/// tally takes the hit and dv is its velocity change. Says whether it was reflected.
-inline bool reflect_if_leaving(Body& o, const StepData& d, WallTally& tally, Vec3& dv) {
+/// Appendix A for one particle (id) and one wall: if its position predicted for the step's end
+/// lies outside the wall and it is leaving the wall now, it hits now (at the step's start); the
+/// wall's tally takes the hit and dv is its velocity change. Says whether it hit. The wall
+/// (fast_engine_wall.h) says where it is, whether the particle leaves and what the hit does:
+/// outside(r1), leaving(r0, v0), hit(m, r0, v0, id, tally) -> dv.
+template <class Wall>
+inline bool reflect_if_leaving(Body& o, std::uint32_t id, const StepData& d, const Wall& wall,
+                               WallTally& tally, Vec3& dv) {
   const Vec3 r1 = d.f1.xc * o.a + d.f1.xs * o.b + d.o1;
-  if (!(r1.squaredNorm() > d.R2)) return false;
+  if (!wall.outside(r1)) return false;
   const Vec3 r0 = d.f0.xc * o.a + d.f0.xs * o.b + d.o0;
   const Vec3 v0 = d.f0.vc * o.a + d.f0.vs * o.b + d.o0v;
-  if (!(v0.dot(r0) > 0)) return false;
-  dv = wall_reflection(o.m, r0, v0, tally);
+  if (!wall.leaving(r0, v0)) return false;
+  dv = wall.hit(o.m, r0, v0, id, tally);
   kick(o, dv, d.f0, d.determinant);  // y_i's velocity jumps by dv at the step's start
   return true;
 }

@@ -22,13 +22,18 @@ void thermal_uniforms(const ThermalDraw& key, double u[3]) {
 }
 
 void reemit_from_thermal_wall(Particle& p, double Tw, const ThermalDraw& key, WallTally& tally) {
-  const Vec3 n = p.r.normalized();
-  const double v_r = p.v.dot(n);
-  const double kinetic_before = 0.5 * p.m * p.v.squaredNorm();
+  p.v = thermal_reemission(p.m, p.r, p.v, Tw, key, tally);
+}
+
+Vec3 thermal_reemission(double m, const Vec3& r, const Vec3& v, double Tw, const ThermalDraw& key,
+                        WallTally& tally) {
+  const Vec3 n = r.normalized();
+  const double v_r = v.dot(n);
+  const double kinetic_before = 0.5 * m * v.squaredNorm();
 
   double u[3];
   thermal_uniforms(key, u);
-  const double sigma = std::sqrt(Tw / p.m);
+  const double sigma = std::sqrt(Tw / m);
   // Rayleigh by inversion; the tangential pair by Box-Muller.
   const double v_n = sigma * std::sqrt(-2 * portable::log(u[0]));
   const double g = sigma * std::sqrt(-2 * portable::log(u[1]));
@@ -40,13 +45,13 @@ void reemit_from_thermal_wall(Particle& p, double Tw, const ThermalDraw& key, Wa
   const Vec3 t2 = n.cross(t1);
   const Vec3 v_out = -v_n * n + g * c * t1 + g * s * t2;
 
-  const Vec3 dv = v_out - p.v;
-  p.v = v_out;
+  const Vec3 dv = v_out - v;
   tally.hits += 1;
-  tally.radial_impulse += p.m * (std::abs(v_r) + v_n);
+  tally.radial_impulse += m * (std::abs(v_r) + v_n);
   tally.hit_kinetic_energy += kinetic_before;
-  tally.wall_momentum -= p.m * dv;
-  tally.books.wall_heat += 0.5 * p.m * v_out.squaredNorm() - kinetic_before;
+  tally.wall_momentum -= m * dv;
+  tally.books.wall_heat += 0.5 * m * v_out.squaredNorm() - kinetic_before;
+  return v_out;
 }
 
 }  // namespace swarm

@@ -30,17 +30,16 @@ double WallPath::radius_at(double t) const {
 
 double WallPath::end_time() const { return starts_.back(); }
 
+double WallPath::lowest_between(double t0, double t1) const {
+  // The radius is linear between the legs' ends, so its least value is at t0, t1 or an end.
+  double lowest = std::min(radius_at(t0), radius_at(t1));
+  for (const double t : starts_)
+    if (t0 < t && t < t1) lowest = std::min(lowest, radius_at(t));
+  return lowest;
+}
+
 void reflect_off_moving_wall(Particle& p, double u, WallTally& tally) {
-  const Vec3 n = p.r.normalized();
-  const double v_r = p.v.dot(n);
-  const double kinetic_before = 0.5 * p.m * p.v.squaredNorm();
-  const Vec3 dv = 2 * (u - v_r) * n;
-  p.v += dv;
-  tally.hits += 1;
-  tally.radial_impulse += std::abs(2 * p.m * (v_r - u));
-  tally.hit_kinetic_energy += kinetic_before;
-  tally.wall_momentum -= p.m * dv;
-  tally.books.wall_work += 0.5 * p.m * p.v.squaredNorm() - kinetic_before;
+  p.v += moving_wall_reflection(p.m, p.r, p.v, u, tally);
 }
 
 }  // namespace swarm

@@ -19,11 +19,13 @@ constexpr double kOutputBytesPerParticle = 1400;
 constexpr double kSampleBytes = 2 * double(sizeof(Sample));  // with a vector's spare capacity
 constexpr double kComparisonSampleBytes = 2 * 24;  // a ComparisonSample, likewise
 constexpr double kOutputBytesPerSample = 2000;     // JSON tree and text, CSV, figures
-/// An inelastic floor takes the analytic method off the fast engine (fast_engine_applies):
-/// the reference engine's particle-step costs about as much as 50 of the fast engine's
-/// (6e7 against 3e9 a second, README's Performance table). Gravity, mass-proportional drag and
-/// an elastic floor stay on it, at about 1x (drag), 6-13x (gravity) and 12-24x (gravity and a
-/// floor) its plain cost per particle-step (bench/forces_bench.cpp, bench/RESULTS.md).
+/// An inelastic floor takes the analytic method off the fast engine (fast_engine_applies; drag
+/// b on chosen particles would too, but presets give it a numerical method only): the reference
+/// engine's particle-step costs about as much as 50 of the fast engine's (6e7 against 3e9 a
+/// second, README's Performance table). Gravity, mass-proportional drag and an elastic floor
+/// stay on it, at about 1x (drag), 6-13x (gravity) and 12-24x (gravity and a floor) its plain
+/// cost per particle-step (bench/forces_bench.cpp, bench/RESULTS.md); with a moving or hot wall
+/// as well they are charged the same (not measured).
 constexpr double kReferenceParticleStepCost = 50;
 constexpr double kForcedParticleStepCost = 15;
 
@@ -36,19 +38,17 @@ bool forced_on_the_fast_engine(const Preset& p) {
   return forces && p.method == Method::analytic && !off_the_fast_engine(p);
 }
 
-// [Appendix B walls and contacts] A moving or hot wall runs on the reference engine, which
-// steps (and, for the prediction, copies) every particle in every step; hard spheres also sort
-// them into cells and test their neighbours. Costs per particle-step relative to the fast
-// engine's in a container (1.85 ns), from bench/walls_bench.cpp: the reference engine ~21 ns,
-// hard spheres ~290 ns per particle-step (N = 40,000).
-constexpr double kReferenceWallCost = 10;
+// [Appendix B walls and contacts] Hard spheres run on the reference engine, which steps (and,
+// for the prediction, copies) every particle in every step, sorts them into cells and tests
+// their neighbours: ~290 ns per particle-step at N = 40,000 against the fast engine's 1.85 ns
+// in a container (bench/walls_bench.cpp). A moving or hot wall runs on the fast engine at
+// about its plain wall's cost (0.8-1.6x, bench/RESULTS.md), so it costs no more here.
 constexpr double kHardSphereCost = 150;
 constexpr double kCellGridBytesPerParticle = 32;  // cell, slot and two cell starts
 
 double particle_step_weight(const Preset& p) {
   if (p.sphere_radius) return kHardSphereCost;
   if (off_the_fast_engine(p)) return kReferenceParticleStepCost;
-  if (!p.wall_moves.empty() || p.wall_temperature) return kReferenceWallCost;
   if (forced_on_the_fast_engine(p)) return kForcedParticleStepCost;
   return 1;
 }
@@ -57,7 +57,6 @@ double particle_step_weight(const Preset& p) {
 const char* particle_step_weight_reason(const Preset& p) {
   if (p.sphere_radius) return "hard-sphere contacts";
   if (off_the_fast_engine(p)) return "an inelastic floor: the reference engine";
-  if (!p.wall_moves.empty() || p.wall_temperature) return "a moving or hot wall";
   return "gravity, a floor or drag";
 }
 

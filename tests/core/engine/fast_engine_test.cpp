@@ -19,18 +19,10 @@
 using namespace swarm;
 using doctest::Approx;
 using testing::crowded_swarm;
+using testing::max_state_difference;
 using testing::shipped_preset;
 
 namespace {
-
-double max_state_difference(const System& a, const System& b) {
-  double worst = 0;
-  for (std::size_t i = 0; i < a.particles.size(); ++i) {
-    worst = std::max(worst, (a.particles[i].r - b.particles[i].r).norm());
-    worst = std::max(worst, (a.particles[i].v - b.particles[i].v).norm());
-  }
-  return worst;
-}
 
 /// The energy the books count: kinetic, the springs' and gravity's.
 double booked_energy(const System& s, const EngineConfig& config) {

@@ -9,10 +9,10 @@
 
 #include "swarm/engine/engine.h"
 #include "swarm/measure/speed_distribution.h"
-#include "swarm/measure/state_hash.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/thermal_wall.h"
 #include "swarm/preset/initial_conditions.h"
+#include "test_systems.h"
 
 using namespace swarm;
 
@@ -100,7 +100,7 @@ TEST_CASE("Thermal wall: a cold J = 0 gas reaches 3/2 Tw per particle with Maxwe
 
 TEST_CASE("a thermal-wall run ends in the pinned state (native == wasm)") {
   // The re-emission's log, sin and cos are the core's own, and its draws keyed on step and
-  // particle: the same bits natively and under node.
+  // particle: the same bits natively and under node, on either engine.
   SwarmSpec spec;
   spec.count = 200;
   spec.position_radius = 0.9;
@@ -110,11 +110,10 @@ TEST_CASE("a thermal-wall run ends in the pinned state (native == wasm)") {
   EngineConfig config;
   config.container_radius = 1.0;
   config.wall_temperature = 0.7;
-  auto engine = make_engine(s, config);
-  std::int64_t hits = 0;
-  for (int i = 0; i < 2000; ++i) hits += engine->step(1e-3).hits;
-  CHECK(hits > 50);
-  const std::uint64_t h = state_hash(engine->system());
-  INFO("hash ", h);
-  CHECK(h == 0x9b3f05e061f8e656ULL);
+  const std::uint64_t reference =
+      testing::final_state_hash(*make_reference_engine(s, config), 2000, 1e-3, 50);
+  const std::uint64_t fast = testing::final_state_hash(*make_engine(s, config), 2000, 1e-3, 50);
+  INFO("hashes ", reference, " ", fast);
+  CHECK(reference == 0x9b3f05e061f8e656ULL);
+  CHECK(fast == 0xc0f4971391c981f3ULL);  // make_engine: the fast engine
 }

@@ -10,6 +10,7 @@
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/wall_motion.h"
 #include "swarm/preset/initial_conditions.h"
+#include "test_systems.h"
 
 using namespace swarm;
 
@@ -61,6 +62,15 @@ TEST_CASE("WallPath: the radius moves at each leg's speed towards its target, th
   CHECK(path.radius_at(10.0) == 3.0);
 }
 
+TEST_CASE("WallPath: the lowest radius over an interval is at its ends or a turn inside it") {
+  const WallPath path(2.0, {{1.0, 0.5}, {3.0, 1.0}});  // in until t = 2, out until t = 4
+  CHECK(path.lowest_between(0.0, 1.0) == path.radius_at(1.0));
+  CHECK(path.lowest_between(1.0, 3.0) == doctest::Approx(1.0));
+  CHECK(path.lowest_between(2.5, 3.5) == path.radius_at(2.5));
+  CHECK(path.lowest_between(-1.0, 0.0) == 2.0);
+  CHECK(path.lowest_between(5.0, 9.0) == 3.0);
+}
+
 TEST_CASE("reflect_off_moving_wall reverses the velocity relative to the wall, and books the work") {
   Particle p{2.0, {1, 0, 0}, {0.5, 0.3, 0}};
   WallTally tally;
@@ -104,4 +114,18 @@ TEST_CASE("Moving wall: a compress-expand cycle at finite speed heats the gas (h
   CHECK(fast.work > 0);
   CHECK(fast.T1 / fast.T0 > 1.05);
   CHECK(fast.T1 / fast.T0 > slow.T1 / slow.T0 + 0.03);
+}
+
+TEST_CASE("a moving-wall run ends in the pinned state (native == wasm)") {
+  // In and out at a tenth of the thermal speed, J > 0, on both engines.
+  System s = free_gas(300, 9, 1.0 / 300);
+  EngineConfig config;
+  config.container_radius = 1.0;
+  config.wall_moves = {{0.8, 0.1}, {1.0, 0.1}};
+  const std::uint64_t reference =
+      testing::final_state_hash(*make_reference_engine(s, config), 3000, 1e-3, 500);
+  const std::uint64_t fast = testing::final_state_hash(*make_engine(s, config), 3000, 1e-3, 500);
+  INFO("hashes ", reference, " ", fast);
+  CHECK(reference == 0x5d30ad5555714d90ULL);
+  CHECK(fast == 0x0314272b813094caULL);  // make_engine: the fast engine
 }

@@ -37,7 +37,9 @@ struct EngineConfig {
   std::optional<Floor> floor;
 
   // Walls that move or are hot, and particles that are hard spheres (Appendix B; paper
-  // collisions only): swarm/physics/wall_motion.h, swarm/physics/thermal_wall.h, swarm/physics/hard_spheres.h.
+  // collisions only): swarm/physics/wall_motion.h, swarm/physics/thermal_wall.h,
+  // swarm/physics/hard_spheres.h. Moving and hot walls run on the fast engine too (with the
+  // analytic method); hard spheres only on the reference engine (fast_engine_applies).
   std::vector<WallMove> wall_moves;        ///< the wall's path from container_radius at t = 0
   std::optional<double> wall_temperature;  ///< a thermal wall at this T (energy units, k_B = 1)
   std::uint64_t wall_stream = 0;  ///< the thermal wall's draws are keyed on it (ThermalDraw)
@@ -73,8 +75,9 @@ class Engine {
 std::unique_ptr<Engine> make_reference_engine(System initial, const EngineConfig& config);
 
 /// The best engine for the configuration: the fast engine (swarm/engine/fast_engine.h) where it
-/// applies (the analytic method with paper collisions, with or without a container), else the
-/// reference engine.
+/// applies (the analytic method with paper collisions, with or without a container, the wall
+/// fixed, moving or hot, under gravity, mass-proportional drag and an elastic floor; not drag
+/// b on chosen particles, an inelastic floor or hard spheres), else the reference engine.
 std::unique_ptr<Engine> make_engine(System initial, const EngineConfig& config);
 
 }  // namespace swarm

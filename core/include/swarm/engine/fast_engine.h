@@ -37,6 +37,20 @@
 /// core/src/engine/lane_pool.h). A step's hits are combined in particle-id order and the O(N)
 /// sums in fixed blocks in block order, so the results do not depend on the thread count.
 ///
+/// The wall may move (EngineConfig::wall_moves: its radius is linear in time between moves) or
+/// be hot (EngineConfig::wall_temperature). A hit only needs dv, whatever the wall does:
+/// a moving wall reverses the velocity relative to it, a thermal wall re-emits the particle
+/// with the velocity the reference engine draws for it in that step (the same ThermalDraw
+/// keys), and either puts the particle on a new closed-form orbit like any hit
+/// (core/src/engine/fast_engine_wall.h). A moving wall spends the anchors' margin as the CM
+/// does: an anchor made for radius R stays valid while its offset at a step end is within
+/// margin - (R - R_end), R_end the wall's radius then, so a wall that closes in expires it;
+/// the lookahead judges against the least radius the wall has over its steps. The wall's
+/// rules and the forces' flow compose: a hit's dv, whatever the wall, goes into the
+/// coefficients through the (damped) flow, and the floor is checked after the wall on the same
+/// prediction, as in the reference engine; an anchor holds while both the wall's radius rule
+/// and the floor's level hold.
+///
 /// The engine reproduces the reference engine's wall hits step by step (same predicate on the
 /// same prediction, evaluated from an algebraically identical state) up to rounding.
 
@@ -49,10 +63,10 @@
 namespace swarm {
 
 /// Whether make_fast_engine can run this configuration: the analytic method with paper
-/// collisions (with a container or without: isolated, it is the analytic solution), also
-/// under gravity, mass-proportional drag and an elastic floor. Not drag b on chosen particles
-/// (each particle's own rate couples them all through the CM: no closed form per particle),
-/// an inelastic floor (particles come to rest on it), moving or thermal walls, hard spheres.
+/// collisions (with a container or without: isolated, it is the analytic solution), the wall
+/// fixed, moving or hot, also under gravity, mass-proportional drag and an elastic floor. Not
+/// drag b on chosen particles (each particle's own rate couples them all through the CM: no
+/// closed form per particle), an inelastic floor (particles come to rest on it), hard spheres.
 bool fast_engine_applies(const EngineConfig& config);
 
 /// The most particles the fast engine takes (ids are packed into 26 bits).

@@ -35,4 +35,9 @@ void thermal_uniforms(const ThermalDraw& key, double u[3]);
 /// in tally.books.wall_heat.
 void reemit_from_thermal_wall(Particle& p, double Tw, const ThermalDraw& key, WallTally& tally);
 
+/// The same for a particle of mass m at r with velocity v: records the hit and the heat and
+/// returns the velocity it leaves with.
+Vec3 thermal_reemission(double m, const Vec3& r, const Vec3& v, double Tw, const ThermalDraw& key,
+                        WallTally& tally);
+
 }  // namespace swarm

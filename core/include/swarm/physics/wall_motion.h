@@ -3,6 +3,7 @@
 /// that hits it leaves with its radial velocity relative to the wall reversed, so compression
 /// does work on the gas and expansion takes it back.
 
+#include <cmath>
 #include <vector>
 
 #include "swarm/physics/system.h"
@@ -25,6 +26,8 @@ class WallPath {
   double radius_at(double t) const;
   /// The time at which the last move ends.
   double end_time() const;
+  /// The smallest radius the wall has at any time in [t0, t1] (t0 <= t1).
+  double lowest_between(double t0, double t1) const;
 
  private:
   double R0_;
@@ -37,5 +40,22 @@ class WallPath {
 /// which is added to tally.books.wall_work; the radial impulse 2 m |v_r - u| is recorded as a
 /// hit. u = 0 gives the elastic reflection of reflect_at_wall.
 void reflect_off_moving_wall(Particle& p, double u, WallTally& tally);
+
+/// The same for a particle of mass m at r with velocity v: records the hit and the work and
+/// returns the change of velocity, 2 (u - v_r) r / |r|. Inline: the fast engine calls it at
+/// every hit.
+inline Vec3 moving_wall_reflection(double m, const Vec3& r, const Vec3& v, double u,
+                                   WallTally& tally) {
+  const Vec3 n = r.normalized();
+  const double v_r = v.dot(n);
+  const double kinetic_before = 0.5 * m * v.squaredNorm();
+  const Vec3 dv = 2 * (u - v_r) * n;
+  tally.hits += 1;
+  tally.radial_impulse += std::abs(2 * m * (v_r - u));
+  tally.hit_kinetic_energy += kinetic_before;
+  tally.wall_momentum -= m * dv;
+  tally.books.wall_work += 0.5 * m * (v + dv).squaredNorm() - kinetic_before;
+  return dv;
+}
 
 }  // namespace swarm
