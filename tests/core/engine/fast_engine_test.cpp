@@ -278,8 +278,11 @@ TEST_CASE("any thread count gives the same run to the last bit") {
     return r;
   };
   // 10,000 particles: the epoch's sums span three blocks of 4096.
-  for (const auto& [J, forced] : {std::pair{+1.0, false}, std::pair{-1.0, false},
-                                  std::pair{0.0, false}, std::pair{+1.0, true}}) {
+  for (const auto& setup : {std::pair{+1.0, false}, std::pair{-1.0, false},
+                            std::pair{0.0, false}, std::pair{+1.0, true}}) {
+    // Not a structured binding: CAPTURE's lambda may not name one in C++17 (clang, emcc).
+    const double J = setup.first;
+    const bool forced = setup.second;
     CAPTURE(J);
     CAPTURE(forced);
     System s = crowded_swarm(10000, J, 31);
