@@ -30,7 +30,8 @@
 #include "engine/id_sort.h"
 #include "engine/lane_pool.h"
 #include "engine/timing_wheel.h"
-#include "swarm/physics/flow.h"
+#include "math/portable_math.h"
+#include "swarm/methods/external_forces.h"
 #include "swarm/physics/regime.h"
 
 namespace swarm {
@@ -57,6 +58,9 @@ constexpr double kMaxRepulsivePhase = 2.5;
 constexpr double kMaxRepulsiveY = 0.005;  // times the wall radius
 constexpr double kMaxAttractivePhase = 512;
 constexpr double kMaxFreeSteps = 1024;
+// Under drag the flow's determinant is exp(-gamma tau) and the coefficients a, b grow like
+// exp(gamma tau / 2) against it: re-base before gamma tau passes this.
+constexpr double kMaxDragDecay = 1;
 // How many ids ahead of the one being checked the particle data is fetched.
 constexpr std::size_t kPrefetch = 8;
 // The particles are split by index into one lane per thread, each with its own buckets, so
@@ -76,6 +80,7 @@ struct Hit {
   std::uint32_t id;
   Vec3 kick;  // m dv / M: its share of the change of V_cm
   WallTally tally;
+  fast::CoefficientSums sums_change{};  // under drag: what it changed in the energy sums
 };
 
 /// One lane of the schedule: its timing wheel and the hits of one step. Each lane's thread
@@ -113,16 +118,27 @@ class FastEngine final : public Engine {
     t_ = initial.t;
     M_ = total_mass(initial);
     k_ = J_ * M_;
+    forced_ = config.forces.any();
+    gamma_ = config.forces.drag ? config.forces.drag->gamma : 0.0;
     two_omega_ = 2 * std::sqrt(std::abs(k_));
-    spring_ = {k_, k_ != 0 ? 1 / std::sqrt(std::abs(k_)) : 0.0};
-    phase_per_time_ = k_ != 0 ? two_omega_ : 1.0;
+    // The windows see the damped oscillation as a free one of stiffness k - (gamma / 2)^2
+    // under a decaying envelope (fast_engine_window.h).
+    const double eta = 0.5 * gamma_;
+    window_k_ = k_ - eta * eta;
+    spring_ = {window_k_, window_k_ != 0 ? 1 / std::sqrt(std::abs(window_k_)) : 0.0, eta};
+    phase_per_time_ = window_k_ != 0 ? 2 * std::sqrt(std::abs(window_k_)) : 1.0;
+    checks_more_ = gamma_ > 0 || config.floor;
+    if (config.floor) floor_windows_.resize(initial.particles.size());
     motion_.R_cm = cm_position(initial);
     motion_.V_cm = cm_velocity(initial);
+    motion_.g = config.forces.gravity;
     orbits_.resize(initial.particles.size());
     for (std::size_t i = 0; i < orbits_.size(); ++i) {
       const Particle& p = initial.particles[i];
       orbits_[i] = {p.r - motion_.R_cm, p.v - motion_.V_cm, p.m, kParked, {kUnknown, kUnknown}};
+      swarm_size_ = std::max(swarm_size_, orbits_[i].a.norm());
     }
+    if (!(swarm_size_ > 0)) swarm_size_ = 1;
     if (!config.wall_moves.empty() && config.container_radius)
       path_.emplace(*config.container_radius, config.wall_moves);
     wall_ = sphere_wall();
@@ -138,62 +154,70 @@ class FastEngine final : public Engine {
   WallTally step(double dt) override {
     WallTally tally;
     cache_valid_ = false;
-    if (!config_.container_radius || orbits_.empty()) {
+    if (!has_walls() || orbits_.empty()) {
       if (epoch_too_old(dt)) rebase();
       if (path_) config_.container_radius = path_->radius_at(t_ + dt);
-      finish_step(Flow::over(k_, tau_), Vec3::Zero(), dt);
+      finish_step(flow_at(tau_), flow_at(tau_ + dt), ForcedFlow::over(k_, gamma_, dt), dt,
+                  Vec3::Zero(), 1, tally);
       flow_carried_ = false;
       return tally;
     }
     if (dt != dt_) {
       dt_ = dt;
       steps_per_phase_ = 1 / (phase_per_time_ * dt_);
+      for (std::size_t j = 0; j < flows_ahead_.size(); ++j)
+        flows_ahead_[j] = ForcedFlow::over(k_, gamma_, double(j) * dt);
       schedule_all_pending_ = true;
     }
     fast::StepData& d = now_;
     const WallRadii radii = wall_radii(dt);
     // The flow at the step's end; at its start it is the last step's end, unless a re-base
     // restarted the epoch's time since.
-    const Flow last_end = d.f1;
-    d.f1 = Flow::over(k_, tau_ + dt);
+    const ForcedFlow last_end = d.f1;
+    d.f1 = flow_at(tau_ + dt);
+    const ForcedFlow& step_flow = flows_ahead_[1];
     // For J >= 0 a new anchor comes with a re-base, which also renews the margin's statistics.
     // For J < 0 the anchors are renewed without one, but Y, which the kicks make grow like
     // exp(Omega tau), must stay small: measured on the fireball, letting |Y| reach 0.02 R
-    // instead of 0.005 R makes the energy drift 40 times larger. A moving wall spends the
-    // anchor's margin too (Anchor::margin_at); one moving out only makes the windows too wide,
-    // which costs checks, so either way it renews the anchor.
+    // instead of 0.005 R makes the energy drift 40 times larger. Under gravity or drag the
+    // CM keeps moving against the wall (the wall holds the swarm up; drag slows it), so an
+    // anchor lives only a few dozen steps and is renewed without a re-base too. A moving wall
+    // spends the anchor's margin too (Anchor::margin_at, Anchor::wants_renewal).
+    const bool anchors_in_o1 = k_ < 0 || forced_;
     const Anchor& current = anchors_.current();
     const bool rebased =
         epoch_too_old(dt) ||
-        (k_ >= 0 ? current.offset(motion_, d.f1, dt).norm() +
-                           std::abs(current.radius - radii.end) >
-                       current.renew_level
-                 : (d.f1.c * motion_.aY + d.f1.s * motion_.bY).norm() >
-                       kMaxRepulsiveY * *config_.container_radius);
+        (!anchors_in_o1
+             ? current.wants_renewal(current.offset(motion_, d.f1, step_flow), radii.end)
+             : k_ < 0 && (d.f1.xc * motion_.aY + d.f1.xs * motion_.bY).norm() >
+                             kMaxRepulsiveY * length());
     if (rebased) {
       rebase();
-      d.f1 = Flow::over(k_, tau_ + dt);
+      d.f1 = flow_at(tau_ + dt);
     }
-    d.f0 = rebased || !flow_carried_ ? Flow::over(k_, tau_) : last_end;
+    d.f0 = rebased || !flow_carried_ ? flow_at(tau_) : last_end;
     flow_carried_ = true;
-    lookahead_.prepare(motion_, d.f1, k_, omega(), dt, radii.ahead);
+    if (gamma_ > 0) growth_ = portable::exp(gamma_ * tau_);
+    lookahead_.prepare(motion_, d.f1, flows_ahead_, omega(), radii.ahead,
+                       config_.floor ? config_.floor->z : -std::numeric_limits<double>::infinity());
     if (schedule_all_pending_)
       schedule_all();
-    else if (k_ < 0 && (step_ - anchors_.current().start >= kRepulsiveAnchorSteps ||
-                        anchors_.current().offset(motion_, d.f1, dt).norm() +
-                                std::abs(anchors_.current().radius - radii.end) >
-                            anchors_.current().renew_level))
+    else if (anchors_in_o1 &&
+             ((k_ < 0 && step_ - anchors_.current().start >= kRepulsiveAnchorSteps) ||
+              anchors_.current().wants_renewal(anchors_.current().offset(motion_, d.f1, step_flow),
+                                               radii.end)))
       next_anchor();
     redo_lookahead_if_kicks_too_large(radii.around);
 
-    d.o0 = motion_.offset_at(d.f0, 0);
+    d.o0 = motion_.offset_at(d.f0, flows_ahead_[0]);
     d.o0v = motion_.offset_velocity_at(d.f0);
-    d.o1 = motion_.offset_at(d.f1, dt);
-    d.determinant = d.f0.c * d.f0.c - d.f0.dc() * d.f0.s;
-    wall_.R2 = radii.end * radii.end;
+    d.o1 = motion_.offset_at(d.f1, step_flow);
+    d.determinant = d.f0.xc * d.f0.vs - d.f0.vc * d.f0.xs;
+    wall_.R2 = config_.container_radius ? radii.end * radii.end
+                                        : std::numeric_limits<double>::infinity();
     wall_.u = path_ ? (radii.end - *config_.container_radius) / dt : 0.0;
     wall_.step = std::uint64_t(step_);
-    anchors_.drop_expired(motion_, d.f1, dt, radii.end,
+    anchors_.drop_expired(motion_, d.f1, step_flow, radii.end,
                           [this](std::uint8_t id) { expire(id); });
 
     std::size_t pending = 0;
@@ -210,19 +234,20 @@ class FastEngine final : public Engine {
         const Hit& hit = lane.hits[key & 0xffffffff];
         tally.add(hit.tally);
         kick += hit.kick;
+        if (gamma_ > 0) sums_.add(hit.sums_change);
       }
       stats_.checks += lane.checks;
     }
     stats_.hits += tally.hits;
-    finish_step(d.f0, kick, dt, d.determinant);
-    config_.container_radius = radii.end;
+    finish_step(d.f0, d.f1, step_flow, dt, kick, d.determinant, tally);
+    if (path_) config_.container_radius = radii.end;
     return tally;
   }
 
   const System& system() override {
     if (!cache_valid_) {
-      const Flow f = Flow::over(k_, tau_);
-      const Vec3 o = motion_.offset_at(f, 0), ov = motion_.offset_velocity_at(f);
+      const ForcedFlow f = flow_at(tau_);
+      const Vec3 o = motion_.offset_at(f, ForcedFlow{}), ov = motion_.offset_velocity_at(f);
       cache_.J = J_;
       cache_.t = t_;
       cache_.particles.resize(orbits_.size());
@@ -282,7 +307,10 @@ class FastEngine final : public Engine {
       o.due = step_ + 1;             // checked: a second entry of i in this step is stale
       lane.work[checked++] = i;
       Vec3 dv;
-      if (fast::reflect_if_leaving(o, i, d, wall_, one, dv)) {
+      if (checks_more_) {
+        Hit hit{i, Vec3::Zero(), WallTally{}, {}};
+        if (check_under_forces(o, hit)) lane.hits.push_back(hit);
+      } else if (fast::reflect_if_leaving(o, i, d, wall_, one, dv)) {
         lane.hits.push_back({i, (o.m / M_) * dv, one});
         one = WallTally{};
       }
@@ -296,6 +324,25 @@ class FastEngine final : public Engine {
     fast::sort_by_id(lane.order, lane.order_scratch);
     lane.work.clear();
     fast::release_if_large(lane.work, lane_size_);
+  }
+
+  /// check_lane's check of one particle with a floor or under drag: the wall, then the floor
+  /// on the same prediction (the reference engine's order), and what the hits changed in the
+  /// drag's energy sums, all into `hit`. Says whether the particle hit either.
+  bool check_under_forces(Body& o, Hit& hit) {
+    const Body before = o;
+    Vec3 dv;
+    bool any = false;
+    if (fast::reflect_if_leaving(o, hit.id, now_, wall_, hit.tally, dv)) {
+      hit.kick += (o.m / M_) * dv;
+      any = true;
+    }
+    if (config_.floor && fast::bounce_if_falling(o, before, now_, *config_.floor, hit.tally, dv)) {
+      hit.kick += (o.m / M_) * dv;
+      any = true;
+    }
+    if (any && gamma_ > 0) hit.sums_change.replace(before, o);
+    return any;
   }
 
   /// One lane per thread, at most LanePool::kMaxLanes.
@@ -315,12 +362,22 @@ class FastEngine final : public Engine {
   /// R_cm and Y take the same velocity kick at tau_, so o keeps its position and velocity.
   /// Y's coefficients change exactly as the sum of the y_i's do, i.e. by the kick divided by
   /// the flow's computed determinant (see check_lane), so that R_cm stays the particles' CM.
-  void finish_step(const Flow& f0, const Vec3& kick, double dt, double determinant = 1) {
+  /// Then the CM moves on over the step (step: the flow over dt); under drag the energy it
+  /// takes, the drop of the energy from f0 to f1, goes into tally's books.
+  void finish_step(const ForcedFlow& f0, const ForcedFlow& f1, const ForcedFlow& step, double dt,
+                   const Vec3& kick, double determinant, WallTally& tally) {
     motion_.V_cm += kick;
     const Vec3 jump = kick / determinant;
-    motion_.aY -= f0.s * jump;
-    motion_.bY += f0.c * jump;
-    motion_.R_cm += motion_.V_cm * dt;
+    motion_.aY -= f0.xs * jump;
+    motion_.bY += f0.xc * jump;
+    if (!forced_) {
+      motion_.R_cm += motion_.V_cm * dt;
+    } else {
+      const double energy_before = gamma_ > 0 ? energy_at(f0) : 0.0;
+      motion_.R_cm += motion_.V_cm * step.cm_v + step.cm_g * motion_.g;
+      motion_.V_cm = step.cm_vv * motion_.V_cm + step.cm_vg * motion_.g;
+      if (gamma_ > 0) tally.books.drag_loss += energy_before - energy_at(f1);
+    }
     lookahead_.record_kick(step_, kick.norm());
     tau_ += dt;
     t_ += dt;
@@ -330,16 +387,40 @@ class FastEngine final : public Engine {
   /// sqrt|k|: omega for J > 0, Omega for J < 0, 0 for J = 0.
   double omega() const { return 0.5 * two_omega_; }
 
+  /// Whether there is a wall or a floor to check.
+  bool has_walls() const { return config_.container_radius || config_.floor; }
+
+  /// The length the schedule's margins and budgets scale with: the wall's radius, or without
+  /// one (a floor alone) the swarm's size at the start.
+  double length() const { return config_.container_radius.value_or(swarm_size_); }
+
+  /// The flow of the y_i over the time tau since the epoch began.
+  ForcedFlow flow_at(double tau) const { return ForcedFlow::over(k_, gamma_, tau); }
+
+  /// The system's energy (kinetic, the springs' and gravity's) at the time of flow f, with
+  /// R_cm and V_cm as they are then: O(1) from the sums of the y_i's coefficients. With x_i =
+  /// y_i - Y, sum m (|x'|^2 + k |x|^2) = sum m (|y'|^2 + k |y|^2) - M (|Y'|^2 + k |Y|^2).
+  double energy_at(const ForcedFlow& f) const {
+    const double own = (f.vc * f.vc + k_ * f.xc * f.xc) * sums_.aa +
+                       2 * (f.vc * f.vs + k_ * f.xc * f.xs) * sums_.ab +
+                       (f.vs * f.vs + k_ * f.xs * f.xs) * sums_.bb;
+    const Vec3 Y = f.xc * motion_.aY + f.xs * motion_.bY;
+    const Vec3 Yv = f.vc * motion_.aY + f.vs * motion_.bY;
+    const double about_cm = 0.5 * (own - M_ * (Yv.squaredNorm() + k_ * Y.squaredNorm()));
+    return about_cm + 0.5 * M_ * motion_.V_cm.squaredNorm() - M_ * motion_.g.dot(motion_.R_cm);
+  }
+
   // [SECTION] The wall: where it is, for the hits and for the schedules
 
   /// The wall's radius at the end of the step of length dt that starts now, and, for the
   /// lookahead, the least it has over the next kLookahead + 1 steps (ahead) and over those and
-  /// the last kLookahead + 1 steps (around), whose lookaheads are still relied on.
+  /// the last kLookahead + 1 steps (around), whose lookaheads are still relied on. Without a
+  /// wall (a floor alone) all three are length(), the size the anchors were made for.
   struct WallRadii {
     double end, ahead, around;
   };
   WallRadii wall_radii(double dt) const {
-    const double R = *config_.container_radius;
+    const double R = length();
     if (!path_) return {R, R, R};
     const double span = (kLookahead + 1) * dt;
     return {path_->radius_at(t_ + dt), path_->lowest_between(t_, t_ + span),
@@ -359,6 +440,7 @@ class FastEngine final : public Engine {
 
   bool epoch_too_old(double dt) const {
     if (rebase_pending_) return true;
+    if (gamma_ * (tau_ + dt) > kMaxDragDecay) return true;
     if (k_ > 0) return omega() * (tau_ + dt) > kMaxAttractivePhase;
     if (k_ < 0) return omega() * (tau_ + dt) > kMaxRepulsivePhase;
     return tau_ + dt > kMaxFreeSteps * dt;
@@ -373,12 +455,14 @@ class FastEngine final : public Engine {
     const double Rw = config_.container_radius.value_or(0.0);
     const double reach = std::max(Rw - motion_.R_cm.norm(), 1e-300);
     const double bins_per_length = kBins / (0.5 * std::max(Rw, 1e-300));
-    const double inv_omega = spring_.inv_omega;
-    const bool histogram = k_ > 0 && Rw > 0;
+    const double inv_omega = spring_.inv_omega, eta = spring_.eta;
+    const bool histogram = window_k_ > 0 && Rw > 0;
+    const bool drag = gamma_ > 0;
     // Sums over fixed blocks, combined in block order: the rounding does not depend on the
     // threads. (The histogram's counts are integers.)
     const std::size_t blocks = (orbits_.size() + kSumBlock - 1) / kSumBlock;
     std::vector<Vec3> sum_a(blocks), sum_b(blocks);
+    std::vector<fast::CoefficientSums> sums(drag ? blocks : 0);
     std::vector<fast::GapHistogram> gaps(histogram ? blocks : 0);
     pool_.run(blocks, [&](std::size_t block) {
       Vec3 sa = Vec3::Zero(), sb = Vec3::Zero();
@@ -388,13 +472,19 @@ class FastEngine final : public Engine {
         if (shift) fast::shift(o, *shift);
         sa += o.m * o.a;
         sb += o.m * o.b;
+        if (drag) sums[block].include(o);
         if (!histogram) continue;
-        const fast::Swing swing = fast::swing_of(o.a, o.b, inv_omega);
+        // Under drag the largest |y| to come is at most that of the free oscillation the
+        // windows see (fast_engine_window.h).
+        const fast::Swing swing =
+            fast::swing_of(o.a, drag ? Vec3(o.b + eta * o.a) : o.b, inv_omega);
         gaps[block].counts[fast::GapHistogram::bin_of(swing.P + swing.A, reach, bins_per_length)]++;
       }
       sum_a[block] = sa;
       sum_b[block] = sb;
     });
+    sums_ = {};
+    for (const fast::CoefficientSums& block : sums) sums_.add(block);
     gaps_.counts.fill(0);
     for (const auto& block : gaps)
       for (int b = 0; b < kBins; ++b) gaps_.counts[std::size_t(b)] += block.counts[std::size_t(b)];
@@ -419,8 +509,8 @@ class FastEngine final : public Engine {
     next.start = step_;
     next.p = motion_.aY;
     next.q = motion_.bY;
-    const double base = next.offset(motion_, Flow::over(k_, tau_), 0).norm();
-    double R = config_.container_radius.value_or(1.0), wall_step = 0;
+    const Vec3 offset = next.offset(motion_, flow_at(tau_), ForcedFlow{});
+    double R = length(), wall_step = 0;
     if (path_ && dt_ > 0) {
       const double R_end = path_->radius_at(t_ + dt_);
       wall_step = std::abs(R_end - R);
@@ -431,12 +521,13 @@ class FastEngine final : public Engine {
                                     k_,
                                     omega(),
                                     motion_.V_cm.norm(),
+                                    config_.floor.has_value(),
                                     orbits_.size(),
                                     &gaps_};
-    anchors_.make_current(fast::anchor_with_margin(next, base, margin));
+    anchors_.make_current(fast::anchor_with_margin(next, offset, margin));
   }
 
-  /// A new current anchor without a re-base (J < 0): O(1).
+  /// A new current anchor without a re-base (J < 0, or under gravity or drag): O(1).
   void next_anchor() {
     anchors_.retire_current();
     start_anchor();
@@ -447,17 +538,17 @@ class FastEngine final : public Engine {
   void rebase() {
     ++stats_.rebases;
     rebase_pending_ = false;
-    const Flow f = Flow::over(k_, tau_);
-    const Vec3 Y = f.c * motion_.aY + f.s * motion_.bY;
-    const Vec3 Yv = f.dc() * motion_.aY + f.c * motion_.bY;
-    const bool keep_schedules = config_.container_radius && !schedule_all_pending_;
+    const ForcedFlow f = flow_at(tau_);
+    const Vec3 Y = f.xc * motion_.aY + f.xs * motion_.bY;
+    const Vec3 Yv = f.vc * motion_.aY + f.vs * motion_.bY;
+    const bool keep_schedules = has_walls() && !schedule_all_pending_;
     const fast::Shift shift{f, Y, Yv, !keep_schedules};
     if (keep_schedules) {
-      // Every y_i moved by the free flow of (-Y, -Y'): the anchors' p, q move with them.
+      // Every y_i moved by the flow of (-Y, -Y'): the anchors' p, q move with them.
       anchors_.retire_current();
       for (Anchor& a : anchors_.old()) {
-        const Vec3 p = f.c * a.p + f.s * a.q - Y;
-        const Vec3 q = f.dc() * a.p + f.c * a.q - Yv;
+        const Vec3 p = f.xc * a.p + f.xs * a.q - Y;
+        const Vec3 q = f.vc * a.p + f.vs * a.q - Yv;
         a.p = p;
         a.q = q;
       }
@@ -513,7 +604,7 @@ class FastEngine final : public Engine {
     // A particle keeps its window, and with it the anchor it relies on, until it hits the
     // wall or that anchor expires: re-bases and new anchors leave the window as it was.
     if (std::isnan(o.window.first)) make_window(i);
-    fast::Span span = fast::span_of(o.window, clock_at(first));
+    fast::Span span = span_at(i, first);
     StepIndex due = window_begin(span, first);
     if (due <= step_ + kLookahead) {
       // Only the steps in the window can hit: once it has begun, the lookahead goes on to
@@ -522,7 +613,7 @@ class FastEngine final : public Engine {
           std::min(step_ + kLookahead, first + StepIndex(std::min(span.end, 1e9)) + 1);
       due = look_ahead(o, due, last);
       // Nothing until then: carry on with the window from the first step after.
-      if (due > last) due = window_begin(fast::span_of(o.window, clock_at(due)), due);
+      if (due > last) due = window_begin(span_at(i, due), due);
     }
     if (due == kParked) {
       o.due = kParked;  // until its anchor expires
@@ -533,22 +624,30 @@ class FastEngine final : public Engine {
     enqueue(i, due);
   }
 
-  /// Particle i's window in the current anchor, which it relies on from now on.
+  /// Particle i's window in the current anchor, which it relies on from now on (with a
+  /// floor, its floor window too).
   void make_window(std::uint32_t i) {
     Body& o = orbits_[i];
     if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
     const Anchor& current = anchors_.current();
-    o.window = current.threshold > 0
+    o.window = !config_.container_radius ? fast::never_window(window_k_)
+               : current.threshold > 0
                    ? fast::window_of(o.a - current.p, o.b - current.q, spring_, current.threshold2,
-                                     phase_per_time_ * epoch_start_)
-                   : fast::always_window(k_);
+                                     phase_per_time_ * epoch_start_, growth_)
+                   : fast::always_window(window_k_);
+    if (config_.floor)
+      floor_windows_[i] = fast::floor_window_of(
+          o.a.z() - current.p.z(), o.b.z() - current.q.z(), spring_,
+          config_.floor->z - current.floor_low,
+          fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
   }
 
-  /// The new windows of a lane's hits, all at once (fast_engine_window_batch.h).
+  /// The new windows of a lane's hits, all at once (fast_engine_window_batch.h); one by one
+  /// under drag, with a floor or without a wall, which the batch does not know.
   void make_windows(Lane& lane) {
     const std::size_t n = lane.hits.size();
     const Anchor& current = anchors_.current();
-    if (current.threshold <= 0) {
+    if (current.threshold <= 0 || checks_more_ || !config_.container_radius) {
       for (const Hit& hit : lane.hits) make_window(hit.id);
       return;
     }
@@ -566,9 +665,21 @@ class FastEngine final : public Engine {
     for (std::size_t j = 0; j < n; ++j) orbits_[lane.hits[j].id].window = lane.hit_windows[j];
   }
 
+  /// Where particle i's windows lie, seen from the end of step m: the wall's, or with a floor
+  /// the one that begins first, merged with the other where they overlap.
+  fast::Span span_at(std::uint32_t i, StepIndex m) const {
+    const fast::Clock clock = clock_at(m);
+    const fast::Span wall = fast::span_of(orbits_[i].window, clock);
+    if (!config_.floor) return wall;
+    const fast::Span floor = fast::span_of(floor_windows_[i], fast::floor_clock(clock));
+    const fast::Span& early = wall.begin <= floor.begin ? wall : floor;
+    const fast::Span& late = wall.begin <= floor.begin ? floor : wall;
+    return {early.begin, late.begin <= early.end ? std::max(early.end, late.end) : early.end};
+  }
+
   /// The time at the end of step m, as the windows count it.
   fast::Clock clock_at(StepIndex m) const {
-    return {k_, phase_per_time_, steps_per_phase_,
+    return {window_k_, phase_per_time_, steps_per_phase_,
             epoch_start_ + tau_ + double(m - step_ + 1) * dt_};
   }
 
@@ -630,7 +741,15 @@ class FastEngine final : public Engine {
   fast::SphereWall wall_;         ///< the wall as this step's hits see it
   double J_ = 0, M_ = 0, k_ = 0, t_ = 0;
   double two_omega_ = 0;  // 2 sqrt|k|
-  fast::Spring spring_;
+  bool forced_ = false;   // gravity or drag
+  double gamma_ = 0;      // mass-proportional drag rate (1/time)
+  double window_k_ = 0;   // k - (gamma / 2)^2: the stiffness the windows see
+  fast::Spring spring_;   // the windows'
+  double growth_ = 1;     // exp(gamma tau_): the windows' envelope now (fast_engine_window.h)
+  fast::CoefficientSums sums_;  // under drag: for energy_at
+  bool checks_more_ = false;    // a floor or drag: check_under_forces
+  double swarm_size_ = 0;       // the largest distance from the CM at the start
+  std::vector<fast::Window> floor_windows_;  // with a floor: each particle's, as its window
   std::vector<Body> orbits_;
 
   // Shared motion, in the current epoch (tau_ is the time since it began).
@@ -650,6 +769,7 @@ class FastEngine final : public Engine {
   fast::Lookahead lookahead_;
   double phase_per_time_ = 1;  // the windows' phase per unit time
   double steps_per_phase_ = 0;
+  fast::Lookahead::FlowsAhead flows_ahead_{};  // the flows over 0, 1, ... steps of dt_
   fast::GapHistogram gaps_;  // J > 0: from the current epoch's start
 
   System cache_;
@@ -664,13 +784,21 @@ class FastEngine final : public Engine {
 // [SECTION] Factory
 
 bool fast_engine_applies(const EngineConfig& config) {
-  // Gravity, drag and a floor change every particle's orbit or add a second wall that the
-  // closed-form wall windows do not know: those run on the reference engine, O(N) a step.
-  if (config.forces.any() || config.floor) return false;
+  // Gravity moves only the CM, and mass-proportional drag makes every y_i a damped oscillator
+  // about a decaying CM motion: both keep a particle's motion between hits in closed form.
+  // Drag b on chosen particles does not: with a rate of its own for each particle the CM no
+  // longer separates from the motion about it, the y_i couple through the CM, so a hit is no
+  // longer O(1) and there is no closed form per particle.
+  if (config.forces.drag && !config.forces.drag->mass_proportional()) return false;
+  // An elastic floor is a plane wall: a particle falls through it at a crossing time of its
+  // closed-form path. On an inelastic one particles come to rest (rest_on_floor), held up
+  // out of any closed form.
+  if (config.floor && config.floor->restitution != 1) return false;
   // Hard spheres touch every particle in every step (their contacts are between particles,
   // not with the wall), so no schedule of wall windows can skip them (docs/architecture.md).
   // A moving wall (its radius bracketed over each schedule's life, fast_engine_anchor.h) and a
-  // thermal wall (a hit re-emits the particle onto a new orbit, fast_engine_wall.h) run here.
+  // thermal wall (a hit re-emits the particle onto a new orbit, fast_engine_wall.h) run here,
+  // with forces and a floor or without: the hit only needs dv, whatever the wall does.
   return config.method == Method::analytic && config.collisions == CollisionMode::paper &&
          !config.sphere_radius;
 }

@@ -18,7 +18,8 @@ constexpr double kMarginWallSteps = 512;
 
 }  // namespace
 
-Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in) {
+Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs& in) {
+  const double base = offset.norm();
   const double Rw = in.R;
   constexpr int kBins = GapHistogram::kBins;
   double extra = kMarginFloor * Rw;
@@ -38,6 +39,10 @@ Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in) {
   anchor.threshold = Rw - anchor.margin;
   anchor.threshold2 = anchor.threshold * anchor.threshold;
   anchor.renew_level = base + 0.5 * extra;
+  if (in.floor) {
+    anchor.floor_low = offset.z() - extra;
+    anchor.floor_renew = offset.z() - 0.5 * extra;
+  }
   return anchor;
 }
 

@@ -9,44 +9,49 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "engine/timing_wheel.h"
-#include "swarm/physics/flow.h"
+#include "swarm/methods/external_forces.h"
 #include "swarm/physics/system.h"
 
 namespace swarm::fast {
 
 // [SECTION] Shared motion
 
-/// What every particle's lab position adds to its own free oscillation y_i about the origin:
-/// r_i = y_i + o with o = R_cm - Y. R_cm moves uniformly; Y = sum m_i y_i / M = c aY + s bY,
-/// c and s the flow over the time since the current epoch began.
+/// What every particle's lab position adds to its own oscillation y_i about the origin:
+/// r_i = y_i + o with o = R_cm - Y. R_cm moves uniformly, or under gravity g along a parabola,
+/// or under drag along ForcedFlow's decaying CM path; Y = sum m_i y_i / M = xc aY + xs bY, xc
+/// and xs the flow over the time since the current epoch began.
 struct SharedMotion {
   Vec3 R_cm = Vec3::Zero(), V_cm = Vec3::Zero();  ///< at the current time
   Vec3 aY = Vec3::Zero(), bY = Vec3::Zero();
+  Vec3 g = Vec3::Zero();  ///< gravity (length/time^2)
 
-  /// o at dt_ahead after the current time, f being the flow at that time.
-  Vec3 offset_at(const Flow& f, double dt_ahead) const {
-    return R_cm + V_cm * dt_ahead - (f.c * aY + f.s * bY);
+  /// o at a time u after the current time: f is the flow at that time and ahead the flow over
+  /// u, of which only the CM's part (cm_v, cm_g) is read.
+  Vec3 offset_at(const ForcedFlow& f, const ForcedFlow& ahead) const {
+    return R_cm + V_cm * ahead.cm_v + ahead.cm_g * g - (f.xc * aY + f.xs * bY);
   }
   /// o' at the current time, f being the flow then.
-  Vec3 offset_velocity_at(const Flow& f) const { return V_cm - (f.dc() * aY + f.c * bY); }
+  Vec3 offset_velocity_at(const ForcedFlow& f) const { return V_cm - (f.vc * aY + f.vs * bY); }
 };
 
 // [SECTION] Anchors
 
-/// A choice of coordinates y_i - (c p + s q) for the particles' wall windows. Schedules made
-/// in it assume that the anchor's offset, o + c p + s q, stays within its margin at every
-/// step end, so that a particle can reach the wall only where |y_i - (c p + s q)| >= R -
+/// A choice of coordinates y_i - (xc p + xs q) for the particles' wall windows. Schedules made
+/// in it assume that the anchor's offset, o + xc p + xs q, stays within its margin at every
+/// step end, so that a particle can reach the wall only where |y_i - (xc p + xs q)| >= R -
 /// margin. An anchor takes p, q from Y when it starts, so that its offset then moves only
 /// with the CM and the later kicks; re-bases carry p, q over into the new epoch.
 ///
 /// A moving wall spends the same margin: R is the radius the anchor was made for, and at a
 /// step end where the wall's radius is R_end the offset must stay within margin - (R - R_end)
-/// (margin_at), so that |y_i - (c p + s q)| < R - margin still keeps a particle inside R_end.
+/// (margin_at), so that |y_i - (xc p + xs q)| < R - margin still keeps a particle inside R_end.
 /// A wall moving out adds to what is left; one moving in eats it, and the anchor expires.
 struct Anchor {
   std::uint8_t id = 0;                   ///< ids are 8 bits and wrap
@@ -55,11 +60,30 @@ struct Anchor {
   double radius = 0;                     ///< R, the wall's radius it was made for
   double threshold = 0, threshold2 = 0;  ///< T = R - margin and T^2: the windows' radius
   double renew_level = 0;  ///< while current: start a new anchor when the offset passes this
+  /// With a floor: its windows assume that the offset's z stays at least floor_low, so that a
+  /// particle can fall through only where its own z is below floor - floor_low; a new anchor
+  /// starts when the offset's z drops below floor_renew. -infinity without a floor.
+  double floor_low = -std::numeric_limits<double>::infinity();
+  double floor_renew = -std::numeric_limits<double>::infinity();
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
 
-  /// The anchor's offset o + c p + s q at dt_ahead after the current time (f: the flow then).
-  Vec3 offset(const SharedMotion& motion, const Flow& f, double dt_ahead) const {
-    return motion.offset_at(f, dt_ahead) + f.c * p + f.s * q;
+  /// Whether the schedules made in the anchor still hold with this offset at a step end where
+  /// the wall's radius is R_end.
+  bool holds(const Vec3& offset, double R_end) const {
+    const double left = margin_at(R_end);
+    return left >= 0 && offset.squaredNorm() <= left * left && offset.z() >= floor_low;
+  }
+  /// Whether a current anchor should give way to a new one at this offset and wall radius: a
+  /// wall moving out only makes the windows too wide, which costs checks, so a wall's travel
+  /// either way counts against renew_level.
+  bool wants_renewal(const Vec3& offset, double R_end) const {
+    return offset.norm() + std::abs(radius - R_end) > renew_level || offset.z() < floor_renew;
+  }
+
+  /// The anchor's offset o + xc p + xs q at a time u after the current time (f: the flow
+  /// then; ahead: the flow over u, as in SharedMotion::offset_at).
+  Vec3 offset(const SharedMotion& motion, const ForcedFlow& f, const ForcedFlow& ahead) const {
+    return motion.offset_at(f, ahead) + f.xc * p + f.xs * q;
   }
   /// How far the offset may be from the centre at a step end where the wall's radius is R_end.
   double margin_at(double R_end) const { return margin - (radius - R_end); }
@@ -83,21 +107,22 @@ struct GapHistogram {
 
 /// What a new anchor's margin depends on.
 struct MarginInputs {
-  double R = 1;           ///< the wall's radius
-  double wall_step = 0;   ///< how far a moving wall goes in a step (0 for one that stands)
-  double k = 0;         ///< J M
-  double omega = 0;     ///< sqrt|k|
-  double cm_speed = 0;  ///< |V_cm|
+  double R = 1;          ///< the wall's radius
+  double wall_step = 0;  ///< how far a moving wall goes in a step (0 for one that stands)
+  double k = 0;          ///< J M
+  double omega = 0;      ///< sqrt|k|
+  double cm_speed = 0;   ///< |V_cm|
+  bool floor = false;    ///< whether the anchor also bounds the offset's z for a floor
   std::size_t particles = 0;
   const GapHistogram* gaps = nullptr;  ///< J > 0: from the last epoch's start
 };
 
-/// An anchor whose offset is `base` from the centre now. Its margin covers that, the drift of
-/// the CM over a few time units, a moving wall's travel over a few hundred steps, and, when few
-/// particles can come near the wall (the attractive expansion's later stages), as much more as
-/// leaves at most N / 100 of them within reach: a wide margin then costs little and lets the
-/// anchor live long.
-Anchor anchor_with_margin(Anchor anchor, double base, const MarginInputs& in);
+/// An anchor whose offset is `offset` now. Its margin covers that, the drift of the CM over a
+/// few time units, a moving wall's travel over a few hundred steps, and, when few particles can
+/// come near the wall (the attractive expansion's later stages), as much more as leaves at most
+/// N / 100 of them within reach: a wide margin then costs little and lets the anchor live long.
+/// With a floor, the offset's z may sink by as much as the margin's width beyond |offset|.
+Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs& in);
 
 // [SECTION] The anchors in use
 
@@ -135,20 +160,19 @@ class Anchors {
   void move_all_to_current(const std::vector<std::size_t>& lane_sizes);
 
   /// Drops the old anchors no particle relies on any more, and expires those whose offset
-  /// leaves their margin at dt after the current time (f1: the flow then, R_end: the wall's
-  /// radius then), and the oldest beyond kMaxOld: expire(id) must reschedule the particles
-  /// relying on anchor id.
+  /// leaves their margin at the step's end (f1: the flow then; step: the flow over the step;
+  /// R_end: the wall's radius then), and the oldest beyond kMaxOld: expire(id) must reschedule
+  /// the particles relying on anchor id.
   template <class Expire>
-  void drop_expired(const SharedMotion& motion, const Flow& f1, double dt, double R_end,
+  void drop_expired(const SharedMotion& motion, const ForcedFlow& f1, const ForcedFlow& step,
+                    double R_end,
                     Expire expire) {
     for (std::size_t j = 0; j < old_.size();) {
       const Anchor& a = old_[j];
       std::int64_t relying = 0;
       for (const Relying& lane : relying_) relying += lane.count[a.id];
       const bool too_many = j == 0 && old_.size() > kMaxOld;
-      const double margin = a.margin_at(R_end);
-      if (relying == 0 || too_many || margin < 0 ||
-          a.offset(motion, f1, dt).squaredNorm() > margin * margin) {
+      if (relying == 0 || too_many || !a.holds(a.offset(motion, f1, step), R_end)) {
         if (relying > 0) expire(a.id);
         old_.erase(old_.begin() + long(j));
       } else {

@@ -10,7 +10,8 @@
 
 #include "engine/fast_engine_window.h"
 #include "engine/timing_wheel.h"
-#include "swarm/physics/flow.h"
+#include "swarm/methods/external_forces.h"
+#include "swarm/physics/floor.h"
 #include "swarm/physics/system.h"
 #include "swarm/physics/wall.h"
 
@@ -19,7 +20,7 @@ namespace swarm::fast {
 /// Everything the scheduler touches for one particle, together (80 bytes): a check is then
 /// one or two cache lines, fetched ahead of time (the ids due in a step are known in advance).
 struct Body {
-  Vec3 a, b;  ///< y_i(tau) = c(tau) a + s(tau) b: the free oscillation about the CM path
+  Vec3 a, b;  ///< y_i(tau) = xc(tau) a + xs(tau) b: the free (or damped) oscillation about the CM path
   double m;
   StepIndex due;  ///< the step in whose bucket the particle waits, or kParked
   Window window;  ///< valid in the particle's anchor until its next hit; NaN: unknown
@@ -53,21 +54,45 @@ inline double load_early(const Body* bodies, const std::uint32_t* ids, std::size
 }
 
 /// y_i's velocity jumps by dv at the time of flow f0: in coefficients, the inverse flow of
-/// dv. The flow's determinant c^2 + k s^2 is 1 only up to rounding, which for J < 0 (cosh^2 -
-/// sinh^2) is a bias of its own: dividing by its computed value keeps the evaluated velocity
-/// jump dv, and the energy, unbiased. The window is forgotten.
-inline void kick(Body& o, const Vec3& dv, const Flow& f0, double determinant) {
+/// dv. The flow's determinant xc vs - xs vc is exp(-gamma tau) under drag, and without it 1
+/// only up to rounding, which for J < 0 (cosh^2 - sinh^2) is a bias of its own: dividing by its
+/// computed value keeps the evaluated velocity jump dv, and the energy, unbiased. The window
+/// is forgotten.
+inline void kick(Body& o, const Vec3& dv, const ForcedFlow& f0, double determinant) {
   const Vec3 jump = dv / determinant;
-  o.a -= f0.s * jump;
-  o.b += f0.c * jump;
+  o.a -= f0.xs * jump;
+  o.b += f0.xc * jump;
   o.window.first = kUnknown;
 }
 
+/// Sums over the particles of m |a|^2, m a.b and m |b|^2. With the flow they give the
+/// particles' energy in O(1) (FastEngine::energy_at), so that the drag's loss in a step, the
+/// drop of that energy, costs no pass over the particles; a hit replaces its particle's terms.
+struct CoefficientSums {
+  double aa = 0, ab = 0, bb = 0;
+
+  void include(const Body& o) {
+    aa += o.m * o.a.squaredNorm();
+    ab += o.m * o.a.dot(o.b);
+    bb += o.m * o.b.squaredNorm();
+  }
+  void replace(const Body& before, const Body& after) {
+    aa += after.m * (after.a.squaredNorm() - before.a.squaredNorm());
+    ab += after.m * (after.a.dot(after.b) - before.a.dot(before.b));
+    bb += after.m * (after.b.squaredNorm() - before.b.squaredNorm());
+  }
+  void add(const CoefficientSums& o) {
+    aa += o.aa;
+    ab += o.ab;
+    bb += o.bb;
+  }
+};
+
 /// What every check of one step reads: the flow and the shared offset at its start and end.
 struct StepData {
-  Flow f0, f1;
+  ForcedFlow f0, f1;
   Vec3 o0, o0v, o1;
-  double determinant;  ///< c^2 - dc s of f0, 1 up to rounding
+  double determinant;  ///< xc vs - vc xs of f0: exp(-gamma tau), 1 up to rounding without drag
 };
 
 /// Appendix A for one particle (id) and one wall: if its position predicted for the step's end
@@ -78,27 +103,44 @@ struct StepData {
 template <class Wall>
 inline bool reflect_if_leaving(Body& o, std::uint32_t id, const StepData& d, const Wall& wall,
                                WallTally& tally, Vec3& dv) {
-  const Vec3 r1 = d.f1.c * o.a + d.f1.s * o.b + d.o1;
+  const Vec3 r1 = d.f1.xc * o.a + d.f1.xs * o.b + d.o1;
   if (!wall.outside(r1)) return false;
-  const Vec3 r0 = d.f0.c * o.a + d.f0.s * o.b + d.o0;
-  const Vec3 v0 = d.f0.dc() * o.a + d.f0.c * o.b + d.o0v;
+  const Vec3 r0 = d.f0.xc * o.a + d.f0.xs * o.b + d.o0;
+  const Vec3 v0 = d.f0.vc * o.a + d.f0.vs * o.b + d.o0v;
   if (!wall.leaving(r0, v0)) return false;
   dv = wall.hit(o.m, r0, v0, id, tally);
   kick(o, dv, d.f0, d.determinant);  // y_i's velocity jumps by dv at the step's start
   return true;
 }
 
+/// The floor of Appendix B for one particle, after the wall's check in the same step: if its
+/// position predicted for the step's end from `before` (its coefficients before this step's
+/// hits: the reference engine judges both on one prediction) lies below the floor and it moves
+/// down now, it bounces now (bounce_on_floor). dv is its velocity change. Says whether it bounced.
+inline bool bounce_if_falling(Body& o, const Body& before, const StepData& d, const Floor& floor,
+                              WallTally& tally, Vec3& dv) {
+  const Vec3 r1 = d.f1.xc * before.a + d.f1.xs * before.b + d.o1;
+  if (!(r1.z() < floor.z)) return false;
+  const Vec3 v0 = d.f0.vc * o.a + d.f0.vs * o.b + d.o0v;
+  if (!falling_through(floor, r1, v0)) return false;
+  Particle p{o.m, r1, v0};
+  bounce_on_floor(p, floor, tally);
+  dv = p.v - v0;
+  kick(o, dv, d.f0, d.determinant);
+  return true;
+}
+
 /// A re-base's change of every y_i: to the oscillation about the CM from now on.
 struct Shift {
-  Flow f;       ///< at the re-base
+  ForcedFlow f;  ///< at the re-base
   Vec3 Y, Yv;   ///< Y and its velocity then
   bool forget;  ///< also drop every window (the schedules are being rebuilt)
 };
 
 inline void shift(Body& o, const Shift& shift) {
-  const Flow& f = shift.f;
-  const Vec3 y = f.c * o.a + f.s * o.b - shift.Y;
-  const Vec3 yv = f.dc() * o.a + f.c * o.b - shift.Yv;
+  const ForcedFlow& f = shift.f;
+  const Vec3 y = f.xc * o.a + f.xs * o.b - shift.Y;
+  const Vec3 yv = f.vc * o.a + f.vs * o.b - shift.Yv;
   o.a = y;
   o.b = yv;
   // Dropped schedules are rebuilt from scratch: anchor ids are 8 bits and wrap, so after 256
@@ -108,8 +150,8 @@ inline void shift(Body& o, const Shift& shift) {
 
 /// The lab state of the particle at the time of flow f, o and ov being the shared offset and
 /// its velocity then.
-inline Particle particle_of(const Body& b, const Flow& f, const Vec3& o, const Vec3& ov) {
-  return {b.m, f.c * b.a + f.s * b.b + o, f.dc() * b.a + f.c * b.b + ov};
+inline Particle particle_of(const Body& b, const ForcedFlow& f, const Vec3& o, const Vec3& ov) {
+  return {b.m, f.xc * b.a + f.xs * b.b + o, f.vc * b.a + f.vs * b.b + ov};
 }
 
 }  // namespace swarm::fast

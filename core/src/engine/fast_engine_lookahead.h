@@ -8,7 +8,7 @@
 
 #include "engine/fast_engine_anchor.h"
 #include "engine/timing_wheel.h"
-#include "swarm/physics/flow.h"
+#include "swarm/methods/external_forces.h"
 
 namespace swarm::fast {
 
@@ -22,39 +22,45 @@ class Lookahead {
   static constexpr int kSteps = 16;
   static constexpr double kKickBudget = 0.2;
 
+  /// The flows over 0, 1, ..., kSteps + 1 steps: the CM's advance to each step end ahead, and
+  /// the step's own flow.
+  using FlowsAhead = std::array<ForcedFlow, kSteps + 2>;
+
   /// The flow and the predicted offset at the ends of this step and the kSteps after it.
-  /// step_end: the flow at this step's end; omega = sqrt|k|; R: the wall's radius.
-  void prepare(const SharedMotion& motion, const Flow& step_end, double k, double omega, double dt,
-               double R) {
-    if (dt != dt_) {
-      // How far the offset at those step ends can move away from the prediction, given the
-      // kick budget: each kick kappa moves it by kappa (u - s(u)), u the time since the kick.
-      dt_ = dt;
-      step_flow_ = Flow::over(k, dt);
-      const double u = (kSteps + 1) * dt;
-      kick_drift_ = std::abs(u - Flow::over(k, u).s);
-    }
-    const Flow& step_flow = step_flow_;
-    Flow f = step_end;
+  /// step_end: the flow at this step's end; flows: over whole steps (FlowsAhead); omega =
+  /// sqrt|k|; R: the wall's radius; floor_z: the floor's height (-infinity: none).
+  void prepare(const SharedMotion& motion, const ForcedFlow& step_end, const FlowsAhead& flows,
+               double omega, double R, double floor_z) {
+    const ForcedFlow& step = flows[1];
+    // How far the offset at those step ends can move away from the prediction, given the kick
+    // budget: each kick kappa moves V_cm and Y' alike, so the offset by kappa (cm_v(u) -
+    // xs(u)), u the time since the kick.
+    const ForcedFlow& span = flows[kSteps + 1];
+    const double kick_drift = std::abs(span.cm_v - span.xs);
+    ForcedFlow f = step_end;
     for (int j = 0; j <= kSteps; ++j) {
-      ahead_[std::size_t(j)] = {f.c, f.s, motion.offset_at(f, (j + 1) * dt)};
-      // c(tau + dt) = c c_dt - k s s_dt, s(tau + dt) = s c_dt + c s_dt (addition theorems).
-      const double c = f.c * step_flow.c - k * f.s * step_flow.s;
-      const double s = f.s * step_flow.c + f.c * step_flow.s;
-      f.c = c;
-      f.s = s;
+      ahead_[std::size_t(j)] = {f.xc, f.xs, motion.offset_at(f, flows[std::size_t(j) + 1])};
+      // The flow over tau + dt is the step's flow after the flow over tau.
+      ForcedFlow next = f;
+      next.xc = step.xc * f.xc + step.xs * f.vc;
+      next.xs = step.xc * f.xs + step.xs * f.vs;
+      next.vc = step.vc * f.xc + step.vs * f.vc;
+      next.vs = step.vc * f.xs + step.vs * f.vs;
+      f = next;
     }
-    const double slack = kKickBudget * omega * R * kick_drift_ + 1e-12 * R;
+    const double slack = kKickBudget * omega * R * kick_drift + 1e-12 * R;
     limit2_ = (R - slack) * (R - slack);
+    floor_limit_ = floor_z + slack;
   }
 
   /// The first step from `from` to `last` (now <= from, last <= now + kSteps) at whose end
-  /// the oscillation y = c a + s b can be outside the wall, or last + 1.
+  /// the oscillation y = xc a + xs b can be outside the wall or below the floor, or last + 1.
   StepIndex first_reach(const Vec3& a, const Vec3& b, StepIndex from, StepIndex last,
                         StepIndex now) const {
     for (StepIndex m = from; m <= last; ++m) {
       const Ahead& x = ahead_[std::size_t(m - now)];
-      if ((x.c * a + x.s * b + x.offset).squaredNorm() >= limit2_) return m;
+      const Vec3 r = x.c * a + x.s * b + x.offset;
+      if (r.squaredNorm() >= limit2_ || r.z() <= floor_limit_) return m;
     }
     return last + 1;
   }
@@ -80,8 +86,7 @@ class Lookahead {
 
   std::array<Ahead, kSteps + 1> ahead_{};
   double limit2_ = 0;  // (R - slack)^2: the kicks within budget move |r| less than slack
-  double dt_ = 0, kick_drift_ = 0;
-  Flow step_flow_;
+  double floor_limit_ = 0;  // the floor's height plus slack
   std::array<double, kSteps + 1> recent_kicks_{};
 };
 

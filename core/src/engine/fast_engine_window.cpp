@@ -52,10 +52,69 @@ Window free(const Vec3& a, const Vec3& b, double T2) {
   return {tau_minus, (aa - T2) / (bb * tau_minus)};
 }
 
+// h_z = A cos(theta - phi) <= L: |theta - phi - pi| <= alpha, cos alpha = -L / A.
+Window attractive_floor(double a_z, double b_z, double inv_omega, double L) {
+  const double B = b_z * inv_omega;
+  const double A = std::sqrt(a_z * a_z + B * B);
+  if (L >= A) return {0, 4};    // always at or below L
+  if (L < -A) return {0, -1};  // never
+  const double cos_alpha = -L / A;
+  const double sin_alpha = std::sqrt(std::max(0.0, (1 - cos_alpha) * (1 + cos_alpha)));
+  return {fast_atan2(B, a_z) + M_PI, fast_atan2(sin_alpha, cos_alpha) + 2 * kAtanError};
+}
+
+// h_z = C u + D / u, u = exp(Omega tau): h_z <= L where q(u) = C u^2 - L u + D <= 0.
+Window repulsive_floor(double a_z, double b_z, double inv_omega, double L) {
+  const double bW = b_z * inv_omega;
+  const double C = 0.5 * (a_z + bW), D = 0.5 * (a_z - bW);
+  const auto log_of = [](double u) { return u > 0 ? fast_log(u) : -kInf; };
+  if (C == 0) {
+    if (L > 0) return {-kInf, log_of(D / L) - kLogError};  // u >= D / L
+    if (L < 0) return {D / L > 0 ? log_of(D / L) + kLogError : -kInf, kInf};  // u <= D / L
+    return D <= 0 ? Window{kInf, kInf} : Window{-kInf, kInf};
+  }
+  const double disc = L * L - 4 * C * D;
+  if (disc < 0) return C > 0 ? Window{-kInf, kInf} : Window{kInf, kInf};
+  // The roots without cancellation: one from the quadratic formula, the other from their
+  // product D / C.
+  const double q = 0.5 * (L + std::copysign(std::sqrt(disc), L));
+  const double r1 = q / C, r2 = q != 0 ? D / q : 0.0;
+  const double lo = std::min(r1, r2), hi = std::max(r1, r2);
+  if (C > 0) return {-kInf, hi <= 0 ? kInf : log_of(lo) - kLogError};  // lo <= u <= hi
+  return {lo > 0 ? log_of(lo) + kLogError : -kInf, log_of(hi) - kLogError};  // u <= lo, u >= hi
+}
+
+// h_z = a_z + b_z tau <= L.
+Window free_floor(double a_z, double b_z, double L) {
+  if (b_z == 0) return a_z <= L ? Window{kInf, kInf} : Window{-kInf, kInf};
+  const double tau = (L - a_z) / b_z;
+  return b_z > 0 ? Window{tau, kInf} : Window{-kInf, tau};
+}
+
 }  // namespace
 
-Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
-                 double phase_origin) {
+Window floor_window_of(double a_z, double b_free_z, const Spring& spring, double L_now,
+                       double phase_origin, double growth) {
+  const bool damped = spring.eta != 0;
+  if (damped && L_now >= 0) return always_window(spring.k);
+  const double b_z = damped ? b_free_z + spring.eta * a_z : b_free_z;
+  const double L = damped ? L_now * std::sqrt(growth) : L_now;
+  const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(phase_origin) + 8);
+  if (spring.k > 0) {
+    const Window w = attractive_floor(a_z, b_z, spring.inv_omega, L);
+    return {w.first + phase_origin,
+            w.second < 0 || w.second >= M_PI ? w.second : w.second + rounding};
+  }
+  const Window w =
+      spring.k < 0 ? repulsive_floor(a_z, b_z, spring.inv_omega, L) : free_floor(a_z, b_z, L);
+  return {w.first + phase_origin + rounding, w.second + phase_origin - rounding};
+}
+
+Window window_of(const Vec3& a, const Vec3& b_free, const Spring& spring, double T2_now,
+                 double phase_origin, double growth) {
+  const bool damped = spring.eta != 0;
+  const Vec3 b = damped ? Vec3(b_free + spring.eta * a) : b_free;
+  const double T2 = damped ? T2_now * growth : T2_now;
   // Each phase moves by the origin's; its rounding widens the window.
   const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(phase_origin) + 8);
   if (spring.k > 0) {
@@ -70,6 +129,11 @@ Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
 Window always_window(double k) {
   if (k > 0) return {0, 4};
   return {kInf, kInf};
+}
+
+Window never_window(double k) {
+  if (k > 0) return {0, -1};
+  return {-kInf, kInf};
 }
 
 }  // namespace swarm::fast

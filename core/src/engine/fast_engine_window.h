@@ -22,13 +22,18 @@ namespace swarm::fast {
 ///        coefficient: the window is E <= E- or E >= E+, i.e. 2 Omega tau <= first = log E-
 ///        or >= second = log E+.
 /// J = 0: |h|^2 - T2 is a quadratic in tau: the window is tau <= first or tau >= second.
+/// Under mass-proportional drag gamma = 2 eta the oscillator is h = exp(-eta tau) u, u the free
+/// one of stiffness k - eta^2 with coefficients a and b + eta a (ForcedFlow); exp(-eta tau) only
+/// decays, so from the window's making at tau0 on, |h|^2 >= T2 needs |u|^2 >= T2 exp(2 eta
+/// tau0): u's window for that threshold holds h's, and the cases above are those of k - eta^2.
 struct Window {
   double first = 0, second = 0;
 };
 
-/// The oscillator's k = J M and 1 / sqrt|k| (0 when k = 0).
+/// The oscillator's k = J M and 1 / sqrt|k| (0 when k = 0); under drag gamma, eta = gamma / 2
+/// and k the damped stiffness J M - eta^2.
 struct Spring {
-  double k = 0, inv_omega = 0;
+  double k = 0, inv_omega = 0, eta = 0;
 };
 
 /// For J > 0, with B = b / omega and theta = omega tau:
@@ -45,11 +50,26 @@ inline Swing swing_of(const Vec3& a, const Vec3& b, double inv_omega) {
   return {0.5 * (aa + BB), Q, S, std::sqrt(Q * Q + S * S)};
 }
 
+/// growth: exp(2 eta tau0) under drag (tau0: now, in the epoch's time), else 1.
 Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
-                 double phase_origin);
+                 double phase_origin, double growth = 1);
+
+/// The times at which one coordinate of the oscillator, h_z(tau) = xc(tau) a_z + xs(tau) b_z,
+/// can be at or below the level L: a floor's window, in the same two numbers as window_of's
+/// but in phases of half the size (sqrt|k| t when J != 0, t when J = 0: floor_clock).
+/// J > 0: h_z = A cos(omega tau - phi), at most L where |omega tau - phi - pi| <= alpha.
+/// J < 0: with u = exp(Omega tau), u (h_z - L) is a quadratic in u; where it is at most 0
+///        between two roots, the window is taken from the first root on (a superset).
+/// J = 0: h_z is linear in tau.
+/// Under drag (Spring::eta), as in window_of, for L < 0 the free oscillation's window for the
+/// level L sqrt(growth) holds the damped one's from now on; for L >= 0 the window is always.
+Window floor_window_of(double a_z, double b_z, const Spring& spring, double L, double phase_origin,
+                       double growth = 1);
 
 /// The window of a motion that is at least sqrt(T2) from the origin at all times (T2 <= 0).
 Window always_window(double k);
+/// A window that never opens (no wall).
+Window never_window(double k);
 
 /// The time from which a schedule looks for the window: the end of a step, counted from 0.
 /// The windows' phase is phase_per_time * time: 2 sqrt|k| t when J != 0, t itself when J = 0.
@@ -58,6 +78,15 @@ struct Clock {
   double steps_per_phase = 0;  ///< 1 / (phase_per_time dt)
   double time = 0;
 };
+
+/// The clock of floor windows for a wall clock: half the phase per time when J != 0.
+inline Clock floor_clock(Clock clock) {
+  if (clock.k != 0) {
+    clock.phase_per_time *= 0.5;
+    clock.steps_per_phase *= 2;
+  }
+  return clock;
+}
 
 /// Where the window lies, in steps after the clock's step: it begins `begin` steps after it
 /// (0: it already has; +infinity: never) and ends `end` steps after it (+infinity: it lasts).

@@ -19,14 +19,23 @@ constexpr double kOutputBytesPerParticle = 1400;
 constexpr double kSampleBytes = 2 * double(sizeof(Sample));  // with a vector's spare capacity
 constexpr double kComparisonSampleBytes = 2 * 24;  // a ComparisonSample, likewise
 constexpr double kOutputBytesPerSample = 2000;     // JSON tree and text, CSV, figures
-/// Gravity, a floor or drag take the analytic method off the fast engine (fast_engine_applies):
-/// the reference engine's particle-step costs about as much as 50 of the fast engine's
-/// (6e7 against 3e9 a second, README's Performance table).
+/// An inelastic floor takes the analytic method off the fast engine (fast_engine_applies; drag
+/// b on chosen particles would too, but presets give it a numerical method only): the reference
+/// engine's particle-step costs about as much as 50 of the fast engine's (6e7 against 3e9 a
+/// second, README's Performance table). Gravity, mass-proportional drag and an elastic floor
+/// stay on it, at about 1x (drag), 6-13x (gravity) and 12-24x (gravity and a floor) its plain
+/// cost per particle-step (bench/forces_bench.cpp, bench/RESULTS.md); with a moving or hot wall
+/// as well they are charged the same (not measured).
 constexpr double kReferenceParticleStepCost = 50;
+constexpr double kForcedParticleStepCost = 15;
 
 bool off_the_fast_engine(const Preset& p) {
+  return p.floor && p.floor->restitution != 1 && p.method == Method::analytic;
+}
+
+bool forced_on_the_fast_engine(const Preset& p) {
   const bool forces = (p.gravity && *p.gravity != Vec3::Zero()) || p.drag || p.floor;
-  return forces && p.method == Method::analytic;
+  return forces && p.method == Method::analytic && !off_the_fast_engine(p);
 }
 
 // [Appendix B walls and contacts] Hard spheres run on the reference engine, which steps (and,
@@ -40,13 +49,15 @@ constexpr double kCellGridBytesPerParticle = 32;  // cell, slot and two cell sta
 double particle_step_weight(const Preset& p) {
   if (p.sphere_radius) return kHardSphereCost;
   if (off_the_fast_engine(p)) return kReferenceParticleStepCost;
+  if (forced_on_the_fast_engine(p)) return kForcedParticleStepCost;
   return 1;
 }
 
 /// Why a particle-step of p costs particle_step_weight(p) times the fast engine's.
 const char* particle_step_weight_reason(const Preset& p) {
   if (p.sphere_radius) return "hard-sphere contacts";
-  return "gravity, a floor or drag: the reference engine";
+  if (off_the_fast_engine(p)) return "an inelastic floor: the reference engine";
+  return "gravity, a floor or drag";
 }
 
 double force_evaluations_per_step(Method m) {

@@ -12,6 +12,7 @@
 #include "swarm/methods/integrators.h"
 #include "swarm/physics/analytic.h"
 #include "swarm/physics/diagnostics.h"
+#include "swarm/physics/gravity.h"
 #include "swarm/preset/preset.h"
 #include "test_systems.h"
 
@@ -23,24 +24,50 @@ using testing::shipped_preset;
 
 namespace {
 
-/// Runs both engines side by side and requires the same hits in every step.
-void require_same_run(const System& s, double R, double dt, int steps) {
-  const EngineConfig config{Method::analytic, CollisionMode::paper, R};
+/// The energy the books count: kinetic, the springs' and gravity's.
+double booked_energy(const System& s, const EngineConfig& config) {
+  return total_energy(s) + gravity_potential_energy(s, config.forces.gravity);
+}
+
+/// Runs both engines side by side under config (its forces and floor too) and requires the
+/// same wall and floor hits in every step, the same final state, and books that balance in
+/// both: E_end - E0 = what came from outside (the drag's loss; an elastic floor gives none).
+/// Returns the wall and the floor hits.
+std::pair<long, long> require_same_run(const System& s, const EngineConfig& config, double dt,
+                                       int steps) {
   auto reference = make_reference_engine(s, config);
   auto fast = make_fast_engine(s, config);
-  long hits = 0;
+  long hits = 0, floor_hits = 0;
   double impulse_ref = 0, impulse_fast = 0;
+  EnergyBooks books_ref, books_fast;
   for (int i = 0; i < steps; ++i) {
     const WallTally a = reference->step(dt), b = fast->step(dt);
     REQUIRE(a.hits == b.hits);
+    REQUIRE(a.floor_hits == b.floor_hits);
     hits += a.hits;
+    floor_hits += a.floor_hits;
     impulse_ref += a.radial_impulse;
     impulse_fast += b.radial_impulse;
+    books_ref.add(a.books);
+    books_fast.add(b.books);
   }
-  CHECK(hits > steps / 4);
   CHECK(impulse_fast == Approx(impulse_ref).epsilon(1e-12));
   CHECK(fast->time() == reference->time());
   CHECK(max_state_difference(reference->system(), fast->system()) < 1e-9);
+  const double E0 = booked_energy(s, config);
+  const double scale = std::abs(E0) + kinetic_energy(s);
+  CHECK(std::abs(books_fast.drag_loss - books_ref.drag_loss) < 1e-10 * scale);
+  CHECK(std::abs(booked_energy(fast->system(), config) - E0 - books_fast.net()) < 1e-10 * scale);
+  CHECK(std::abs(booked_energy(reference->system(), config) - E0 - books_ref.net()) <
+        1e-10 * scale);
+  if (config.forces.drag) CHECK(books_fast.drag_loss > 1e-3 * scale);
+  return {hits, floor_hits};
+}
+
+void require_same_run(const System& s, double R, double dt, int steps) {
+  const long hits =
+      require_same_run(s, EngineConfig{Method::analytic, CollisionMode::paper, R}, dt, steps).first;
+  CHECK(hits > steps / 4);
 }
 
 }  // namespace
@@ -50,6 +77,57 @@ TEST_CASE("the fast engine hits the wall exactly when the reference engine does"
   SUBCASE("repulsive") { require_same_run(crowded_swarm(2000, -1.0, 5), 1.0, 1e-3, 4000); }
   SUBCASE("J = 0") { require_same_run(crowded_swarm(2000, 0.0, 7), 1.0, 1e-3, 4000); }
   SUBCASE("coarse steps") { require_same_run(crowded_swarm(2000, +1.0, 9), 1.0, 1e-2, 3000); }
+}
+
+TEST_CASE("under gravity and drag the fast engine hits the wall when the reference engine does") {
+  // Gravity moves only the CM, along a parabola; mass-proportional drag makes every particle
+  // a damped oscillator about a decaying CM motion (Appendix B). J < 0 runs shorter: its
+  // runaway presses the swarm against the wall within a few time units.
+  const auto config = [](const Vec3& g, double gamma) {
+    EngineConfig c{Method::analytic, CollisionMode::paper, 1.0};
+    c.forces.gravity = g;
+    if (gamma > 0) c.forces.drag = Drag{gamma, 0, {}};
+    return c;
+  };
+  const Vec3 g(0.1, 0, -0.6);
+  for (double sign : {+1.0, 0.0, -1.0}) {
+    CAPTURE(sign);
+    const int steps = sign < 0 ? 800 : 3000;
+    const System s = crowded_swarm(2000, sign, 41);
+    SUBCASE("gravity") { CHECK(require_same_run(s, config(g, 0), 1e-3, steps).first > steps); }
+    SUBCASE("drag") {
+      CHECK(require_same_run(s, config(Vec3::Zero(), 0.4), 1e-3, steps).first > steps / 4);
+    }
+    SUBCASE("drag and gravity") {
+      CHECK(require_same_run(s, config(g, 0.4), 1e-3, steps).first > steps / 4);
+    }
+    SUBCASE("gravity and a floor") {
+      EngineConfig c = config(g, 0);
+      c.floor = Floor{-0.5, 1};
+      const auto [hits, floor_hits] = require_same_run(s, c, 1e-3, steps);
+      CHECK(hits > steps / 2);
+      CHECK(floor_hits > steps / 2);
+    }
+    SUBCASE("drag, gravity and a floor") {
+      EngineConfig c = config(g, 0.4);
+      c.floor = Floor{-0.3, 1};
+      CHECK(require_same_run(s, c, 1e-3, steps).second > steps / 2);
+    }
+    SUBCASE("over-damped drag") {
+      CHECK(require_same_run(s, config(g, 5.0), 1e-3, steps).first > 100);
+    }
+  }
+}
+
+TEST_CASE("the fast engine drops the shipped swarm on its floor as the reference engine does") {
+  // No container: the floor is the only wall. 4,000 steps take the swarm through its first
+  // bounces.
+  const Preset preset = shipped_preset("gravity-floor-bounce.json");
+  const EngineConfig config = run_plan(preset).engine;
+  REQUIRE(fast_engine_applies(config));
+  const auto [hits, floor_hits] = require_same_run(initial_system(preset), config, preset.dt, 4000);
+  CHECK(hits == 0);
+  CHECK(floor_hits > 100);
 }
 
 TEST_CASE("the fast engine reproduces the reference on the shipped expansion presets") {
@@ -161,9 +239,14 @@ TEST_CASE("any thread count gives the same run to the last bit") {
     std::uint64_t state = 0, tallies = 0;
     std::int64_t hits = 0, checks = 0, rebases = 0, reschedules = 0, expired = 0;
   };
-  const auto run = [](const System& s, int threads) {
+  const auto run = [](const System& s, int threads, bool forced) {
     EngineConfig config{Method::analytic, CollisionMode::paper, 1.0};
     config.threads = threads;
+    if (forced) {  // the drag's energy sums and the floor's bounces are combined the same way
+      config.forces.gravity = Vec3(0.1, 0, -0.6);
+      config.forces.drag = Drag{0.4, 0, {}};
+      config.floor = Floor{-0.5, 1};
+    }
     auto engine = make_fast_engine(s, config);
     Run r;
     r.tallies = 0xcbf29ce484222325;
@@ -171,7 +254,7 @@ TEST_CASE("any thread count gives the same run to the last bit") {
       if (i == 700) engine->set_container_radius(0.95);  // every particle rescheduled
       const WallTally t = engine->step(i < 1000 ? 1e-3 : 1.5e-3);
       r.hits += t.hits;
-      for (const double x : {double(t.hits), t.radial_impulse, t.hit_kinetic_energy,
+      for (const double x : {double(t.hits), double(t.floor_hits), t.radial_impulse, t.hit_kinetic_energy,
                              t.wall_momentum.x(), t.wall_momentum.y(), t.wall_momentum.z(),
                              t.books.net()}) {
         std::uint64_t bits;
@@ -195,16 +278,21 @@ TEST_CASE("any thread count gives the same run to the last bit") {
     return r;
   };
   // 10,000 particles: the epoch's sums span three blocks of 4096.
-  for (const double J : {+1.0, -1.0, 0.0}) {
+  for (const auto& setup : {std::pair{+1.0, false}, std::pair{-1.0, false},
+                            std::pair{0.0, false}, std::pair{+1.0, true}}) {
+    // Not a structured binding: CAPTURE's lambda may not name one in C++17 (clang, emcc).
+    const double J = setup.first;
+    const bool forced = setup.second;
     CAPTURE(J);
+    CAPTURE(forced);
     System s = crowded_swarm(10000, J, 31);
     if (J == 0) s.J = 0;
-    const Run one = run(s, 1);
+    const Run one = run(s, 1, forced);
     CHECK(one.hits > 1000);
     CHECK(one.rebases > 0);
     for (const int threads : {2, 3, 4, 7}) {
       CAPTURE(threads);
-      const Run other = run(s, threads);
+      const Run other = run(s, threads, forced);
       CHECK(other.state == one.state);
       CHECK(other.tallies == one.tallies);
       CHECK(other.hits == one.hits);

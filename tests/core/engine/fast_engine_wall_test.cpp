@@ -13,6 +13,7 @@
 #include "swarm/engine/fast_engine.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/diagnostics.h"
+#include "swarm/physics/gravity.h"
 #include "swarm/physics/thermal_wall.h"
 #include "swarm/physics/wall_motion.h"
 #include "test_systems.h"
@@ -27,9 +28,15 @@ namespace {
 /// What changes a run on the way, applied to both engines alike before step `step`.
 using Intervention = std::function<void(int step, Engine& engine)>;
 
-/// Runs the reference and the fast engine side by side from s: the same hits in every step,
-/// the same final state to 1e-9, the same books, and each engine's books balance (the energy
-/// the wall gave is the system's change of energy). Returns the fast engine's counters.
+/// The energy the books count: kinetic, the springs' and gravity's.
+double booked_energy(const System& s, const EngineConfig& config) {
+  return total_energy(s) + gravity_potential_energy(s, config.forces.gravity);
+}
+
+/// Runs the reference and the fast engine side by side from s: the same wall and floor hits in
+/// every step, the same final state to 1e-9, the same books, and each engine's books balance
+/// (the energy the wall gave, less the drag's loss, is the system's change of energy, gravity's
+/// potential included). Returns the fast engine's counters.
 FastEngineStats require_same_run(const System& s, const EngineConfig& config, double dt,
                                  int steps, const Intervention& intervene = {}) {
   REQUIRE(fast_engine_applies(config));
@@ -45,6 +52,7 @@ FastEngineStats require_same_run(const System& s, const EngineConfig& config, do
     const WallTally a = reference->step(dt), b = fast->step(dt);
     CAPTURE(i);
     REQUIRE(a.hits == b.hits);
+    REQUIRE(a.floor_hits == b.floor_hits);
     hits += a.hits;
     books_ref.add(a.books);
     books_fast.add(b.books);
@@ -54,12 +62,13 @@ FastEngineStats require_same_run(const System& s, const EngineConfig& config, do
   CHECK(fast->container_radius() == reference->container_radius());
   CHECK(max_state_difference(reference->system(), fast->system()) < 1e-9);
 
-  const double E0 = total_energy(s);
+  const double E0 = booked_energy(s, config);
   const double scale = kinetic_energy(s) + std::abs(E0) + std::abs(books_ref.wall_work) +
-                       std::abs(books_ref.wall_heat);
+                       std::abs(books_ref.wall_heat) + books_ref.drag_loss;
   CHECK(std::abs(books_fast.net() - books_ref.net()) < 1e-10 * scale);
-  CHECK(std::abs(total_energy(reference->system()) - E0 - books_ref.net()) < 1e-11 * scale);
-  CHECK(std::abs(total_energy(fast->system()) - E0 - books_fast.net()) < 1e-11 * scale);
+  CHECK(std::abs(booked_energy(reference->system(), config) - E0 - books_ref.net()) <
+        1e-11 * scale);
+  CHECK(std::abs(booked_energy(fast->system(), config) - E0 - books_fast.net()) < 1e-11 * scale);
   return *fast_engine_stats(*fast);
 }
 
@@ -171,6 +180,49 @@ TEST_CASE("the fast engine hits a moving wall exactly when the reference engine 
   }
 }
 
+TEST_CASE("a thermal or a moving wall under gravity, drag and a floor: as the reference engine") {
+  // The wall's rules (fast_engine_wall.h) through the forces' flow: a hit's dv, whatever the
+  // wall, enters the damped coefficients, and the floor is checked after the wall on the same
+  // prediction. The anchors hold by the wall's radius and the floor's level together.
+  // J < 0 runs shorter: its runaway presses the swarm against the wall within a few time units.
+  const Vec3 g(0.1, 0, -0.6);
+  for (const double sign : {+1.0, -1.0, 0.0}) {
+    const System s = crowded_swarm(2000, sign, 59);
+    const double T_gas = kinetic_temperature(s);
+    const int steps = sign < 0 ? 800 : 3000;
+    for (const bool thermal : {false, true}) {
+      for (const double gamma : {0.0, 0.4}) {
+        CAPTURE(sign);
+        CAPTURE(thermal);
+        CAPTURE(gamma);
+        EngineConfig config = wall_config();
+        if (thermal) {
+          config.wall_temperature = 3 * T_gas;
+          config.wall_stream = 23;
+        } else {
+          config.wall_moves = {{0.8, 0.1}, {1.1, 0.1}};
+        }
+        config.forces.gravity = g;
+        if (gamma > 0) config.forces.drag = Drag{gamma, 0, {}};
+        config.floor = Floor{-0.3, 1};
+        require_same_run(s, config, 1e-3, steps);
+        // The floor was in play: count its bounces on a run of its own.
+        auto engine = make_fast_engine(s, config);
+        long floor_hits = 0;
+        EnergyBooks books;
+        for (int i = 0; i < steps; ++i) {
+          const WallTally tally = engine->step(1e-3);
+          floor_hits += tally.floor_hits;
+          books.add(tally.books);
+        }
+        CHECK(floor_hits > steps / 4);
+        if (gamma > 0) CHECK(books.drag_loss > 0);
+        CHECK((thermal ? books.wall_heat : books.wall_work) != 0);
+      }
+    }
+  }
+}
+
 TEST_CASE("a moving wall in the fast engine: a jump of the wall stops it, as in the reference") {
   // The expansion protocol moves the wall discontinuously (set_container_radius); a wall
   // that was moving stops there. dt changes on the way too.
@@ -208,6 +260,13 @@ TEST_CASE("make_engine runs moving and thermal walls on the fast engine, hard sp
   EngineConfig config = wall_config();
   config.wall_moves = {{0.8, 0.1}};
   CHECK(fast_engine_applies(config));
+  config.forces.gravity = {0, 0, -1};
+  config.forces.drag = Drag{0.5, 0, {}};
+  config.floor = Floor{-0.5, 1};
+  CHECK(fast_engine_applies(config));  // with forces and an elastic floor too
+  config.floor = Floor{-0.5, 0.5};
+  CHECK_FALSE(fast_engine_applies(config));  // an inelastic floor: the reference engine
+  config.floor.reset();
   config.wall_moves.clear();
   config.wall_temperature = 1.0;
   CHECK(fast_engine_applies(config));

@@ -54,9 +54,18 @@ TEST_CASE("gravity without a floor: the CM falls freely and the motion about it 
   }
 }
 
-TEST_CASE("gravity takes the analytic method off the fast engine, which knows no external force") {
+TEST_CASE("gravity and mass-proportional drag stay on the fast engine; drag on chosen particles does not") {
   EngineConfig config;
   CHECK(fast_engine_applies(config));
   config.forces.gravity = Vec3(0, 0, -1);
+  CHECK(fast_engine_applies(config));
+  config.forces.drag = Drag{0.5, 0, {}};
+  CHECK(fast_engine_applies(config));
+  config.floor = Floor{-2, 1};
+  CHECK(fast_engine_applies(config));
+  config.floor = Floor{-2, 0.5};  // particles come to rest on an inelastic floor
+  CHECK_FALSE(fast_engine_applies(config));
+  config.floor.reset();
+  config.forces.drag = Drag{0, 0.5, {1}};
   CHECK_FALSE(fast_engine_applies(config));
 }

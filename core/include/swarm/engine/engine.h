@@ -30,8 +30,9 @@ struct EngineConfig {
   /// cost; the browser always uses 1). Results do not depend on it, bit for bit: the work is
   /// split and its sums combined in ways that do not depend on the count.
   int threads = default_threads();
-  /// Gravity and drag (Appendix B), and a floor beside the container: they run on the
-  /// reference engine (fast_engine_applies is false).
+  /// Gravity and drag (Appendix B), and a floor beside the container: the fast engine runs
+  /// gravity, mass-proportional drag and an elastic floor; drag b on chosen particles and an
+  /// inelastic floor run on the reference engine (fast_engine_applies).
   ExternalForces forces;
   std::optional<Floor> floor;
 
@@ -75,7 +76,8 @@ std::unique_ptr<Engine> make_reference_engine(System initial, const EngineConfig
 
 /// The best engine for the configuration: the fast engine (swarm/engine/fast_engine.h) where it
 /// applies (the analytic method with paper collisions, with or without a container, the wall
-/// fixed, moving or hot; no forces, floor or hard spheres), else the reference engine.
+/// fixed, moving or hot, under gravity, mass-proportional drag and an elastic floor; not drag
+/// b on chosen particles, an inelastic floor or hard spheres), else the reference engine.
 std::unique_ptr<Engine> make_engine(System initial, const EngineConfig& config);
 
 }  // namespace swarm

@@ -35,7 +35,7 @@ struct ResourceEstimate {
   double particle_bytes = 0;    ///< particle state of every run and the initial copy
   double sample_bytes = 0;      ///< samples (and comparison samples) of every run
   double output_bytes = 0;      ///< files built in memory before they are written
-  double particle_steps = 0;    ///< N x steps x runs, weighted by the cost of the reference engine's features (gravity, a floor, drag, hard spheres)
+  double particle_steps = 0;    ///< N x steps x runs, weighted by the cost of the features (gravity, a floor, drag, hard spheres; an inelastic floor's reference engine)
   double pair_evaluations = 0;  ///< N (N - 1) / 2 x force evaluations x steps, pairwise runs
   double pair_evaluations_per_step = 0;
   double memory_bytes() const { return particle_bytes + sample_bytes + output_bytes; }
