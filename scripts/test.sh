@@ -58,7 +58,7 @@ if [ $quick -eq 1 ]; then
   exit 0
 fi
 
-build "packages (scripts/deps.sh)" scripts/deps.sh native desktop web webtest fuzz
+build "packages (scripts/deps.sh)" scripts/deps.sh native desktop web webtest fuzz serve
 wasm_build() {
   scripts/web-deps.sh &&
     { [ -f build-wasm/CMakeCache.txt ] || emcmake cmake -S . -B build-wasm -DCMAKE_BUILD_TYPE=Release >/dev/null; } &&
