@@ -96,7 +96,7 @@ int run_desktop(const DesktopOptions& options) {
   // scripted runs (--frames), which leave it alone and show no welcome.
   f.app->state().lessons.load(shipped_lesson_directory(),
                               options.frames > 0
-                                  ? make_memory_progress_store(R"({"welcomed": true})")
+                                  ? make_memory_progress_store(R"({"version": 1, "welcomed": true})")
                                   : make_file_progress_store(),
                               shipped_preset_lookup(shipped_preset_directory()));
   if (!lesson_text.empty()) {
