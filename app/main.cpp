@@ -6,6 +6,7 @@
 #include "cli/cli.h"
 #include "cli/cli_bench.h"
 #include "ensemble/ensemble_plan.h"
+#include "swarm/engine/engine.h"
 #include "ui/plots/plot_tab.h"
 #ifdef SWARMLAB_HAS_DESKTOP
 #include "desktop/desktop.h"
@@ -54,7 +55,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", window_threads,
                  "Engine threads for the window's runs: any count (default: every hardware "
                  "thread; the results are the same)")
-      ->check(CLI::Range(1, 65535));
+      ->check(CLI::Range(1, swarm::kMaxThreads));
 
   std::string items;
   app.add_option("--items", items,
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads", run.threads,
                       "Engine threads: any count (default: every hardware thread; the results "
                       "are the same to the last bit)")
-      ->check(CLI::Range(1, 65535));
+      ->check(CLI::Range(1, swarm::kMaxThreads));
   CLI::Option* run_seed = run_cmd->add_option(
       "--seed", run.seed,
       "Draw the generated swarm from this seed instead of particles.seed (an ensemble's run)");
@@ -132,7 +133,7 @@ int main(int argc, char** argv) {
       ->add_option("--threads", ensemble.threads,
                    "Engine threads per run: any count (default: 1 when runs share the cores, "
                    "else every hardware thread; the results are the same)")
-      ->check(CLI::Range(1, 65535));
+      ->check(CLI::Range(1, swarm::kMaxThreads));
   plan_cmd->add_flag("--slurm", plan.slurm, "Also write DIR/array.sbatch, a Slurm job array");
   plan_cmd->add_option("--at-once", plan.slurm_at_once, "With --slurm: at most this many tasks at once")
       ->check(CLI::NonNegativeNumber);

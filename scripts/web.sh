@@ -23,7 +23,7 @@ while [ $# -gt 0 ]; do
     --no-build) build=0 ;;
     --lan) bind=0.0.0.0 ;;
     --port) port=$2; shift ;;
-    -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "web.sh: unknown option $1 (try --help)" >&2; exit 2 ;;
   esac
   shift

@@ -177,7 +177,7 @@ CLI::App* add_bench_subcommand(CLI::App& app, BenchOptions& o) {
   cmd->add_option("--threads", o.threads,
                   "Threads for the engine: any count (default: every hardware thread; the "
                   "results are the same)")
-      ->check(CLI::Range(1, 65535));
+      ->check(CLI::Range(1, swarm::kMaxThreads));
   return cmd;
 }
 

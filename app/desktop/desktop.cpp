@@ -94,11 +94,11 @@ int run_desktop(const DesktopOptions& options) {
                                 lesson_text.empty() ? options.preset_path : "", options.frames > 0);
   // Lessons: shipped beside the presets; progress in the user's config folder, except in
   // scripted runs (--frames), which leave it alone and show no welcome.
-  f.app->state().lessons.load(shipped_lesson_directory(),
-                              options.frames > 0
-                                  ? make_memory_progress_store(R"({"version": 1, "welcomed": true})")
-                                  : make_file_progress_store(),
-                              shipped_preset_lookup(shipped_preset_directory()));
+  f.app->state().lessons.load(
+      shipped_lesson_directory(),
+      options.frames > 0 ? make_memory_progress_store() : make_file_progress_store(),
+      shipped_preset_lookup(shipped_preset_directory()));
+  if (options.frames > 0) f.app->state().lessons.dismiss_welcome();
   if (!lesson_text.empty()) {
     const std::string e = open_lesson_json(f.app->state(), lesson_text);
     if (!e.empty()) {

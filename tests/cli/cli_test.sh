@@ -99,6 +99,9 @@ for r in runs[1:]:
     assert r["final"] == runs[0]["final"] and r["samples"] == runs[0]["samples"]
 PY
 "$bin" run "$work/threads.json" --threads 0 --quiet 2>/dev/null && bad "--threads 0 accepted" || ok
+# A count typed by mistake is refused with the rule, not thousands of threads started.
+msg=$("$bin" run "$work/threads.json" --threads 65535 --quiet 2>&1) && bad "--threads 65535 accepted" ||
+  { case $msg in *threads*256*) ok ;; *) bad "--threads 65535: no message naming the limit: $msg" ;; esac; }
 
 # Output files that cannot hurt (app/files/atomic_file.h). A run of a few seconds, to tell a
 # refusal before the run from one after it, and to interrupt.

@@ -289,4 +289,4 @@ async function main(url) {
   check('no console errors', consoleErrors.length === 0, consoleErrors.slice(0, 3).join(' | '));
 }
 
-runSuite('lessons', 900_000, main);
+runSuite('lessons', 280_000, main);

@@ -551,12 +551,9 @@ void draw_progress_notice(AppState& state) {
     mirror_text(ItemRole::paragraph, text);
     ImGui::PopTextWrapPos();
     if (ImGui::Button(tr_id("Download progress"))) download_progress(state);
-    if (lessons.pick_progress_file) {
-      ImGui::SameLine();
-      if (ImGui::Button(tr_id("Load progress..."))) lessons.pick_progress_file();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button(tr_id("Close"))) open = false;
+    if (lessons.pick_progress_file && button_in_row(tr_id("Load progress...")))
+      lessons.pick_progress_file();
+    if (button_in_row(tr_id("Close"))) open = false;
   }
   ImGui::End();
   if (!open) lessons.show_progress_notice = false;

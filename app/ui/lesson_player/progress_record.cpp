@@ -1,8 +1,8 @@
 #include "ui/lesson_player/progress_record.h"
 
-#include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "i18n/printed.h"
 #include "i18n/translator.h"
 
 namespace swarmlab {
@@ -37,14 +37,10 @@ std::string progress_trouble_text(ProgressTrouble trouble, const std::string& as
       return tr("Your lesson progress cannot be saved here (the storage is full, blocked or "
                 "private): it lasts until Swarm Lab is closed. Download it to keep it, and load "
                 "it again next time.");
-    case ProgressTrouble::unreadable_set_aside: {
-      char text[1024];
-      std::snprintf(text, sizeof text,
-                    tr("Your saved lesson progress could not be read, so lessons start afresh. "
-                       "It is kept aside, not deleted, as \u201c%s\u201d."),
-                    aside.c_str());
-      return text;
-    }
+    case ProgressTrouble::unreadable_set_aside:
+      return printed(tr("Your saved lesson progress could not be read, so lessons start afresh. "
+                        "It is kept aside, not deleted, as \u201c%s\u201d."),
+                     aside.c_str());
     case ProgressTrouble::unreadable_left:
       return tr("Your saved lesson progress could not be read, nor copied aside: it is left as it "
                 "was, and progress made now lasts until Swarm Lab is closed. Download it to keep "

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 
+#include "i18n/printed.h"
 #include "swarm/physics/regime.h"
 
 namespace swarmlab {
@@ -103,12 +103,9 @@ std::string seek_refusal(const AppState& state, double t) {
   const double end = double(timeline.end_step()) * state.preset.dt;
   // Half a step of slack either side: t is rounded to a step.
   if (std::isfinite(t) && t >= -0.5 * state.preset.dt && t <= end + 0.5 * state.preset.dt) return {};
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "t = %.10g is beyond the run: t must be from 0 to the end of the preset's run, "
-                "t = %.10g",
-                t, end);
-  return text;
+  return printed("t = %.10g is beyond the run: t must be from 0 to the end of the preset's run, "
+                 "t = %.10g",
+                 t, end);
 }
 
 long seek_in_frames(AppState& state, double t) {

@@ -12,7 +12,8 @@ namespace swarm {
 int default_threads() {
 #ifndef __EMSCRIPTEN__
   // hardware_concurrency may say 0 when it cannot tell.
-  static const int threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  static const int threads =
+      std::min(kMaxThreads, int(std::max(1u, std::thread::hardware_concurrency())));
   return threads;
 #else
   return 1;

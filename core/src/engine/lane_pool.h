@@ -1,9 +1,9 @@
 #pragma once
 // Runs the lanes of a task (items 0 .. count - 1, each independent of the others) on the
 // calling thread and on threads - 1 worker threads that stay alive between calls. The hand-over
-// busy-polls, so that even a step of a few dozen checks gains from the other cores; whichever
-// thread gets to a lane first runs it, so a worker that is slow to wake (or whose core the host
-// has taken away) costs one thread's time, never a wait for it.
+// busy-polls, so that a step of a few dozen checks costs no more on several threads than on
+// one; whichever thread gets to a lane first runs it, so a worker that is slow to wake (or
+// whose core the host has taken away) costs one thread's time, never a wait for it.
 //
 // The pool says nothing about which thread runs which lane: callers keep each lane's results
 // apart and combine them in lane order, and choose lanes that do not depend on the thread
@@ -13,6 +13,7 @@
 // which needs the COOP/COEP headers that static hosting cannot send. There the lanes run on the
 // caller, one after the other.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -24,6 +25,8 @@
 #include <vector>
 #endif
 
+#include "swarm/engine/engine.h"
+
 namespace swarm::fast {
 
 class LanePool {
@@ -33,7 +36,7 @@ class LanePool {
 
   /// threads: how many threads may run lanes at once, the caller's included (>= 1; in the
   /// browser always one).
-  explicit LanePool(int threads) : threads_(threads < 1 ? 1 : threads) {}
+  explicit LanePool(int threads) : threads_(std::clamp(threads, 1, kMaxThreads)) {}
   /// A copy (of a cloned engine) is a new pool with the same thread count: its threads are the
   /// copy's own, started when first needed.
   LanePool(const LanePool& other) : threads_(other.threads_) {}

@@ -3,9 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "swarm/engine/engine.h"
 #include "swarm/measure/state_hash.h"
@@ -13,60 +13,24 @@
 #include "swarm/physics/analytic.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/gravity.h"
+#include "core/engine/engines_side_by_side.h"
 #include "swarm/preset/preset.h"
 #include "test_systems.h"
 
 using namespace swarm;
 using doctest::Approx;
 using testing::crowded_swarm;
+using testing::require_same_run;
+using testing::SideBySideRun;
 using testing::max_state_difference;
 using testing::shipped_preset;
 
 namespace {
 
-/// The energy the books count: kinetic, the springs' and gravity's.
-double booked_energy(const System& s, const EngineConfig& config) {
-  return total_energy(s) + gravity_potential_energy(s, config.forces.gravity);
-}
-
-/// Runs both engines side by side under config (its forces and floor too) and requires the
-/// same wall and floor hits in every step, the same final state, and books that balance in
-/// both: E_end - E0 = what came from outside (the drag's loss; an elastic floor gives none).
-/// Returns the wall and the floor hits.
-std::pair<long, long> require_same_run(const System& s, const EngineConfig& config, double dt,
-                                       int steps) {
-  auto reference = make_reference_engine(s, config);
-  auto fast = make_fast_engine(s, config);
-  long hits = 0, floor_hits = 0;
-  double impulse_ref = 0, impulse_fast = 0;
-  EnergyBooks books_ref, books_fast;
-  for (int i = 0; i < steps; ++i) {
-    const WallTally a = reference->step(dt), b = fast->step(dt);
-    REQUIRE(a.hits == b.hits);
-    REQUIRE(a.floor_hits == b.floor_hits);
-    hits += a.hits;
-    floor_hits += a.floor_hits;
-    impulse_ref += a.radial_impulse;
-    impulse_fast += b.radial_impulse;
-    books_ref.add(a.books);
-    books_fast.add(b.books);
-  }
-  CHECK(impulse_fast == Approx(impulse_ref).epsilon(1e-12));
-  CHECK(fast->time() == reference->time());
-  CHECK(max_state_difference(reference->system(), fast->system()) < 1e-9);
-  const double E0 = booked_energy(s, config);
-  const double scale = std::abs(E0) + kinetic_energy(s);
-  CHECK(std::abs(books_fast.drag_loss - books_ref.drag_loss) < 1e-10 * scale);
-  CHECK(std::abs(booked_energy(fast->system(), config) - E0 - books_fast.net()) < 1e-10 * scale);
-  CHECK(std::abs(booked_energy(reference->system(), config) - E0 - books_ref.net()) <
-        1e-10 * scale);
-  if (config.forces.drag) CHECK(books_fast.drag_loss > 1e-3 * scale);
-  return {hits, floor_hits};
-}
-
 void require_same_run(const System& s, double R, double dt, int steps) {
   const long hits =
-      require_same_run(s, EngineConfig{Method::analytic, CollisionMode::paper, R}, dt, steps).first;
+      testing::require_same_run(s, EngineConfig{Method::analytic, CollisionMode::paper, R}, dt, steps)
+          .hits;
   CHECK(hits > steps / 4);
 }
 
@@ -94,27 +58,27 @@ TEST_CASE("under gravity and drag the fast engine hits the wall when the referen
     CAPTURE(sign);
     const int steps = sign < 0 ? 800 : 3000;
     const System s = crowded_swarm(2000, sign, 41);
-    SUBCASE("gravity") { CHECK(require_same_run(s, config(g, 0), 1e-3, steps).first > steps); }
+    SUBCASE("gravity") { CHECK(require_same_run(s, config(g, 0), 1e-3, steps).hits > steps); }
     SUBCASE("drag") {
-      CHECK(require_same_run(s, config(Vec3::Zero(), 0.4), 1e-3, steps).first > steps / 4);
+      CHECK(require_same_run(s, config(Vec3::Zero(), 0.4), 1e-3, steps).hits > steps / 4);
     }
     SUBCASE("drag and gravity") {
-      CHECK(require_same_run(s, config(g, 0.4), 1e-3, steps).first > steps / 4);
+      CHECK(require_same_run(s, config(g, 0.4), 1e-3, steps).hits > steps / 4);
     }
     SUBCASE("gravity and a floor") {
       EngineConfig c = config(g, 0);
       c.floor = Floor{-0.5, 1};
-      const auto [hits, floor_hits] = require_same_run(s, c, 1e-3, steps);
-      CHECK(hits > steps / 2);
-      CHECK(floor_hits > steps / 2);
+      const SideBySideRun run = require_same_run(s, c, 1e-3, steps);
+      CHECK(run.hits > steps / 2);
+      CHECK(run.floor_hits > steps / 2);
     }
     SUBCASE("drag, gravity and a floor") {
       EngineConfig c = config(g, 0.4);
       c.floor = Floor{-0.3, 1};
-      CHECK(require_same_run(s, c, 1e-3, steps).second > steps / 2);
+      CHECK(require_same_run(s, c, 1e-3, steps).floor_hits > steps / 2);
     }
     SUBCASE("over-damped drag") {
-      CHECK(require_same_run(s, config(g, 5.0), 1e-3, steps).first > 100);
+      CHECK(require_same_run(s, config(g, 5.0), 1e-3, steps).hits > 100);
     }
   }
 }
@@ -125,9 +89,9 @@ TEST_CASE("the fast engine drops the shipped swarm on its floor as the reference
   const Preset preset = shipped_preset("gravity-floor-bounce.json");
   const EngineConfig config = run_plan(preset).engine;
   REQUIRE(fast_engine_applies(config));
-  const auto [hits, floor_hits] = require_same_run(initial_system(preset), config, preset.dt, 4000);
-  CHECK(hits == 0);
-  CHECK(floor_hits > 100);
+  const SideBySideRun run = require_same_run(initial_system(preset), config, preset.dt, 4000);
+  CHECK(run.hits == 0);
+  CHECK(run.floor_hits > 100);
 }
 
 TEST_CASE("the fast engine reproduces the reference on the shipped expansion presets") {
@@ -236,7 +200,8 @@ TEST_CASE("any thread count gives the same run to the last bit") {
   // than this machine's cores. In the browser the lanes run one after the other, which still
   // checks that their number changes nothing.
   struct Run {
-    std::uint64_t state = 0, tallies = 0;
+    std::uint64_t state = 0;
+    std::vector<double> tallies;  // every step's tally, in order
     std::int64_t hits = 0, checks = 0, rebases = 0, reschedules = 0, expired = 0;
   };
   const auto run = [](const System& s, int threads, bool forced) {
@@ -249,18 +214,14 @@ TEST_CASE("any thread count gives the same run to the last bit") {
     }
     auto engine = make_fast_engine(s, config);
     Run r;
-    r.tallies = 0xcbf29ce484222325;
     for (int i = 0; i < 1500; ++i) {
       if (i == 700) engine->set_container_radius(0.95);  // every particle rescheduled
       const WallTally t = engine->step(i < 1000 ? 1e-3 : 1.5e-3);
       r.hits += t.hits;
-      for (const double x : {double(t.hits), double(t.floor_hits), t.radial_impulse, t.hit_kinetic_energy,
-                             t.wall_momentum.x(), t.wall_momentum.y(), t.wall_momentum.z(),
-                             t.books.net()}) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &x, sizeof bits);
-        r.tallies = (r.tallies ^ bits) * 0x100000001b3;
-      }
+      r.tallies.insert(r.tallies.end(),
+                       {double(t.hits), double(t.floor_hits), t.radial_impulse, t.hit_kinetic_energy,
+                        t.wall_momentum.x(), t.wall_momentum.y(), t.wall_momentum.z(),
+                        t.books.net()});
     }
     r.state = state_hash(engine->system());
     const FastEngineStats stats = *fast_engine_stats(*engine);

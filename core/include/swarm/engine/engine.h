@@ -16,8 +16,12 @@
 
 namespace swarm {
 
+/// The most threads an engine takes: each is a thread it starts and keeps, so a count typed by
+/// mistake (--threads 65535) is refused rather than starting thousands.
+inline constexpr int kMaxThreads = 256;
+
 /// How many threads an engine uses by default: the machine's hardware threads
-/// (std::thread::hardware_concurrency), 1 in the browser. The WebAssembly build has no threads:
+/// (std::thread::hardware_concurrency, at most kMaxThreads), 1 in the browser. The WebAssembly build has no threads:
 /// they would need SharedArrayBuffer, which needs the COOP/COEP headers that static hosting
 /// cannot send.
 int default_threads();
@@ -26,7 +30,7 @@ struct EngineConfig {
   Method method = Method::analytic;
   CollisionMode collisions = CollisionMode::paper;
   std::optional<double> container_radius;  ///< none: an isolated system
-  /// Threads for the engine's work: any count >= 1 (more than the machine has works, at a
+  /// Threads for the engine's work: 1 to kMaxThreads (more than the machine has works, at a
   /// cost; the browser always uses 1). Results do not depend on it, bit for bit: the work is
   /// split and its sums combined in ways that do not depend on the count.
   int threads = default_threads();
