@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -83,6 +84,26 @@ struct Hit {
   fast::CoefficientSums sums_change{};  // under drag: what it changed in the energy sums
 };
 
+/// What hits add up to, in particle-id order: their tally, the kick (the change of V_cm) and,
+/// under drag, the energy sums with their changes.
+struct HitSums {
+  WallTally tally;
+  Vec3 kick = Vec3::Zero();
+  fast::CoefficientSums sums;
+};
+
+/// The step a lane's HitSums are of, published to the next lane's thread. It copies as its
+/// value (clone() copies the engine).
+struct SummedStep {
+  std::atomic<std::uint64_t> step{~std::uint64_t(0)};
+  SummedStep() = default;
+  SummedStep(const SummedStep& other) : step(other.step.load()) {}
+  SummedStep& operator=(const SummedStep& other) {
+    step.store(other.step.load());
+    return *this;
+  }
+};
+
 /// One lane of the schedule: its timing wheel and the hits of one step. Each lane's thread
 /// writes its own in every check: a cache line apart, lanes never share one.
 struct alignas(64) Lane {
@@ -95,6 +116,11 @@ struct alignas(64) Lane {
   // The hits in particle-id order once the checks are done: id << 32 | place in `hits` (sorted
   // as integers: cheaper than moving the hits).
   std::vector<std::uint64_t> order, order_scratch;
+  // The sums of this lane's hits and of every lane's before it, in id order: each lane carries
+  // the sums of the one before it on over its own hits, on its own thread, whose cache holds
+  // them (check_lane). `summed` says which step they are of.
+  HitSums sums;
+  SummedStep summed;
   std::int64_t checks = 0;
 #ifdef __EMSCRIPTEN__
   double touched = 0;  // keeps the browser build's early loads (check_lane) from being dropped
@@ -223,21 +249,15 @@ class FastEngine final : public Engine {
     std::size_t pending = 0;
     for (const Lane& lane : lanes_) pending += lane.wheel.waiting(step_);
     if (pool_.run(
-            lanes_.size(), [this](std::size_t lane) { check_lane(lanes_[lane]); },
+            lanes_.size(), [this](std::size_t lane) { check_lane(lane); },
             pending >= kParallelChecks))
       ++stats_.parallel_steps;
-    // The lanes are consecutive ranges of ids, each with its hits sorted: in lane order the
-    // hits come in id order, whatever the number of lanes.
-    Vec3 kick = Vec3::Zero();  // sum of m dv / M: the change of V_cm (and of Y')
-    for (const Lane& lane : lanes_) {
-      for (const std::uint64_t key : lane.order) {
-        const Hit& hit = lane.hits[key & 0xffffffff];
-        tally.add(hit.tally);
-        kick += hit.kick;
-        if (gamma_ > 0) sums_.add(hit.sums_change);
-      }
-      stats_.checks += lane.checks;
-    }
+    // The last lane's sums are those of every hit, in id order, whatever the number of lanes.
+    const HitSums& all = lanes_.back().sums;
+    tally = all.tally;
+    const Vec3 kick = all.kick;  // sum of m dv / M: the change of V_cm (and of Y')
+    if (gamma_ > 0) sums_ = all.sums;
+    for (const Lane& lane : lanes_) stats_.checks += lane.checks;
     stats_.hits += tally.hits;
     finish_step(d.f0, d.f1, step_flow, dt, kick, d.determinant, tally);
     if (path_) config_.container_radius = radii.end;
@@ -279,10 +299,11 @@ class FastEngine final : public Engine {
  private:
   // [SECTION] Checks
 
-  /// Appendix A for one lane: the particles predicted outside at t + dt and moving outward
+  /// Appendix A for lane `index`: the particles predicted outside at t + dt and moving outward
   /// now are reflected now. Their predictions all use the state before any of this step's
-  /// hits, so the lanes are independent.
-  void check_lane(Lane& lane) {
+  /// hits, so the lanes are independent, up to the sums of their hits (sum_hits).
+  void check_lane(std::size_t index) {
+    Lane& lane = lanes_[index];
     const fast::StepData& d = now_;
     lane.hits.clear();
     lane.checks = 0;
@@ -316,14 +337,39 @@ class FastEngine final : public Engine {
       }
     }
     lane.checks = std::int64_t(checked);
-    make_windows(lane);
-    for (std::size_t j = 0; j < checked; ++j) schedule(lane.work[j], step_ + 1);
+    make_windows(index);
+    for (std::size_t j = 0; j < checked; ++j) schedule(lane.work[j], step_ + 1, index);
     lane.order.clear();
     for (std::size_t h = 0; h < lane.hits.size(); ++h)
       lane.order.push_back(std::uint64_t(lane.hits[h].id) << 32 | h);
     fast::sort_by_id(lane.order, lane.order_scratch);
     lane.work.clear();
     fast::release_if_large(lane.work, lane_size_);
+    sum_hits(index);
+  }
+
+  /// Adds lane `index`'s hits, in id order, to the sums of the lanes before it (waiting for
+  /// them): the lanes are consecutive ranges of ids, so in lane order the hits come in id
+  /// order, and the sums are the same whatever the number of lanes. Each lane adds its own on
+  /// its own thread, where they are in cache; only the sums go from thread to thread.
+  void sum_hits(std::size_t index) {
+    Lane& lane = lanes_[index];
+    HitSums sums;
+    if (index == 0) {
+      sums.sums = sums_;
+    } else {
+      const Lane& before = lanes_[index - 1];
+      fast::LanePool::wait_for(before.summed.step, std::uint64_t(step_));
+      sums = before.sums;
+    }
+    for (const std::uint64_t key : lane.order) {
+      const Hit& hit = lane.hits[key & 0xffffffff];
+      sums.tally.add(hit.tally);
+      sums.kick += hit.kick;
+      if (gamma_ > 0) sums.sums.add(hit.sums_change);
+    }
+    lane.sums = sums;
+    lane.summed.step.store(std::uint64_t(step_), std::memory_order_release);
   }
 
   /// check_lane's check of one particle with a floor or under drag: the wall, then the floor
@@ -354,8 +400,8 @@ class FastEngine final : public Engine {
     return std::min(lane * lane_size_, orbits_.size());
   }
   std::size_t lane_end(std::size_t lane) const { return lane_begin(lane + 1); }
-  int lane_index(std::uint32_t i) const { return int(i / lane_size_); }
-  Lane& lane_of(std::uint32_t i) { return lanes_[std::size_t(lane_index(i))]; }
+  /// The lane of particle i (a division: the lanes' own loops pass their index instead).
+  std::size_t lane_index(std::uint32_t i) const { return i / lane_size_; }
 
   // [SECTION] Shared motion
 
@@ -564,12 +610,13 @@ class FastEngine final : public Engine {
   void expire(std::uint8_t id) {
     std::vector<std::int64_t> expired(lanes_.size());
     pool_.run(lanes_.size(), [&](std::size_t lane) {
-      for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i)
-        if (anchors_.anchor_of(i) == id) {
-          ++expired[lane];
-          orbits_[i].window.first = kUnknown;
-          schedule(std::uint32_t(i), step_);
-        }
+      const std::size_t end = lane_end(lane);
+      for (std::size_t i = anchors_.next_relying(id, lane_begin(lane), end); i < end;
+           i = anchors_.next_relying(id, i + 1, end)) {
+        ++expired[lane];
+        orbits_[i].window.first = kUnknown;
+        schedule(std::uint32_t(i), step_, lane);
+      }
     });
     for (const std::int64_t n : expired) stats_.expired += n;
   }
@@ -590,20 +637,20 @@ class FastEngine final : public Engine {
     pool_.run(lanes_.size(), [&](std::size_t lane) {
       for (std::size_t i = lane_begin(lane); i < lane_end(lane); ++i) {
         orbits_[i].window.first = kUnknown;
-        schedule(std::uint32_t(i), step_);
+        schedule(std::uint32_t(i), step_, lane);
       }
     });
   }
 
   // [SECTION] Scheduling
 
-  /// Puts particle i in the bucket of the first step >= first (step_ or step_ + 1) in which
-  /// it can hit the wall, as far as the schedule can tell.
-  void schedule(std::uint32_t i, StepIndex first) {
+  /// Puts particle i (of lane `lane`) in the bucket of the first step >= first (step_ or
+  /// step_ + 1) in which it can hit the wall, as far as the schedule can tell.
+  void schedule(std::uint32_t i, StepIndex first, std::size_t lane) {
     Body& o = orbits_[i];
     // A particle keeps its window, and with it the anchor it relies on, until it hits the
     // wall or that anchor expires: re-bases and new anchors leave the window as it was.
-    if (std::isnan(o.window.first)) make_window(i);
+    if (std::isnan(o.window.first)) make_window(i, lane);
     fast::Span span = span_at(i, first);
     StepIndex due = window_begin(span, first);
     if (due <= step_ + kLookahead) {
@@ -611,7 +658,7 @@ class FastEngine final : public Engine {
       // its end at most (just after a hit, on the way in, that is a step or two).
       const StepIndex last =
           std::min(step_ + kLookahead, first + StepIndex(std::min(span.end, 1e9)) + 1);
-      due = look_ahead(o, due, last);
+      due = look_ahead(o, due, last, lane);
       // Nothing until then: carry on with the window from the first step after.
       if (due > last) due = window_begin(span_at(i, due), due);
     }
@@ -621,14 +668,14 @@ class FastEngine final : public Engine {
     }
     due = std::min(due, step_ + TimingWheel::kHorizon);
     o.due = due;
-    enqueue(i, due);
+    enqueue(i, due, lane);
   }
 
-  /// Particle i's window in the current anchor, which it relies on from now on (with a
-  /// floor, its floor window too).
-  void make_window(std::uint32_t i) {
+  /// Particle i's (of lane `lane`) window in the current anchor, which it relies on from now
+  /// on (with a floor, its floor window too).
+  void make_window(std::uint32_t i, std::size_t lane) {
     Body& o = orbits_[i];
-    if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
+    if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, int(lane));
     const Anchor& current = anchors_.current();
     o.window = !config_.container_radius ? fast::never_window(window_k_)
                : current.threshold > 0
@@ -642,13 +689,14 @@ class FastEngine final : public Engine {
           fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
   }
 
-  /// The new windows of a lane's hits, all at once (fast_engine_window_batch.h); one by one
-  /// under drag, with a floor or without a wall, which the batch does not know.
-  void make_windows(Lane& lane) {
+  /// The new windows of lane `index`'s hits, all at once (fast_engine_window_batch.h); one by
+  /// one under drag, with a floor or without a wall, which the batch does not know.
+  void make_windows(std::size_t index) {
+    Lane& lane = lanes_[index];
     const std::size_t n = lane.hits.size();
     const Anchor& current = anchors_.current();
     if (current.threshold <= 0 || checks_more_ || !config_.container_radius) {
-      for (const Hit& hit : lane.hits) make_window(hit.id);
+      for (const Hit& hit : lane.hits) make_window(hit.id, index);
       return;
     }
     lane.hit_a.resize(n);
@@ -656,7 +704,7 @@ class FastEngine final : public Engine {
     lane.hit_windows.resize(n);
     for (std::size_t j = 0; j < n; ++j) {
       const std::uint32_t i = lane.hits[j].id;
-      if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, lane_index(i));
+      if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, int(index));
       lane.hit_a[j] = orbits_[i].a - current.p;
       lane.hit_b[j] = orbits_[i].b - current.q;
     }
@@ -687,19 +735,20 @@ class FastEngine final : public Engine {
   /// kParked; span is the window seen from the end of step `first`.
   static StepIndex window_begin(const fast::Span& span, StepIndex first) {
     if (span.begin == std::numeric_limits<double>::infinity()) return kParked;
-    // A thousandth of a step covers the rounding of the closed forms.
+    // A thousandth of a step covers the rounding of the closed forms. Clamped first, so that
+    // truncating is rounding down (std::floor is a library call on x86-64 without SSE4.1).
     return first +
-           StepIndex(std::clamp(std::floor(span.begin - 1e-3), 0.0, double(TimingWheel::kHorizon)));
+           StepIndex(std::clamp(span.begin - 1e-3, 0.0, double(TimingWheel::kHorizon)));
   }
 
   /// The first step from `from` to `last` (at most step_ + kLookahead) whose predicted end
   /// position can be outside the wall, or last + 1. Recorded, in case the kicks exceed the
   /// budget the prediction relies on.
-  StepIndex look_ahead(const Body& o, StepIndex from, StepIndex last) {
+  StepIndex look_ahead(const Body& o, StepIndex from, StepIndex last, std::size_t lane) {
     const StepIndex due = lookahead_.first_reach(o.a, o.b, from, last, step_);
     if (due > from) {
       const auto i = std::uint32_t(&o - orbits_.data());
-      lane_of(i).lookahead[std::size_t(step_) % (kLookahead + 1)].push_back(i);
+      lanes_[lane].lookahead[std::size_t(step_) % (kLookahead + 1)].push_back(i);
     }
     return due;
   }
@@ -722,7 +771,7 @@ class FastEngine final : public Engine {
     for (const std::uint32_t i : ids)
       if (orbits_[i].due != kParked && orbits_[i].due >= step_) {
         orbits_[i].due = step_;  // schedule(i, step_) without the lookahead
-        enqueue(i, step_);
+        enqueue(i, step_, lane_index(i));
       }
     lookahead_.forget_kicks();
   }
@@ -730,8 +779,8 @@ class FastEngine final : public Engine {
   /// Puts particle i, due in step `due` (step_ <= due <= step_ + kHorizon), in its lane's
   /// wheel. Particles rescheduled before their step leave stale entries; they are weeded out
   /// before they cost memory (anchors expire often when J < 0).
-  void enqueue(std::uint32_t i, StepIndex due) {
-    TimingWheel& wheel = lane_of(i).wheel;
+  void enqueue(std::uint32_t i, StepIndex due, std::size_t lane) {
+    TimingWheel& wheel = lanes_[lane].wheel;
     if (wheel.push(i, due, step_))
       wheel.compact([this](std::uint32_t id) { return orbits_[id].due; });
   }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -147,7 +148,12 @@ class Anchors {
   void make_current(const Anchor& next) { current_ = next; }
 
   bool relies_on_current(std::uint32_t i) const { return anchor_of_[i] == current_.id; }
-  std::uint8_t anchor_of(std::size_t i) const { return anchor_of_[i]; }
+  /// The first particle from `begin` on, before `end`, that relies on anchor id, or `end`: a
+  /// search of bytes (memchr), since the fireball expires an anchor every few steps.
+  std::size_t next_relying(std::uint8_t id, std::size_t begin, std::size_t end) const {
+    const void* found = std::memchr(anchor_of_.data() + begin, id, end - begin);
+    return found ? std::size_t(static_cast<const std::uint8_t*>(found) - anchor_of_.data()) : end;
+  }
   /// Particle i (of lane `lane`) relies on the current anchor from now on.
   void move_to_current(std::uint32_t i, int lane) {
     auto& relying = relying_[std::size_t(lane)].count;

@@ -4,15 +4,6 @@
 
 namespace swarm {
 
-void WallTally::add(const WallTally& o) {
-  hits += o.hits;
-  radial_impulse += o.radial_impulse;
-  hit_kinetic_energy += o.hit_kinetic_energy;
-  wall_momentum += o.wall_momentum;
-  books.add(o.books);
-  floor_hits += o.floor_hits;
-}
-
 void reflect_at_wall(Particle& p, WallTally& tally) { p.v += wall_reflection(p.m, p.r, p.v, tally); }
 
 double sphere_area(double R) { return 4 * M_PI * R * R; }

@@ -114,21 +114,27 @@ TEST_CASE("lane pool: the workers run lanes at once, call after call, and are wa
   // at once: the caller and the three workers. That makes the hand-over happen every time,
   // whatever the scheduler does (the machine may have fewer cores: the waiting lanes yield).
   // Lanes then linger and fill a plain array, so a run() that returned before a lane ended
-  // would show in the sums. The same threads serve every call.
+  // would show in the sums. The same threads serve every call, and since a thread claims a
+  // lane of its own chunk first (with four lanes, one each) and cannot take another before all
+  // four have begun, lane 0 runs on the caller and each other lane on the same worker every
+  // time: what keeps the engine's lanes on one core.
   if (!kHasThreads) return;  // one thread in the browser: the first lane would wait for ever
   constexpr std::size_t kLanes = 4, kCells = 1024;
   LanePool pool{int(kLanes)};
   std::set<std::thread::id> first_threads;
+  std::vector<std::thread::id> first_by_lane;
   for (int call = 1; call <= 20; ++call) {
     std::atomic<std::size_t> began{0};
     std::atomic<int> stuck{0};
     std::vector<std::uint64_t> cells(kLanes * kCells);
     std::mutex who_mutex;
     std::set<std::thread::id> who;
+    std::vector<std::thread::id> by_lane(kLanes);
     pool.run(kLanes, [&](std::size_t lane) {
       {
         std::lock_guard<std::mutex> lock(who_mutex);
         who.insert(std::this_thread::get_id());
+        by_lane[lane] = std::this_thread::get_id();
       }
       began.fetch_add(1);
       // A deadline so that a broken hand-over fails the test rather than hanging it.
@@ -150,8 +156,43 @@ TEST_CASE("lane pool: the workers run lanes at once, call after call, and are wa
             n * std::uint64_t(call) * 10000 + n * (n - 1) / 2);
     REQUIRE(who.size() == kLanes);
     REQUIRE(who.count(std::this_thread::get_id()) == 1);
-    if (call == 1) first_threads = who;
+    REQUIRE(bool(by_lane[0] == std::this_thread::get_id()));
+    if (call == 1) {
+      first_threads = who;
+      first_by_lane = by_lane;
+    }
     REQUIRE(who == first_threads);  // the workers stay alive between calls
+    REQUIRE(by_lane == first_by_lane);
+  }
+}
+
+TEST_CASE("lane pool: a lane may wait for an earlier lane of the same call") {
+  // Each lane waits for the one before it to publish, then publishes its own: a chain through
+  // every lane of the call, as the fast engine's lanes carry the sums of their hits on. It must
+  // end for any thread and lane count (more threads than cores included), with the lanes'
+  // values in lane order, call after call.
+  for (const int threads : {1, 2, 3, 7}) {
+    for (const std::size_t lanes : {1, 2, 3, 7, 20}) {
+      CAPTURE(threads);
+      CAPTURE(lanes);
+      LanePool pool(threads);
+      std::vector<std::atomic<std::uint64_t>> published(lanes);
+      std::vector<std::uint64_t> chain(lanes);
+      for (std::uint64_t call = 1; call <= 200; ++call) {
+        pool.run(lanes, [&](std::size_t lane) {
+          std::uint64_t before = 0;
+          if (lane > 0) {
+            LanePool::wait_for(published[lane - 1], call);
+            before = chain[lane - 1];
+          }
+          chain[lane] = before * 3 + lane + call;
+          published[lane].store(call, std::memory_order_release);
+        });
+        std::uint64_t expected = 0;
+        for (std::size_t lane = 0; lane < lanes; ++lane) expected = expected * 3 + lane + call;
+        REQUIRE(chain.back() == expected);
+      }
+    }
   }
 }
 

@@ -17,7 +17,15 @@ struct WallTally {
   EnergyBooks books;                  ///< energy from outside in the step (walls, floor, drag)
   std::int64_t floor_hits = 0;        ///< bounces on the floor (swarm/physics/floor.h), not in hits
 
-  void add(const WallTally& other);
+  /// Inline: the fast engine adds up every hit's tally.
+  void add(const WallTally& other) {
+    hits += other.hits;
+    radial_impulse += other.radial_impulse;
+    hit_kinetic_energy += other.hit_kinetic_energy;
+    wall_momentum += other.wall_momentum;
+    books.add(other.books);
+    floor_hits += other.floor_hits;
+  }
 };
 
 /// Reflects particle p elastically about the radial direction at its current position and
