@@ -64,6 +64,10 @@ constexpr double kMaxFreeSteps = 1024;
 constexpr double kMaxDragDecay = 1;
 // How many ids ahead of the one being checked the particle data is fetched.
 constexpr std::size_t kPrefetch = 8;
+// How many of a step's ids are checked, then given windows, then scheduled at a time: enough
+// for the batched windows, few enough that their particles (80 bytes each) are still in the
+// first-level cache when they are scheduled.
+constexpr std::size_t kCheckChunk = 64;
 // The particles are split by index into one lane per thread, each with its own buckets, so
 // that a step's checks run on all the threads. No number depends on that split: a step's hits
 // are combined in particle-id order (the reference engine's order), and the epoch's sums over
@@ -314,31 +318,37 @@ class FastEngine final : public Engine {
 #endif
     for (std::size_t j = 0; j < std::min(count, kPrefetch); ++j)
       fast::prefetch(&orbits_[lane.work[j]]);
-    // First every check, then the new windows of those hit, then every schedule, each in the
-    // order of the work list (so the wheel's order is as if each particle were done in turn):
-    // the windows' long chains of dependent operations then overlap from one particle to the
-    // next.
+    // In chunks of the work list: first every check, then the new windows of those hit, then
+    // every schedule, each in the order of the work list (so the wheel's order is as if each
+    // particle were done in turn): the windows' long chains of dependent operations then
+    // overlap from one particle to the next. A schedule is for the next step on, so it does
+    // not touch the ids of this one still to be checked.
     std::size_t checked = 0;
     WallTally one;  // a hit's own tally
-    for (std::size_t j = 0; j < count; ++j) {
-      if (j + kPrefetch < count) fast::prefetch(&orbits_[lane.work[j + kPrefetch]]);
-      const std::uint32_t i = lane.work[j];
-      Body& o = orbits_[i];
-      if (o.due != step_) continue;  // rescheduled since it was put here
-      o.due = step_ + 1;             // checked: a second entry of i in this step is stale
-      lane.work[checked++] = i;
-      Vec3 dv;
-      if (checks_more_) {
-        Hit hit{i, Vec3::Zero(), WallTally{}, {}};
-        if (check_under_forces(o, hit)) lane.hits.push_back(hit);
-      } else if (fast::reflect_if_leaving(o, i, d, wall_, one, dv)) {
-        lane.hits.push_back({i, (o.m / M_) * dv, one});
-        one = WallTally{};
+    for (std::size_t start = 0; start < count; start += kCheckChunk) {
+      const std::size_t stop = std::min(count, start + kCheckChunk);
+      const std::size_t chunk_checked = checked, chunk_hits = lane.hits.size();
+      for (std::size_t j = start; j < stop; ++j) {
+        if (j + kPrefetch < count) fast::prefetch(&orbits_[lane.work[j + kPrefetch]]);
+        const std::uint32_t i = lane.work[j];
+        Body& o = orbits_[i];
+        if (o.due != step_) continue;  // rescheduled since it was put here
+        o.due = step_ + 1;             // checked: a second entry of i in this step is stale
+        lane.work[checked++] = i;
+        Vec3 dv;
+        if (checks_more_) {
+          Hit hit{i, Vec3::Zero(), WallTally{}, {}};
+          if (check_under_forces(o, hit)) lane.hits.push_back(hit);
+        } else if (fast::reflect_if_leaving(o, i, d, wall_, one, dv)) {
+          lane.hits.push_back({i, (o.m / M_) * dv, one});
+          one = WallTally{};
+        }
       }
+      make_windows(index, chunk_hits);
+      for (std::size_t j = chunk_checked; j < checked; ++j)
+        schedule(lane.work[j], step_ + 1, index);
     }
     lane.checks = std::int64_t(checked);
-    make_windows(index);
-    for (std::size_t j = 0; j < checked; ++j) schedule(lane.work[j], step_ + 1, index);
     lane.order.clear();
     for (std::size_t h = 0; h < lane.hits.size(); ++h)
       lane.order.push_back(std::uint64_t(lane.hits[h].id) << 32 | h);
@@ -689,28 +699,30 @@ class FastEngine final : public Engine {
           fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
   }
 
-  /// The new windows of lane `index`'s hits, all at once (fast_engine_window_batch.h); one by
-  /// one under drag, with a floor or without a wall, which the batch does not know.
-  void make_windows(std::size_t index) {
+  /// The new windows of lane `index`'s hits from the `from`th on, all at once
+  /// (fast_engine_window_batch.h); one by one under drag, with a floor or without a wall, which
+  /// the batch does not know.
+  void make_windows(std::size_t index, std::size_t from) {
     Lane& lane = lanes_[index];
-    const std::size_t n = lane.hits.size();
+    const Hit* hits = lane.hits.data() + from;
+    const std::size_t n = lane.hits.size() - from;
     const Anchor& current = anchors_.current();
     if (current.threshold <= 0 || checks_more_ || !config_.container_radius) {
-      for (const Hit& hit : lane.hits) make_window(hit.id, index);
+      for (std::size_t j = 0; j < n; ++j) make_window(hits[j].id, index);
       return;
     }
     lane.hit_a.resize(n);
     lane.hit_b.resize(n);
     lane.hit_windows.resize(n);
     for (std::size_t j = 0; j < n; ++j) {
-      const std::uint32_t i = lane.hits[j].id;
+      const std::uint32_t i = hits[j].id;
       if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, int(index));
       lane.hit_a[j] = orbits_[i].a - current.p;
       lane.hit_b[j] = orbits_[i].b - current.q;
     }
     fast::windows_of(lane.hit_a.data(), lane.hit_b.data(), n, spring_, current.threshold2,
                      phase_per_time_ * epoch_start_, lane.hit_windows.data());
-    for (std::size_t j = 0; j < n; ++j) orbits_[lane.hits[j].id].window = lane.hit_windows[j];
+    for (std::size_t j = 0; j < n; ++j) orbits_[hits[j].id].window = lane.hit_windows[j];
   }
 
   /// Where particle i's windows lie, seen from the end of step m: the wall's, or with a floor
