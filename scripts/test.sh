@@ -101,6 +101,7 @@ wasm_lane() {
   else built wasm failed; return 1; fi
   await native || return 1
   stage "browser suites, one at a time (ctest -L web)" native_ctest -L web
+  stage "Lighthouse and axe-core on the page (ctest -L audit)" native_ctest -L audit
   stage "walkthroughs: every lesson on four devices, two at a time (ctest -L walkthrough)" \
     native_ctest -L walkthrough -j2
 }
