@@ -160,6 +160,8 @@
       if (el.textContent !== (item.value || '')) el.textContent = item.value || '';
       setAttr(el, 'aria-haspopup', 'listbox');
       setAttr(el, 'aria-expanded', item.expanded ? 'true' : 'false');
+      // Open, it names its list (follow() gives the list this id).
+      setAttr(el, 'aria-controls', item.expanded ? 'pdom-list-' + el.swarmlabKey : null);
     } else {
       if (el.textContent !== item.name) el.textContent = item.name;
       setAttr(el, 'role', item.role === 'button' ? null : item.role);
@@ -261,6 +263,7 @@
           counts.set(containerKey + role, n);
           group = groupFor(containerKey + '\u0001' + role + '\u0001' + n, role);
           if (role === 'menu' || role === 'listbox') setAttr(group, 'aria-label', groupName(opener, last, item.region));
+          if (opener && opener.getAttribute('role') === 'combobox') setAttr(group, 'id', 'pdom-list-' + opener.swarmlabKey);
           place(group, container, previous);
           used.add(group);
         }

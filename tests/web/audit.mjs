@@ -124,7 +124,8 @@ async function axeRun(page) {
 
 // At one size: a first visit (the welcome), then, after the person closes the welcome as a
 // person does (Just the simulation, by finger on the phone, by mouse on the laptop), the
-// panels a returning student sees. Judges each against the allow-list.
+// panels a returning student sees; on the laptop also the View menu open and the method
+// combo's list open. Judges each against the allow-list.
 async function axeAt(url, size, report, allowed) {
   await launchBrowser(SIZES[size]);
   try {
@@ -135,6 +136,17 @@ async function axeAt(url, size, report, allowed) {
     await person(page, SIZES[size].hasTouch ? 'touch' : 'mouse').press('button', 'Just the simulation');
     await page.waitForFunction(() => !window.swarmlab.welcomeShown());
     judge(`${size}, panels`, report.axe[`${size}, panels`] = await axeRun(page), allowed);
+    if (size !== 'laptop') return;
+    // An open menu and an open combo's list: their entries nest in what opened them.
+    const me = person(page, 'mouse');
+    await me.press('menuitem', 'View');
+    await page.waitForSelector('#parallel-dom [role="menu"] [role^="menuitem"]', { state: 'attached' });
+    judge(`${size}, menu open`, report.axe[`${size}, menu open`] = await axeRun(page), allowed);
+    await me.press('menuitem', 'View');  // closes it again
+    await page.waitForSelector('#parallel-dom [role="menu"]', { state: 'detached' });
+    await me.press('combobox', 'method');
+    await page.waitForSelector('#parallel-dom [role="combobox"] + [role="listbox"] [role="option"]', { state: 'attached' });
+    judge(`${size}, list open`, report.axe[`${size}, list open`] = await axeRun(page), allowed);
   } finally {
     await closeBrowser();
   }
