@@ -36,6 +36,8 @@ class App {
   /// down, a new language or size being applied, a layout still settling. Paused and still, the window draws only when
   /// something changes (frame_demand.h).
   bool moving() const;
+  /// The run itself moves: playing (not at its end), a seek or a single step under way.
+  bool run_moving() const;
 
   /// Between ImGui::NewFrame() and ImGui::Render(): runs the simulation for one frame that
   /// took real_seconds and builds the whole UI.
