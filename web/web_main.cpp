@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "context_loss.h"
 #include "finger_times.h"
 #include "lessons/lesson_file.h"
 #include "ui/main_loop.h"
@@ -42,6 +43,7 @@ int main() {
   frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
                                      swarmlab::shipped_preset_lookup("/presets"));
   swarmlab::install_lesson_share(frontend.app->state());
+  swarmlab::survive_context_loss("#canvas", frontend);
   // The language the page chose (#lang=, the last choice, the browser's: web/page_text.js).
   frontend.app->state().language.pending = swarmlab::startup_language();
   // A share link in the address replaces the default preset before the first frame.
@@ -52,6 +54,7 @@ int main() {
   // Scenario > Quit stops the frames, and the page offers to start again.
   emscripten_set_main_loop_arg(
       [](void* f) {
+        if (swarmlab::context_lost()) return;  // nothing can be drawn: the run waits
         if (!swarmlab::run_frame(*static_cast<swarmlab::Frontend*>(f))) {
           emscripten_cancel_main_loop();
           EM_ASM({

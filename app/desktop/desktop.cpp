@@ -14,6 +14,7 @@
 #include "i18n/language.h"
 #include "lessons/lesson_file.h"
 #include "ui/classroom/presentation.h"
+#include "ui/gl_context_life.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/main_loop.h"
 #include "ui/parallel_dom/items_json.h"
@@ -145,6 +146,7 @@ int run_desktop(const DesktopOptions& options) {
   double timed_ms = 0, timed_cpu_ms = 0;
   int timed_frames = 0;
   for (int frame = 1; f.running; ++frame) {
+    hold_while_minimised(f);  // nothing drawn while nothing can be seen (ui/gl_context_life.h)
     const bool last = options.frames > 0 && frame == options.frames;
     screenshot_path = options.screenshot_path;
     const auto start = std::chrono::steady_clock::now();
