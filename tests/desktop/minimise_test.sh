@@ -15,7 +15,7 @@ set -uo pipefail
 command -v xdotool >/dev/null || fail "xdotool is not installed (apt-get install xdotool)"
 preset="$presets/fig4-equilibration.json"
 [ -f "$preset" ] || fail "no preset at $preset"
-# Enough frames that the window is minimised long before the last (it is at frame 20 or so).
+# Enough frames that the window is minimised twice long before the last (at frames 10 and 15 or so).
 frames=240
 shot="$out/desktop-minimised-restored.png"
 items="$out/minimise-items.json"
