@@ -30,6 +30,12 @@ nlohmann::json app_state_json(swarmlab::App& app) {
   j["playing"] = s.playing;
   j["t"] = s.run->time();
   j["speed"] = s.speed;
+  // The simulated speed reached over the set one (< 1: the steps do not fit the frames; the
+  // clock's line says so), and the frames drawn (none while paused and still).
+  j["speed_ratio"] = s.stats.speed_ratio;
+  j["frames_drawn"] = s.stats.frames;
+  j["idle"] = s.stats.idle;
+  j["run_while_hidden"] = s.presentation.run_while_hidden;
   j["selected"] = s.selected ? nlohmann::json(*s.selected) : nlohmann::json(nullptr);
   // The camera, the layout and where everything is (CSS pixels of the canvas = ImGui's).
   j["camera"] = {{"distance", s.camera.distance()}, {"yaw", s.camera.yaw()},

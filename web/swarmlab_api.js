@@ -56,7 +56,8 @@
 //                          fragment, copied, put in the address bar and shown
 //   swarmlab.welcomeShown() whether the welcome window is showing
 //   swarmlab.ready         Promise resolved once main() has started (and a start link is open)
-//   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks)
+//   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks, drawn
+//                          or idle: state().frames_drawn counts the drawn ones)
 //   swarmlab.firstFrameMs  performance.now() at the end of the first frame, or null
 //   swarmlab.lastMessage   the last message shown on the page: { kind, text } or null
 // A page that opens with a share link starts its preset (decoded before main() runs). A link
@@ -75,6 +76,20 @@
     if (!runtimeInitialized || !Module.swarmlabMainStarted)
       throw new Error('swarmlab: the app has not started yet (await swarmlab.ready)');
   }
+
+  // The frame loop idles while nothing changes (app/ui/frame_demand.h): every call into the app
+  // wakes it, except these questions, which only read (a page may ask them every frame).
+  var questions = ['swarmlab_preset', 'swarmlab_time', 'swarmlab_state', 'swarmlab_positions',
+                   'swarmlab_seek_poll', 'swarmlab_button_rect', 'swarmlab_screen_position',
+                   'swarmlab_lessons', 'swarmlab_lesson_state', 'swarmlab_lesson_fragment',
+                   'swarmlab_welcome_shown', 'swarmlab_shipped', 'swarmlab_dom_items',
+                   'swarmlab_wake'];
+  var ccall = Module.ccall;
+  Module.ccall = function (name) {
+    var result = ccall.apply(null, arguments);
+    if (questions.indexOf(name) < 0) _swarmlab_wake();
+    return result;
+  };
 
   function presetText(indent) { return Module.ccall('swarmlab_preset', 'string', ['number'], [indent]); }
 
@@ -494,6 +509,16 @@
       e.preventDefault();
       e.returnValue = '';
     });
+    // A hidden tab pauses its run (unless View > Keep running in a hidden tab), and says so
+    // when the student comes back.
+    document.addEventListener('visibilitychange', function () {
+      if (!Module.swarmlabMainStarted) return;
+      var paused = Module.ccall('swarmlab_page_hidden', 'number', ['number'],
+                                [document.visibilityState === 'hidden' ? 1 : 0]);
+      if (paused)
+        notice('info', 'Paused while this tab was hidden: press Play to go on.', '',
+               pageText('Paused while this tab was hidden: press Play to go on.'));
+    });
     // A preset file dropped on the page opens like Open preset.
     window.addEventListener('dragover', function (e) { e.preventDefault(); });
     window.addEventListener('drop', function (e) {
@@ -511,7 +536,9 @@
         callback(t);
         if (runtimeInitialized) {
           frames++;
-          (Module.swarmlabEachFrame || []).forEach(function (f) { f(); });
+          // After a frame the app drew (web_main.cpp): an idle one changed nothing to follow.
+          if (Module.swarmlabDrew) (Module.swarmlabEachFrame || []).forEach(function (f) { f(); });
+          Module.swarmlabDrew = false;
           if (api.firstFrameMs === null) {
             api.firstFrameMs = performance.now();
             if (Module.onFirstFrame) Module.onFirstFrame(api.firstFrameMs);

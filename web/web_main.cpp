@@ -1,5 +1,6 @@
 // The browser entry of Swarm Lab: the desktop's window, App and frame loop (app/desktop) with
-// the browser's preset store and storage buttons, driven by requestAnimationFrame.
+// the browser's preset store and storage buttons, driven by requestAnimationFrame; and the
+// page's side of that loop: its wake-up and a hidden tab.
 
 #include <emscripten.h>
 
@@ -9,6 +10,7 @@
 #include "context_loss.h"
 #include "finger_times.h"
 #include "lessons/lesson_file.h"
+#include "ui/classroom/presentation.h"
 #include "ui/main_loop.h"
 #include "ui/platform/language_memory.h"
 #include "storage_controls.h"
@@ -22,6 +24,29 @@ swarmlab::Frontend frontend;  // lives as long as the page
 }  // namespace
 
 swarmlab::App* swarmlab::web_app() { return frontend.app.get(); }
+
+extern "C" {
+
+/// The page changed something the app shows (web/swarmlab_api.js calls this after every call
+/// that is not a question, a file or font that arrived): the idle frame loop draws again.
+EMSCRIPTEN_KEEPALIVE void swarmlab_wake() { frontend.demand.wake(); }
+
+/// The page was hidden (1) or shown (0): returns 1 when the run was paused while it was hidden
+/// (the page then says so). A run kept going in a hidden tab is driven by a timer, since the
+/// browser gives a hidden page no animation frames.
+EMSCRIPTEN_KEEPALIVE int swarmlab_page_hidden(int hidden) {
+  if (!frontend.app) return 0;
+  swarmlab::AppState& state = frontend.app->state();
+  const bool paused = swarmlab::set_page_hidden(state, hidden != 0);
+  if (hidden && state.playing)
+    emscripten_set_main_loop_timing(EM_TIMING_SETTIMEOUT, 250);
+  else
+    emscripten_set_main_loop_timing(EM_TIMING_RAF, 1);
+  frontend.demand.wake();
+  return paused ? 1 : 0;
+}
+
+}  // extern "C"
 
 int main() {
   std::string error;
@@ -39,6 +64,7 @@ int main() {
                                                  /*preset_location=*/"",
                                                  /*fixed_frame_time=*/false);
   frontend.app->state().storage_controls = swarmlab::draw_storage_controls;
+  frontend.app->state().presentation.can_be_hidden = true;
   // Lessons embedded at /lessons (assets/lessons); progress and the welcome in localStorage.
   frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
                                      swarmlab::shipped_preset_lookup("/presets"));
@@ -55,6 +81,10 @@ int main() {
   emscripten_set_main_loop_arg(
       [](void* f) {
         if (swarmlab::context_lost()) return;  // nothing can be drawn: the run waits
+        // Paused and still, a frame only asks whether anything changed (frame_demand.h).
+        if (!swarmlab::frame_wanted(*static_cast<swarmlab::Frontend*>(f))) return;
+        // The page follows a drawn frame (the parallel DOM, a seek's progress), not an idle one.
+        EM_ASM({ Module.swarmlabDrew = true; });
         if (!swarmlab::run_frame(*static_cast<swarmlab::Frontend*>(f))) {
           emscripten_cancel_main_loop();
           EM_ASM({

@@ -51,10 +51,12 @@ void take_screenshot(Frontend& f) {
 
 /// The mirrored items after each frame, numbered, written whole (renamed into place) so a
 /// reader never sees half a frame's items; a test that sees an item at the same place in two
-/// frames knows it has stopped moving (as Playwright does before a click).
-void write_items(const std::string& path, long long frame, bool touch) {
-  const std::string text =
-      "{\"frame\": " + std::to_string(frame) + ", \"dom\": " + items_json(parallel_dom(), touch) + "}";
+/// frames knows it has stopped moving (as Playwright does before a click), and so does one
+/// that reads `still`: the window idles after this frame until something changes.
+void write_items(const std::string& path, long long frame, bool touch, bool still) {
+  const std::string text = "{\"frame\": " + std::to_string(frame) +
+                           ", \"still\": " + (still ? "true" : "false") +
+                           ", \"dom\": " + items_json(parallel_dom(), touch) + "}";
   if (const std::string e = write_file_atomically(path, text); !e.empty())
     std::fprintf(stderr, "error: %s\n", e.c_str());
 }
@@ -147,13 +149,22 @@ int run_desktop(const DesktopOptions& options) {
   int timed_frames = 0;
   for (int frame = 1; f.running; ++frame) {
     hold_while_minimised(f);  // nothing drawn while nothing can be seen (ui/gl_context_life.h)
+    // Paused and still, the window waits for an event (or a caret's blink) instead of drawing;
+    // a scripted run draws every one of its frames.
+    if (options.frames == 0 && !frame_wanted(f)) {
+      const double wait_ms = 1000 * f.demand.seconds_to_next(steady_seconds());
+      SDL_WaitEventTimeout(nullptr, int(std::clamp(wait_ms, 1.0, 500.0)));
+      --frame;
+      continue;
+    }
     const bool last = options.frames > 0 && frame == options.frames;
     screenshot_path = options.screenshot_path;
     const auto start = std::chrono::steady_clock::now();
     const std::clock_t cpu_start = std::clock();
     run_frame(f, last && !screenshot_path.empty() ? take_screenshot : nullptr);
     if (!options.items_path.empty())
-      write_items(options.items_path, frame, f.app->state().layout.touch);
+      write_items(options.items_path, frame, f.app->state().layout.touch,
+                  !f.demand.wanted(steady_seconds()));
     if (frame > kWarmUp) {
       timed_ms +=
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)

@@ -68,9 +68,17 @@ void scroll_floating_window(const TouchFrame& t) {
 }
 
 constexpr const char* kFirstPreset = "fig1-four-masses.json";
-/// Stepping may take this much of a frame; beyond it the simulation runs slower than asked
-/// rather than the window freezing.
+/// Stepping may take this much of a frame, and at low frame rates (a school Chromebook, a
+/// loaded machine) up to this share of the frame's time, so that the run keeps its speed by
+/// drawing less often rather than stepping less; beyond the budget it runs slower than asked,
+/// says so, and the window still answers.
 constexpr double kStepBudgetMs = 20;
+constexpr double kStepBudgetShare = 0.5;
+constexpr double kMaxStepBudgetMs = 50;
+/// A frame longer than this (a dragged window, a very slow device) is made up in steps only up
+/// to this long, and counts as running slower than asked.
+constexpr double kStallSeconds = 1.0;
+constexpr double kSpeedRatioSeconds = 1.0;  ///< the speed reached is averaged over this long
 constexpr double kFixedFrameSeconds = 1.0 / 60;
 /// A fast-forward or seek steps for this long in a frame: as fast as the machine allows while
 /// the window still answers (about 20 frames a second).
@@ -126,9 +134,18 @@ App::App(std::unique_ptr<PresetStore> store, const std::string& preset_location,
   }
 }
 
+bool App::moving() const {
+  const AppState& s = state_;
+  return (s.playing && !s.run->finished()) || s.travel.active() || s.step_once ||
+         touch_.active() || !s.language.pending.empty() ||
+         s.layout.pending_ui_scale != s.layout.ui_scale || !s.layout.settled ||
+         s.layout.resize_panels;
+}
+
 void App::update(double real_seconds) {
   FrameStats& stats = state_.stats;
-  smooth(stats.frame_ms, real_seconds * 1000);
+  stats.idle = !moving();
+  if (!stats.idle) smooth(stats.frame_ms, real_seconds * 1000);
   ++stats.frames;
   // An open lesson's own translations into the language in use come before the tables.
   const Lesson* lesson = state_.lessons.open_lesson();
@@ -163,18 +180,21 @@ void App::advance_simulation(double seconds) {
     return;
   }
   long steps = 0;
-  double wanted = 0;
+  double wanted = 0, asked = 0;
   if (s.step_once) {
     steps = 1;
     s.step_once = false;
   } else if (s.playing && !s.run->finished()) {
-    // A long stall (a dragged window) must not turn into a burst of catch-up steps.
-    s.step_debt += s.speed * std::min(seconds, 0.1) / s.preset.dt;
+    s.step_debt += s.speed * std::min(seconds, kStallSeconds) / s.preset.dt;
     wanted = std::floor(s.step_debt);
+    asked = wanted * std::max(1.0, seconds / kStallSeconds);
     s.step_debt -= wanted;
     steps = long(std::min(wanted, 1e9));
-    if (!s.fixed_frame_time)
-      steps = std::min(steps, std::max(1L, long(kStepBudgetMs / std::max(s.stats.step_ms, 1e-6))));
+    if (!s.fixed_frame_time) {
+      const double budget_ms =
+          std::clamp(kStepBudgetShare * 1000 * seconds, kStepBudgetMs, kMaxStepBudgetMs);
+      steps = std::min(steps, std::max(1L, long(budget_ms / std::max(s.stats.step_ms, 1e-6))));
+    }
   }
   const Clock::time_point start = Clock::now();
   const long taken = steps > 0 ? s.run->advance(steps) : 0;
@@ -182,8 +202,10 @@ void App::advance_simulation(double seconds) {
   const double ms = milliseconds_since(start);
   if (taken > 0) smooth(s.stats.step_ms, ms / double(taken));
   smooth(s.stats.simulation_ms, ms);
-  if (wanted >= 1)
-    smooth(s.stats.speed_ratio, double(steps) / wanted);
+  // Averaged over about a second of the run, however few frames that is.
+  if (asked >= 1)
+    s.stats.speed_ratio += (1 - std::exp(-seconds / kSpeedRatioSeconds)) *
+                           (double(steps) / asked - s.stats.speed_ratio);
   else if (!s.playing)
     s.stats.speed_ratio = 1;
   if (s.run->finished()) {

@@ -32,6 +32,10 @@ class App {
   void set_touch_frame(const TouchFrame& frame) { touch_frame_ = frame; }
   /// The window's close button: quits, or first asks when there are unsaved edits.
   void request_close() { request_quit(state_); }
+  /// Whether the picture moves by itself: a run playing, a seek or a step under way, a finger
+  /// down, a new language or size being applied, a layout still settling. Paused and still, the window draws only when
+  /// something changes (frame_demand.h).
+  bool moving() const;
 
   /// Between ImGui::NewFrame() and ImGui::Render(): runs the simulation for one frame that
   /// took real_seconds and builds the whole UI.

@@ -99,6 +99,7 @@ struct FrameStats {
   double step_ms = 0.05;   ///< one step of every method run side by side
   double speed_ratio = 1;  ///< simulated speed achieved / requested (< 1: the budget ran out)
   long frames = 0;
+  bool idle = false;  ///< nothing moves: frames come only on a change, so no frame rate
 };
 
 /// The projector and the classroom: theme, presentation mode, fullscreen, sound
@@ -110,6 +111,10 @@ struct Presentation {
   bool fullscreen_wanted = false;  ///< what the user asked for; the adapter tries it
   bool sound = false;              ///< clicks at the wall hits; off until turned on
   std::string sound_status;        ///< why sound could not start, "" when fine
+  // A page in a hidden tab (the browser): its run pauses unless the teacher keeps it running.
+  bool can_be_hidden = false;        ///< the window is a page, which another tab can hide
+  bool run_while_hidden = false;     ///< the teacher's choice: a hidden page's run goes on
+  bool paused_while_hidden = false;  ///< the run was paused when the page was hidden
   // What presentation mode replaced, given back when it ends.
   bool saved_controls = true, saved_plots = true;
   float saved_ui_scale = 1;

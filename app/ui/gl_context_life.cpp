@@ -34,13 +34,7 @@ void create_gl_objects(Frontend& f) {
   ImGui_ImplOpenGL3_Init(kGlslVersion);
   if (f.app) f.app->renderer().create_gl_objects();
   f.last_frame = std::chrono::steady_clock::now();
-  // The new context's picture is empty: the window is "exposed", as SDL says of a window whose
-  // contents must be drawn again, so that a frame draws it even when nothing else changed.
-  SDL_Event exposed{};
-  exposed.type = SDL_WINDOWEVENT;
-  exposed.window.event = SDL_WINDOWEVENT_EXPOSED;
-  exposed.window.windowID = SDL_GetWindowID(f.window.window);
-  SDL_PushEvent(&exposed);
+  f.demand.wake();  // the new context's picture is empty: drawn again even when paused and still
 }
 
 void hold_while_minimised(Frontend& f) {
@@ -63,6 +57,7 @@ void hold_while_minimised(Frontend& f) {
     waiting.push_back(e);
   for (SDL_Event& held : waiting) SDL_PushEvent(&held);
   f.last_frame = std::chrono::steady_clock::now();
+  f.demand.wake();
   std::printf("swarmlab: %s: frames go on (t = %.9g)\n",
               minimised(window) ? "the minimised window is asked to close" : "the window shows again",
               run_time(f));

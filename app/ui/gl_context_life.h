@@ -31,8 +31,8 @@ void release_gl_objects(Frontend& frontend);
 /// The context is back, empty: starts ImGui's OpenGL3 backend afresh (its program, buffers and
 /// font atlas texture are made by the next frame's ImGui_ImplOpenGL3_NewFrame) and makes the
 /// particle renderer's objects. The next frame's clock starts now, so the time the picture was
-/// away is not taken as one long frame, and an SDL_WINDOWEVENT_EXPOSED is queued for it: the
-/// picture must be drawn again even if nothing else changed.
+/// away is not taken as one long frame, and a frame is due (FrameDemand::wake): the picture
+/// must be drawn again even when the run is paused and nothing else changes.
 void create_gl_objects(Frontend& frontend);
 
 /// The desktop, before each frame: while the window is minimised or hidden (SDL's

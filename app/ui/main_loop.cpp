@@ -26,6 +26,15 @@ namespace {
 
 constexpr float kMaxUiFrameSeconds = 0.1f;  // s
 
+// ImGui 1.86 sees a key as held or not once a frame, and within a frame a text field takes
+// typed characters before shortcuts: a key pressed and released between two frames would
+// never be seen pressed (Enter in a lesson's answer field did nothing), and "Ctrl+A, 4.4,
+// Enter" arriving in one frame of a busy machine typed 4.4 before selecting all. So the
+// keyboard trickles, as ImGui's later input queue does: once a key other than a modifier has
+// gone down (or a character arrived) in a frame, every later keyboard event waits, in order,
+// for the frames after. A modifier's release waits too, so Ctrl+A stays Ctrl+A.
+std::deque<SDL_Event> waiting_keys;
+
 /// The frontmost of last frame's ImGui windows (a panel, a strip, the welcome, a menu, a popup)
 /// at x, y, or none: a finger there acts on it, never on the 3D view behind.
 const ImGuiWindow* window_at(float x, float y) {
@@ -101,15 +110,15 @@ void process_event(SDL_Event& event) {
 
 }  // namespace
 
+bool frame_wanted(Frontend& f) {
+  SDL_PumpEvents();
+  if (!waiting_keys.empty() || SDL_HasEvents(SDL_FIRSTEVENT, SDL_LASTEVENT)) f.demand.wake();
+  if (f.demand.wanted(steady_seconds())) return true;
+  f.last_frame = std::chrono::steady_clock::now();
+  return false;
+}
+
 bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
-  // ImGui 1.86 sees a key as held or not once a frame, and within a frame a text field takes
-  // typed characters before shortcuts: a key pressed and released between two frames would
-  // never be seen pressed (Enter in a lesson's answer field did nothing), and "Ctrl+A, 4.4,
-  // Enter" arriving in one frame of a busy machine typed 4.4 before selecting all. So the
-  // keyboard trickles, as ImGui's later input queue does: once a key other than a modifier has
-  // gone down (or a character arrived) in a frame, every later keyboard event waits, in order,
-  // for the frames after. A modifier's release waits too, so Ctrl+A stays Ctrl+A.
-  static std::deque<SDL_Event> waiting_keys;
   bool typed = false;
   const auto keyboard_event = [](const SDL_Event& e) {
     return e.type == SDL_KEYDOWN || e.type == SDL_KEYUP || e.type == SDL_TEXTINPUT;
@@ -214,6 +223,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   capture_plot_png(f.app->state());  // a plot saved as PNG: its pixels, before they are shown
   if (before_present) before_present(f);
   SDL_GL_SwapWindow(f.window.window);
+  f.demand.drawn(steady_seconds(), f.app->moving(), ImGui::GetIO().WantTextInput);
   if (f.app->quit_requested()) f.running = false;
   return f.running;
 }

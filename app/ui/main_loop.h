@@ -7,6 +7,7 @@
 
 #include "ui/app.h"
 #include "ui/classroom/classroom_outputs.h"
+#include "ui/frame_demand.h"
 #include "ui/platform/sdl_window.h"
 
 namespace swarmlab {
@@ -17,7 +18,13 @@ struct Frontend {
   std::chrono::steady_clock::time_point last_frame = std::chrono::steady_clock::now();
   bool running = true;
   ClassroomOutputs outputs;  ///< theme, fullscreen, title and live region, sound
+  FrameDemand demand;        ///< whether a frame is due, or the window idles
 };
+
+/// Whether run_frame has anything to do now: an event waits, or the demand wants a frame (a
+/// run plays, the last change is settling, a caret blinks). When not, the frame clock moves on,
+/// so that the next frame's time is its own and not the idle stretch before it.
+bool frame_wanted(Frontend& frontend);
 
 /// Handles the pending events, runs and draws one frame and presents it; before presenting,
 /// calls before_present (e.g. to read the pixels for a screenshot) when given. Returns false

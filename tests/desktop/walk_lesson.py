@@ -32,13 +32,14 @@ def ok(message):
 
 
 def snapshot():
-    """(frame number, what the window shows) of the last frame written: "items", "editing"..."""
+    """(frame number, what the window shows, whether it then idles) of the last frame written:
+    "items", "editing"..."""
     try:
         with open(items_path) as f:
             written = json.load(f)
-        return written["frame"], written["dom"]
+        return written["frame"], written["dom"], written["still"]
     except (OSError, ValueError, KeyError):
-        return -1, {"items": []}  # not written yet (the file is renamed into place whole)
+        return -1, {"items": []}, False  # not written yet (the file is renamed into place whole)
 
 
 def items():
@@ -58,13 +59,16 @@ def wait_for(what, predicate):
 
 
 def stable(what, predicate):
-    """As wait_for, for an item at the same place in two frames in a row: a panel that scrolls
-    new feedback into view moves its buttons on the frame after (Playwright waits so too)."""
+    """As wait_for, for an item at the same place in two frames in a row, or in the frame after
+    which the window idles (nothing moves until the next input): a panel that scrolls new
+    feedback into view moves its buttons on the frame after (Playwright waits so too)."""
     deadline = time.monotonic() + WAIT_S
     last_frame, last = -1, None
     while time.monotonic() < deadline:
-        frame, shows = snapshot()
+        frame, shows, still = snapshot()
         found = predicate(shows["items"])
+        if found and still:
+            return found
         if found and frame > last_frame:
             place = (found["x"], found["y"], found["width"], found["height"])
             if last is not None and frame == last_frame + 1 and place == last:

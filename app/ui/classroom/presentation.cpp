@@ -42,6 +42,20 @@ void set_sound(AppState& state, bool on) {
 
 void set_fullscreen(AppState& state, bool on) { state.presentation.fullscreen_wanted = on; }
 
+bool set_page_hidden(AppState& state, bool hidden) {
+  Presentation& p = state.presentation;
+  if (hidden) {
+    if (state.playing && !p.run_while_hidden) {
+      state.playing = false;
+      p.paused_while_hidden = true;
+    }
+    return false;
+  }
+  const bool paused = p.paused_while_hidden;
+  p.paused_while_hidden = false;
+  return paused;
+}
+
 void draw_presentation_menu_items(AppState& state) {
   Presentation& p = state.presentation;
   ImGui::Separator();
@@ -51,13 +65,19 @@ void draw_presentation_menu_items(AppState& state) {
   if (ImGui::MenuItem(tr_id("Fullscreen"), "F11", p.fullscreen_wanted))
     set_fullscreen(state, !p.fullscreen_wanted);
   if (ImGui::MenuItem(tr_id("Sound: wall hits"), "M", p.sound)) set_sound(state, !p.sound);
+  if (p.can_be_hidden) {
+    if (ImGui::MenuItem(tr_id("Keep running in a hidden tab"), nullptr, p.run_while_hidden))
+      p.run_while_hidden = !p.run_while_hidden;
+    item_tooltip("%s", tr("Off: the run pauses while another tab is in front, sparing the "
+                          "battery, and goes on when you press Play."));
+  }
 }
 
 void draw_sound_toggle(AppState& state) {
   Presentation& p = state.presentation;
   bool on = p.sound;
   if (ImGui::Checkbox(tr_id("Sound"), &on)) set_sound(state, on);
-  item_tooltip(tr("M: a click at each wall hit, thinned to a rate you can hear"));
+  item_tooltip("%s", tr("M: a click at each wall hit, thinned to a rate you can hear"));
   if (!p.sound_status.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", p.sound_status.c_str());

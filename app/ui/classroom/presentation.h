@@ -16,6 +16,10 @@ void set_presentation(AppState& state, bool on);
 void set_theme(AppState& state, Theme theme);
 void set_sound(AppState& state, bool on);
 void set_fullscreen(AppState& state, bool on);
+/// The page was hidden (another tab, a minimised window, a tablet put to sleep) or shown again.
+/// Hidden, a playing run pauses unless run_while_hidden; shown again after that pause, returns
+/// true: the page tells the student why the run stands still.
+bool set_page_hidden(AppState& state, bool hidden);
 
 /// The View menu's entries for these (inside an open menu).
 void draw_presentation_menu_items(AppState& state);

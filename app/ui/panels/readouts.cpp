@@ -257,9 +257,14 @@ void draw_readouts(AppState& state) {
         tr("Wall hits per unit of simulated time, over the plots' averaging "
            "window. P = \u03a3 |\u0394p\u1d63| / (4\u03c0 R\u00b2 t)."));
   }
-  std::snprintf(value, sizeof value, "%.0f  (%.1f ms)", 1000.0 / state.stats.frame_ms,
-                state.stats.frame_ms);
-  row("FPS", value, tr("Frames per second and the time of one frame."));
+  if (state.stats.idle)
+    std::snprintf(value, sizeof value, "%s", tr("idle"));
+  else
+    std::snprintf(value, sizeof value, "%.0f  (%.1f ms)", 1000.0 / state.stats.frame_ms,
+                  state.stats.frame_ms);
+  row("FPS", value,
+      tr("Frames per second and the time of one frame. Paused and still, the app draws only "
+         "when something changes, to spare the battery."));
   std::snprintf(value, sizeof value, "%.1f + %.1f ms", state.stats.simulation_ms,
                 state.stats.scene_ms);
   row(tr("step + draw"), value,

@@ -26,8 +26,8 @@ EM_JS(void, fetch_cjk_font, (), {
   var name = "fonts/noto-sans-sc-subset.otf";
   fetch((window.swarmlabFiles && window.swarmlabFiles[name]) || name)
     .then(function(r) { if (!r.ok) throw new Error("HTTP " + r.status); return r.arrayBuffer(); })
-    .then(function(b) { FS.writeFile("/cjk-font.otf", new Uint8Array(b)); _swarmlab_cjk_font_ready(); })
-    .catch(function(e) { console.warn("Swarm Lab: the Chinese font did not load: " + e); _swarmlab_cjk_font_ready(); });
+    .then(function(b) { FS.writeFile("/cjk-font.otf", new Uint8Array(b)); _swarmlab_cjk_font_ready(); _swarmlab_wake(); })
+    .catch(function(e) { console.warn("Swarm Lab: the Chinese font did not load: " + e); _swarmlab_cjk_font_ready(); _swarmlab_wake(); });
 });
 // clang-format on
 
