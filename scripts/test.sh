@@ -59,21 +59,23 @@ if [ $quick -eq 1 ]; then
 fi
 
 build "packages (scripts/deps.sh)" scripts/deps.sh native desktop web webtest fuzz serve
-wasm_build() {
-  scripts/web-deps.sh &&
-    { [ -f build-wasm/CMakeCache.txt ] || emcmake cmake -S . -B build-wasm -DCMAKE_BUILD_TYPE=Release >/dev/null; } &&
-    cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab swarmlab_web
+# The wasm doctest suite and the CLI for node, in build-wasm (which the page's build made), one
+# build there at a time (scripts/web.sh takes the same lock).
+wasm_tests_build() {
+  flock build/.web-build.lock cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab
 }
 
 # Two lanes from the start, each building what it needs and then testing it, so that one
-# lane's single-threaded stretches (configuring, linking, SDL2's configure, emcc's wasm link,
-# a page waiting on its frames) are filled by the other's work:
+# lane's single-threaded stretches (configuring, linking, emcc's wasm link, a page waiting on
+# its frames) are filled by the other's work:
 #   native: the native build, the doctest, CLI and desktop tests, fuzzing (its own build),
-#           then, once the wasm build is done, the doctest suite under node and native == wasm;
-#   wasm:   the wasm build, then, once the native build is done (ctest runs from build/), the
-#           browser suites one at a time and the walkthroughs two at a time. The browser
-#           suites' timing limits leave room for a loaded machine, not for three pages at
-#           once: they never run beside the walkthroughs.
+#           then, once the page is built, the wasm doctest suite and the CLI for node (built
+#           beside the browser suites), the doctest suite under node and native == wasm;
+#   wasm:   SDL2 for wasm and the page (build/web, and playwright-core: the browser suites'
+#           fixture), then, once the native build is done (ctest runs from build/), the browser
+#           suites one at a time and the walkthroughs two at a time. The browser suites' timing
+#           limits leave room for a loaded machine (two busy loops: scripts/soak.sh), not for
+#           three pages at once: they never run beside the walkthroughs.
 # A lane waits for the other's build through a file in build/test-logs that says how it ended.
 # Each lane's output goes to its log, shown after.
 logs=build/test-logs
@@ -85,11 +87,14 @@ await() {
   while [ ! -f "$logs/$1.built" ]; do sleep 2; done
   [ "$(cat "$logs/$1.built")" = ok ]
 }
+# The browser tests without their fixture (the wasm lane prepared it as its build).
+browser_ctest() { native_ctest -E '^web_prepare$' -FA '.*' "$@"; }
 native_lane() {
   if stage "native build" scripts/build.sh; then built native ok; else built native failed; return 1; fi
   stage "doctest, CLI, desktop window (ctest -L 'unit|cli|desktop')" native_ctest -L 'unit|cli|desktop' -j2
   stage "fuzzing, a minute (ctest -L fuzz)" native_ctest -L fuzz
   await wasm || return 1
+  stage "wasm build: the doctest suite and the CLI for node" wasm_tests_build || return 1
   stage "doctest suite under node (ctest in build-wasm)" bash -c 'cd build-wasm && ctest --output-on-failure'
   stage "native and wasm reach the same final state" python3 tests/wasm/same_final_state.py \
     build/app/swarmlab build-wasm/app/swarmlab.js \
@@ -97,12 +102,13 @@ native_lane() {
     assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
 }
 wasm_lane() {
-  if stage "wasm build: core, tests, CLI for node, the page" wasm_build; then built wasm ok
+  if stage "wasm build: SDL2 for wasm, the page (tests/web/run.sh --prepare)" tests/web/run.sh --prepare
+  then built wasm ok
   else built wasm failed; return 1; fi
   await native || return 1
-  stage "browser suites, one at a time (ctest -L web)" native_ctest -L web
+  stage "browser suites, one at a time (ctest -L web)" browser_ctest -L web
   stage "walkthroughs: every lesson on four devices, two at a time (ctest -L walkthrough)" \
-    native_ctest -L walkthrough -j2
+    browser_ctest -L walkthrough -j2
 }
 echo "== two lanes: native ($logs/native.log) and wasm, then the browser ($logs/wasm.log)"
 wasm_lane >"$logs/wasm.log" 2>&1 &
