@@ -16,7 +16,7 @@ import { join } from 'node:path';
 import * as harness from './harness.mjs';
 import { person } from './person.mjs';
 
-const { check, openApp, launchBrowser, runSuite, outDir, pageErrors, consoleErrors, consoleLog, analysePng,
+const { check, openApp, launchBrowser, runSuite, outDir, pageErrors, consoleErrors, consoleLog, screenshot,
         clockAdvances, shipped, base64url } = harness;
 
 const shotDir = join(outDir, 'context');
@@ -67,17 +67,8 @@ const viewRect = (s) => ({ view: [Math.round(s.view.x), Math.round(s.view.y),
 // Drawn: not black, and the particles' colours in the view.
 const drawn = (img) => img.blackShare < 0.5 && img.vivid.view >= 500;
 
-async function shoot(page, file, rects, until = null) {
-  const deadline = Date.now() + 20_000;
-  let png, img;
-  do {
-    png = await page.screenshot({ path: join(shotDir, file) });
-    img = await analysePng(png, rects);
-  } while (until && !until(img) && Date.now() < deadline);
-  console.log(`      ${file}: ${img.distinct} colours, black ${(100 * img.blackShare).toFixed(1)}%, ` +
-              `most common ${img.topColor}, vivid pixels in the view ${img.vivid.view} -> build/web-test/context/${file}`);
-  return img;
-}
+// A screenshot into build/web-test/context/, the message line as the person sees it.
+const shoot = (page, file, rects, until = null) => screenshot(page, join('context', file), rects, until, true);
 
 // The app has laid itself out at W x H (what a resize should give).
 async function laidOut(page, W, H) {
