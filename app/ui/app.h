@@ -44,6 +44,8 @@ class App {
   void update(double real_seconds);
   /// After ImGui::Render() and before ImGui's draw data: draws the particles into the 3D view.
   void render_scene(float framebuffer_scale, float window_height);
+  /// The GL objects of the 3D view, which a lost context takes away (ui/gl_context_life.h).
+  ParticleRenderer& renderer() { return renderer_; }
 
  private:
   void advance_simulation(double real_seconds);

@@ -232,8 +232,9 @@ export const vividIn = (img, names) => names.reduce((sum, n) => sum + img.vivid[
 
 // A screenshot of the page, measured. With `until`, taken again until until(measures) holds
 // (what a change of the state should draw: the app draws it on its next frame) or 20 s pass.
-export async function screenshot(page, file, rects, until = null) {
-  await page.evaluate(() => { document.getElementById('notice').hidden = true; });
+// The page's message line is hidden first, unless keepNotice (a test of what it says).
+export async function screenshot(page, file, rects, until = null, keepNotice = false) {
+  if (!keepNotice) await page.evaluate(() => { document.getElementById('notice').hidden = true; });
   const deadline = Date.now() + 20_000;
   let png, img;
   do {
