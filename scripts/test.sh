@@ -3,13 +3,14 @@
 #   scripts/test.sh          everything, as CI runs it (.ci/run): builds natively and with
 #                            Emscripten, then the doctest suite natively and under node, the CLI
 #                            as a process, the desktop window under Xvfb, native == wasm, the
-#                            browser suites and the walkthroughs in headless Chromium, and a
-#                            minute of fuzzing. About 25 minutes on a fresh clone of a 2-core
-#                            machine.
+#                            browser suites, Lighthouse and axe-core and the walkthroughs in
+#                            headless Chromium, and a minute of fuzzing. About 33 minutes on a
+#                            fresh clone of a 2-core machine (2002 s, 2026-11-27, before SDL2
+#                            for wasm lost its configure step).
 #   scripts/test.sh --quick  before a commit: the doctest suite, the CLI tests and one browser
 #                            smoke test, under 3 minutes once built.
 # Installs what is missing first. Each stage runs through ctest's labels (unit, cli, desktop,
-# wasm, web, walkthrough, fuzz, smoke) where it can; a failed test stage does not stop the later
+# wasm, web, audit, walkthrough, fuzz, smoke) where it can; a failed test stage does not stop the later
 # ones; the native and the wasm lane run side by side from the start. Ends with a table of the
 # stages and their times; exits non-zero if any stage failed.
 set -uo pipefail
@@ -73,7 +74,7 @@ wasm_tests_build() {
 #           beside the browser suites), the doctest suite under node and native == wasm;
 #   wasm:   SDL2 for wasm and the page (build/web, and playwright-core: the browser suites'
 #           fixture), then, once the native build is done (ctest runs from build/), the browser
-#           suites one at a time and the walkthroughs two at a time. The browser suites' timing
+#           suites one at a time, the audit and the walkthroughs two at a time. The browser suites' timing
 #           limits leave room for a loaded machine (two busy loops: scripts/soak.sh), not for
 #           three pages at once: they never run beside the walkthroughs.
 # A lane waits for the other's build through a file in build/test-logs that says how it ended.
@@ -107,6 +108,7 @@ wasm_lane() {
   else built wasm failed; return 1; fi
   await native || return 1
   stage "browser suites, one at a time (ctest -L web)" browser_ctest -L web
+  stage "Lighthouse and axe-core on the page (ctest -L audit)" browser_ctest -L audit
   stage "walkthroughs: every lesson on four devices, two at a time (ctest -L walkthrough)" \
     browser_ctest -L walkthrough -j2
 }

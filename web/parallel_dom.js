@@ -13,6 +13,7 @@
   var root = null;            // <div id="parallel-dom">
   var regions = new Map();    // window title -> <section>
   var elements = new Map();   // key -> element
+  var groups = new Map();     // key -> <div role="tablist|listbox|menubar|menu">
   var lastText = '';
   var editingShown = 0;       // the field being typed into on the canvas, shown as an <input>
 
@@ -29,7 +30,7 @@
   function makeRoot() {
     root = document.createElement('div');
     root.id = 'parallel-dom';
-    document.body.appendChild(root);
+    (document.querySelector('main') || document.body).appendChild(root);
     // Where overflow: clip is missing, the box could still be scrolled by a focus: undo it.
     root.addEventListener('scroll', function () { root.scrollTop = 0; root.scrollLeft = 0; });
     // Tab belongs to the page (it walks the mirrored items), not to the canvas's app.
@@ -72,7 +73,9 @@
       el.type = 'text';
       el.autocomplete = 'off';
       el.spellcheck = false;
-      if (item.role === 'slider') el.setAttribute('role', 'slider');
+      // ImGui's slider, mirrored as a field its number is typed into: a spinbutton (the role
+      // a text <input> may take; a slider's may not).
+      if (item.role === 'slider') el.setAttribute('role', 'spinbutton');
       el.setAttribute('enterkeyhint', 'done');
       el.addEventListener('input', function () { el.swarmlabDirty = true; });
       el.addEventListener('keydown', function (e) {
@@ -119,6 +122,14 @@
     }
     el.className = 'pdom-item';
     el.swarmlabKind = kindOf(item);
+    // An item that opens a menu or a list holds it, as ARIA's menus nest (the holder says
+    // nothing itself): the popup's entries go in beside the item, which never moves for them
+    // (moving the focused element would take its focus).
+    if (item.popup) {
+      el.swarmlabHolder = document.createElement('div');
+      el.swarmlabHolder.setAttribute('role', 'none');
+      el.swarmlabHolder.appendChild(el);
+    }
     return el;
   }
 
@@ -142,6 +153,15 @@
       el.swarmlabValue = item.value || '';
       if (document.activeElement !== el && el.value !== el.swarmlabValue) el.value = el.swarmlabValue;
       if (item.role === 'slider') setAttr(el, 'aria-valuetext', item.value || '');
+    } else if (item.role === 'combobox') {
+      // A combobox takes its name from aria-label, and says its value as its text.
+      setAttr(el, 'role', 'combobox');
+      setAttr(el, 'aria-label', item.name);
+      if (el.textContent !== (item.value || '')) el.textContent = item.value || '';
+      setAttr(el, 'aria-haspopup', 'listbox');
+      setAttr(el, 'aria-expanded', item.expanded ? 'true' : 'false');
+      // Open, it names its list (follow() gives the list this id).
+      setAttr(el, 'aria-controls', item.expanded ? 'pdom-list-' + el.swarmlabKey : null);
     } else {
       if (el.textContent !== item.name) el.textContent = item.name;
       setAttr(el, 'role', item.role === 'button' ? null : item.role);
@@ -150,7 +170,6 @@
       setAttr(el, 'aria-selected', item.role === 'tab' || item.role === 'option' ? (item.checked ? 'true' : 'false') : null);
       setAttr(el, 'aria-haspopup', item.popup ? (item.role === 'combobox' ? 'listbox' : 'menu') : null);
       setAttr(el, 'aria-expanded', item.openable ? (item.expanded ? 'true' : 'false') : null);
-      setAttr(el, 'aria-valuetext', item.role === 'combobox' ? item.value || '' : null);
     }
     setAttr(el, 'aria-description', item.description || null);
     setAttr(el, 'aria-disabled', item.disabled ? 'true' : null);
@@ -165,6 +184,41 @@
     if (s.top !== top) s.top = top;
     if (s.width !== width) s.width = width;
     if (s.height !== height) s.height = height;
+  }
+
+  // ARIA's required parents: tabs are in a tablist, list entries in a listbox, menu entries in
+  // a menubar (the menu bar's) or a menu (a popup's). Consecutive items of one kind share one.
+  function groupRole(item, opener) {
+    if (item.role === 'tab') return 'tablist';
+    if (item.role === 'option') return 'listbox';
+    if (item.role !== 'menuitem' && item.role !== 'menuitemcheckbox') return null;
+    return item.in_popup || opener ? 'menu' : 'menubar';
+  }
+  function groupFor(key, role) {
+    var group = groups.get(key);
+    if (!group || group.getAttribute('role') !== role) {
+      group = document.createElement('div');
+      group.className = 'pdom-group';
+      group.setAttribute('role', role);
+      groups.set(key, group);
+    }
+    return group;
+  }
+  // The name a menu or a listbox is read with: the item that opened it, or for a list in a
+  // panel the text just before it ("Shipped presets"), or its window's title.
+  function groupName(opener, before, region) {
+    if (opener) return opener.getAttribute('aria-label') || opener.textContent;
+    if (before && (before.tagName === 'P' || before.tagName === 'H2')) return before.textContent;
+    return region;
+  }
+
+  // Puts node into container after what was placed there last this frame. Moving the focused
+  // element, or what holds it, would take its focus: the others move around it.
+  function place(node, container, previous) {
+    var after = previous.get(container) || null;
+    var wanted = after ? after.nextSibling : container.firstChild;
+    if (node !== wanted && !node.contains(document.activeElement)) container.insertBefore(node, wanted);
+    previous.set(container, node);
   }
 
   function keyOf(item, seen) {
@@ -185,20 +239,44 @@
     // Plain text cut off (no item's label): for the layout test (tests/web/layout_e2e.mjs).
     Module.swarmlabCutText = frame.cut_text || [];
     if (!root) makeRoot();
-    var seenText = new Map(), alive = new Set(), previous = new Map(); // section -> last placed
+    // previous: container -> what was placed in it last; counts: how many groups of a kind a
+    // container has had this frame (their keys).
+    var seenText = new Map(), alive = new Set(), previous = new Map(), counts = new Map(), used = new Set();
     frame.items.forEach(function (item) {
       var key = keyOf(item, seenText);
       var el = elements.get(key);
-      if (el && el.swarmlabKind !== kindOf(item)) { el.remove(); el = null; }  // its role changed
+      if (el && el.swarmlabKind !== kindOf(item)) { (el.swarmlabHolder || el).remove(); el = null; }  // its role changed
       if (!el) { el = make(item); el.swarmlabKey = key; elements.set(key, el); }
       alive.add(key);
       update(el, item);
-      var section = regionFor(item.region);
-      var after = previous.get(section) || null;
-      var wanted = after ? after.nextSibling : section.firstChild;
-      // Moving the focused element would take its focus: the others move around it.
-      if (el !== wanted && el !== document.activeElement) section.insertBefore(el, wanted);
-      previous.set(section, el);
+      // Where it goes: its window's section, or beside the item whose popup it is in.
+      var opener = item.popup_of ? elements.get('i' + item.popup_of) : null;
+      if (opener && !opener.swarmlabHolder) opener = null;
+      var container = opener ? opener.swarmlabHolder : regionFor(item.region);
+      var containerKey = opener ? 'h' + opener.swarmlabKey : 'r' + item.region;
+      var role = groupRole(item, opener);
+      if (role) {
+        var last = previous.get(container);
+        var group = last && last.className === 'pdom-group' && last.getAttribute('role') === role ? last : null;
+        if (!group) {
+          var n = (counts.get(containerKey + role) || 0) + 1;
+          counts.set(containerKey + role, n);
+          group = groupFor(containerKey + '\u0001' + role + '\u0001' + n, role);
+          if (role === 'menu' || role === 'listbox') setAttr(group, 'aria-label', groupName(opener, last, item.region));
+          if (opener && opener.getAttribute('role') === 'combobox') setAttr(group, 'id', 'pdom-list-' + opener.swarmlabKey);
+          place(group, container, previous);
+          used.add(group);
+        }
+        container = group;
+      }
+      var node = el.swarmlabHolder || el;
+      place(node, container, previous);
+      if (el.swarmlabHolder) previous.set(el.swarmlabHolder, el);  // its popup goes after it
+    });
+    groups.forEach(function (group, key) {
+      if (used.has(group) || group.contains(document.activeElement)) return;
+      groups.delete(key);
+      group.remove();
     });
     elements.forEach(function (el, key) {
       if (alive.has(key)) return;
@@ -212,7 +290,7 @@
         for (var j = at - 1; j >= 0 && !next; --j) if (alive.has(all[j].swarmlabKey)) next = all[j];
         if (next && byKeyboard) next.focus(); else document.getElementById('canvas').focus();
       }
-      el.remove();
+      (el.swarmlabHolder || el).remove();
     });
     regions.forEach(function (section, title) {
       if (!section.firstChild) { section.remove(); regions.delete(title); }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "context_loss.h"
 #include "finger_times.h"
 #include "lessons/lesson_file.h"
 #include "ui/classroom/presentation.h"
@@ -68,6 +69,7 @@ int main() {
   frontend.app->state().lessons.load("/lessons", swarmlab::make_web_progress_store(),
                                      swarmlab::shipped_preset_lookup("/presets"));
   swarmlab::install_lesson_share(frontend.app->state());
+  swarmlab::survive_context_loss("#canvas", frontend);
   // The language the page chose (#lang=, the last choice, the browser's: web/page_text.js).
   frontend.app->state().language.pending = swarmlab::startup_language();
   // A share link in the address replaces the default preset before the first frame.
@@ -78,6 +80,7 @@ int main() {
   // Scenario > Quit stops the frames, and the page offers to start again.
   emscripten_set_main_loop_arg(
       [](void* f) {
+        if (swarmlab::context_lost()) return;  // nothing can be drawn: the run waits
         // Paused and still, a frame only asks whether anything changed (frame_demand.h).
         if (!swarmlab::frame_wanted(*static_cast<swarmlab::Frontend*>(f))) return;
         // The page follows a drawn frame (the parallel DOM, a seek's progress), not an idle one.

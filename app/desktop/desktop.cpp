@@ -14,6 +14,7 @@
 #include "i18n/language.h"
 #include "lessons/lesson_file.h"
 #include "ui/classroom/presentation.h"
+#include "ui/gl_context_life.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/main_loop.h"
 #include "ui/parallel_dom/items_json.h"
@@ -147,6 +148,7 @@ int run_desktop(const DesktopOptions& options) {
   double timed_ms = 0, timed_cpu_ms = 0;
   int timed_frames = 0;
   for (int frame = 1; f.running; ++frame) {
+    hold_while_minimised(f);  // nothing drawn while nothing can be seen (ui/gl_context_life.h)
     // Paused and still, the window waits for an event (or a caret's blink) instead of drawing;
     // a scripted run draws every one of its frames.
     if (options.frames == 0 && !frame_wanted(f)) {

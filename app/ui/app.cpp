@@ -134,17 +134,23 @@ App::App(std::unique_ptr<PresetStore> store, const std::string& preset_location,
   }
 }
 
+bool App::run_moving() const {
+  const AppState& s = state_;
+  return (s.playing && !s.run->finished()) || s.travel.active() || s.step_once;
+}
+
 bool App::moving() const {
   const AppState& s = state_;
-  return (s.playing && !s.run->finished()) || s.travel.active() || s.step_once ||
-         touch_.active() || !s.language.pending.empty() ||
+  return run_moving() || touch_.active() || !s.language.pending.empty() ||
          s.layout.pending_ui_scale != s.layout.ui_scale || !s.layout.settled ||
          s.layout.resize_panels;
 }
 
 void App::update(double real_seconds) {
   FrameStats& stats = state_.stats;
-  stats.idle = !moving();
+  // By the run alone: a frame-rate row that changed with the layout's settling would unsettle
+  // the layout it is drawn in (a new width, a new wrap), and the window would never idle.
+  stats.idle = !run_moving();
   if (!stats.idle) smooth(stats.frame_ms, real_seconds * 1000);
   ++stats.frames;
   // An open lesson's own translations into the language in use come before the tables.

@@ -36,12 +36,16 @@ class App {
   /// down, a new language or size being applied, a layout still settling. Paused and still, the window draws only when
   /// something changes (frame_demand.h).
   bool moving() const;
+  /// The run itself moves: playing (not at its end), a seek or a single step under way.
+  bool run_moving() const;
 
   /// Between ImGui::NewFrame() and ImGui::Render(): runs the simulation for one frame that
   /// took real_seconds and builds the whole UI.
   void update(double real_seconds);
   /// After ImGui::Render() and before ImGui's draw data: draws the particles into the 3D view.
   void render_scene(float framebuffer_scale, float window_height);
+  /// The GL objects of the 3D view, which a lost context takes away (ui/gl_context_life.h).
+  ParticleRenderer& renderer() { return renderer_; }
 
  private:
   void advance_simulation(double real_seconds);

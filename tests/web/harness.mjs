@@ -87,6 +87,23 @@ export async function startServer() {
   throw new Error('http.server did not answer on ' + url);
 }
 
+/** build/web served as a class gets it: scripts/web.sh --no-build (caddy with
+ *  web/serve/Caddyfile: compressed copies, cache headers) on a free loopback port. */
+export async function startWebServer() {
+  const port = await freePort();
+  server = spawn(join(root, 'scripts/web.sh'), ['--no-build', '--port', String(port)], { stdio: ['ignore', 'ignore', 'pipe'] });
+  let said = '';
+  server.stderr.on('data', (d) => { said += d; });
+  const url = `http://127.0.0.1:${port}/`;
+  const deadline = Date.now() + 30_000;
+  while (Date.now() < deadline) {
+    if (server.exitCode !== null) throw new Error(`scripts/web.sh exited with ${server.exitCode}: ${said.trim()}`);
+    try { if ((await fetch(url)).ok) return url; } catch { /* not up yet */ }
+    await sleep(100);
+  }
+  throw new Error('scripts/web.sh did not answer on ' + url);
+}
+
 // Console errors and uncaught exceptions of every page, checked at the end.
 export const pageErrors = [], consoleErrors = [], consoleLog = [];
 export function watch(page, label) {
@@ -215,8 +232,9 @@ export const vividIn = (img, names) => names.reduce((sum, n) => sum + img.vivid[
 
 // A screenshot of the page, measured. With `until`, taken again until until(measures) holds
 // (what a change of the state should draw: the app draws it on its next frame) or 20 s pass.
-export async function screenshot(page, file, rects, until = null) {
-  await page.evaluate(() => { document.getElementById('notice').hidden = true; });
+// The page's message line is hidden first, unless keepNotice (a test of what it says).
+export async function screenshot(page, file, rects, until = null, keepNotice = false) {
+  if (!keepNotice) await page.evaluate(() => { document.getElementById('notice').hidden = true; });
   const deadline = Date.now() + 20_000;
   let png, img;
   do {
@@ -267,8 +285,9 @@ export async function launchBrowser({ width = 1280, height = 720, hasTouch = fal
 }
 
 /** Runs main(url) against the served build/web within overallMs, then prints the tally and
- *  exits non-zero on any failure. The suite's console log goes to build/web-test/NAME.log. */
-export async function runSuite(name, overallMs, main) {
+ *  exits non-zero on any failure. The suite's console log goes to build/web-test/NAME.log.
+ *  `serve`: how build/web is served (Python's http.server; startWebServer for the real one). */
+export async function runSuite(name, overallMs, main, { serve = startServer } = {}) {
   const watchdog = setTimeout(async () => {
     check(`whole ${name} run within ${overallMs / 1000} s`, false, 'timed out');
     await Promise.race([cleanup(), sleep(3000)]);
@@ -276,7 +295,7 @@ export async function runSuite(name, overallMs, main) {
   }, overallMs);
   try {
     mkdirSync(outDir, { recursive: true });
-    await main(await startServer());
+    await main(await serve());
   } catch (e) {
     check(`${name} run`, false, String(e && e.stack || e).split('\n').slice(0, 3).join(' / '));
   }

@@ -38,7 +38,7 @@ export function person(page, way) {
   });
   const regionBox = (el) => el.evaluate((e) => {
     // The window it is in: the union of its region's visible items.
-    const items = [...e.closest('.pdom-region').children].filter((c) => c.dataset.clipped !== 'true');
+    const items = [...e.closest('.pdom-region').querySelectorAll('.pdom-item')].filter((c) => c.dataset.clipped !== 'true');
     const rects = items.map((c) => c.getBoundingClientRect());
     return { top: Math.min(...rects.map((r) => r.top)), bottom: Math.max(...rects.map((r) => r.bottom)),
              left: Math.min(...rects.map((r) => r.left)), right: Math.max(...rects.map((r) => r.right)) };

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Browser end-to-end test of the web build: (re)builds build/web (scripts/web.sh --build-only,
-# seconds when nothing changed; --no-build skips it), installs playwright-core from npm into
-# tests/web/node_modules if needed, then runs e2e.mjs and every *_e2e.mjs suite beside it
+# seconds when nothing changed; --no-build skips it), installs tests/web/package.json's npm
+# packages (playwright-core; lighthouse and axe-core for audit.mjs) into tests/web/node_modules
+# if needed, then runs e2e.mjs and every *_e2e.mjs suite beside it
 # (each its own Chromium, sharing harness.mjs) in Debian's headless Chromium.
 #   tests/web/run.sh [--no-build] [SUITE...]   SUITE: e2e, time, touch, ... (default: all)
 #   tests/web/run.sh --prepare                 only build and install (ctest's web fixture)
@@ -37,7 +38,7 @@ fi
 stamp="$here/node_modules/.installed-stamp"
 if [ ! -f "$here/node_modules/playwright-core/package.json" ] || [ "$here/package.json" -nt "$stamp" ] \
    || { [ -f "$here/package-lock.json" ] && [ "$here/package-lock.json" -nt "$stamp" ]; }; then
-  echo "[web-test] npm install (playwright-core)" >&2
+  echo "[web-test] npm install (playwright-core, lighthouse, axe-core)" >&2
   if [ -f "$here/package-lock.json" ]; then
     (cd "$here" && npm ci --no-audit --no-fund --loglevel=error)
   else

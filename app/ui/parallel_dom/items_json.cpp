@@ -21,6 +21,8 @@ nlohmann::json item_json(const MirroredItem& m) {
   if (m.disabled) j["disabled"] = true;
   if (m.clipped) j["clipped"] = true;
   if (m.cut) j["cut"] = true;
+  if (m.in_popup) j["in_popup"] = true;
+  if (m.popup_of != 0) j["popup_of"] = m.popup_of;
   return j;
 }
 

@@ -57,6 +57,10 @@ struct MirroredItem {
   bool cut = false;
   float x = 0, y = 0, width = 0, height = 0;  // CSS pixels of the canvas
   std::string region;                         // the title of the window it is in
+  /// In a popup (a menu, a combo's list): the page groups its entries as a menu or a listbox
+  /// (ARIA's required parents), inside the item that opened it when there is one (popup_of).
+  bool in_popup = false;
+  unsigned popup_of = 0;
 };
 
 /// The name a screen reader says for a label: the part before "##" ("Play##transport" ->

@@ -264,7 +264,10 @@ void ParallelDom::end_frame() {
   published_.clear();
   for (const Group& gr : groups) {
     std::vector<MirroredItem> items;
-    for (const Drawn* d : gr.drawn) items.push_back(mirror(*d));
+    for (const Drawn* d : gr.drawn) {
+      items.push_back(mirror(*d));
+      items.back().in_popup = gr.popup;
+    }
     auto at = published_.end();
     if (gr.popup && gr.opened_by != 0) {
       // A menu's popup has its item's ID; a combo's is derived from the combo's (BeginCombo).
@@ -273,7 +276,10 @@ void ParallelDom::end_frame() {
                                         ImHashStr("##ComboPopup", 0, m.id) == gr.opened_by);
       });
       if (parent != published_.end()) {
-        for (MirroredItem& m : items) m.region = parent->region;  // read as part of where it opened
+        for (MirroredItem& m : items) {
+          m.region = parent->region;  // read as part of where it opened
+          m.popup_of = parent->id;
+        }
         at = std::next(parent);
       }
     }

@@ -14,10 +14,13 @@
 namespace swarmlab {
 
 /// Prepended to every shader: the sources themselves are written in the GLSL subset shared by
-/// "#version 330 core" and "#version 300 es".
+/// "#version 330 core" and "#version 300 es". kGlslVersion is the version line alone, which
+/// ImGui's OpenGL3 backend is started with (sdl_window.cpp, and again after a lost context).
 #ifdef __EMSCRIPTEN__
+inline constexpr const char* kGlslVersion = "#version 300 es";
 inline constexpr const char* kGlslPrefix = "#version 300 es\nprecision highp float;\n";
 #else
+inline constexpr const char* kGlslVersion = "#version 330 core";
 inline constexpr const char* kGlslPrefix = "#version 330 core\n";
 #endif
 

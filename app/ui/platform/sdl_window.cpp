@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "ui/platform/fonts.h"
+#include "ui/platform/gl_api.h"
 
 namespace swarmlab {
 
@@ -21,12 +22,10 @@ SdlWindow open_window(const char* title, int width, int height, std::string& err
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_ES);
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 0);
-  const char* glsl_version = "#version 300 es";
 #else
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_PROFILE_MASK, SDL_GL_CONTEXT_PROFILE_CORE);
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 3);
   SDL_GL_SetAttribute(SDL_GL_CONTEXT_MINOR_VERSION, 3);
-  const char* glsl_version = "#version 330 core";
 #endif
   SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
   SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 24);
@@ -60,7 +59,7 @@ SdlWindow open_window(const char* title, int width, int height, std::string& err
   ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
   apply_ui_scale(1.0f);
   ImGui_ImplSDL2_InitForOpenGL(w.window, w.context);
-  ImGui_ImplOpenGL3_Init(glsl_version);
+  ImGui_ImplOpenGL3_Init(kGlslVersion);
   return w;
 }
 

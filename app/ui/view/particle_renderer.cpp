@@ -96,24 +96,34 @@ void instance_attributes(GLuint divisor) {
 
 }  // namespace
 
-ParticleRenderer::Program::Program(const char* name, const char* vertex, const char* corner) {
+ParticleRenderer::Program ParticleRenderer::link(const char* name, const char* vertex,
+                                                 const char* corner) {
   const std::string fragment = std::string(corner) + kFragmentShader;
-  id = link_program(name, vertex, fragment.c_str());
-  view = glGetUniformLocation(id, "view");
-  projection = glGetUniformLocation(id, "projection");
-  ghost = glGetUniformLocation(id, "ghost");
-  min_radius = glGetUniformLocation(id, "min_radius");
-  pixels_per_unit = glGetUniformLocation(id, "pixels_per_unit");
-  max_point_size = glGetUniformLocation(id, "max_point_size");
+  Program p;
+  p.id = link_program(name, vertex, fragment.c_str());
+  if (!p.id) return p;
+  p.view = glGetUniformLocation(p.id, "view");
+  p.projection = glGetUniformLocation(p.id, "projection");
+  p.ghost = glGetUniformLocation(p.id, "ghost");
+  p.min_radius = glGetUniformLocation(p.id, "min_radius");
+  p.pixels_per_unit = glGetUniformLocation(p.id, "pixels_per_unit");
+  p.max_point_size = glGetUniformLocation(p.id, "max_point_size");
+  return p;
 }
 
-ParticleRenderer::ParticleRenderer()
-    : quads_("particle quads", kQuadVertexShader, kQuadCorner),
-      sprites_("particle sprites", kSpriteVertexShader, kSpriteCorner) {
+ParticleRenderer::ParticleRenderer() { create_gl_objects(); }
+
+ParticleRenderer::~ParticleRenderer() { release_gl_objects(); }
+
+void ParticleRenderer::create_gl_objects() {
+  quads_ = link("particle quads", kQuadVertexShader, kQuadCorner);
+  sprites_ = link("particle sprites", kSpriteVertexShader, kSpriteCorner);
   GLfloat point_sizes[2] = {1, 64};
   glGetFloatv(GL_ALIASED_POINT_SIZE_RANGE, point_sizes);
   max_point_size_ = point_sizes[1];
 
+  // The instance buffer gets its storage at the first draw (capacity_ is 0).
+  capacity_ = 0;
   glGenBuffers(1, &instance_buffer_);
   const float corners[] = {-1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, 1};
   glGenBuffers(1, &corner_buffer_);
@@ -134,13 +144,16 @@ ParticleRenderer::ParticleRenderer()
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-ParticleRenderer::~ParticleRenderer() {
+void ParticleRenderer::release_gl_objects() {
   glDeleteBuffers(1, &instance_buffer_);
   glDeleteBuffers(1, &corner_buffer_);
   glDeleteVertexArrays(1, &quad_vao_);
   glDeleteVertexArrays(1, &sprite_vao_);
   glDeleteProgram(quads_.id);
   glDeleteProgram(sprites_.id);
+  quads_ = sprites_ = Program{};
+  instance_buffer_ = corner_buffer_ = quad_vao_ = sprite_vao_ = 0;
+  capacity_ = 0;
 }
 
 void ParticleRenderer::draw(const std::vector<ParticleInstance>& particles, ParticleStyle style,

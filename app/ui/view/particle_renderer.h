@@ -36,17 +36,26 @@ class ParticleRenderer {
             const OrbitCamera& camera, const ViewRect& rect, float framebuffer_scale,
             float window_height);
 
+  /// The browser took the GL context away (ui/gl_context_life.h): deletes the programs,
+  /// buffers and vertex arrays, which a lost context ignores, so that no name of the old
+  /// context is used on the new one; draw() draws nothing until create_gl_objects().
+  void release_gl_objects();
+  /// Makes the programs, buffers and vertex arrays on the current context: at construction,
+  /// and again on a restored one.
+  void create_gl_objects();
+
  private:
   struct Program {
-    Program(const char* name, const char* vertex_source, const char* corner_source);
     GLuint id = 0;
-    GLint view, projection, ghost, min_radius, pixels_per_unit, max_point_size;
+    GLint view = -1, projection = -1, ghost = -1, min_radius = -1, pixels_per_unit = -1,
+          max_point_size = -1;
   };
+  static Program link(const char* name, const char* vertex_source, const char* corner_source);
 
   Program quads_, sprites_;
   GLuint quad_vao_ = 0, sprite_vao_ = 0, corner_buffer_ = 0, instance_buffer_ = 0;
   float max_point_size_ = 64;
-  std::size_t capacity_ = 0;
+  std::size_t capacity_ = 0;  ///< particles the instance buffer holds (0: no storage yet)
 };
 
 }  // namespace swarmlab
