@@ -46,19 +46,6 @@ const noticeNow = (page) => page.evaluate(() => {
            error: window.swarmlabError || null };
 });
 
-// In the page before its scripts: every text the live region takes (the app's too: while the
-// run plays it says the time every few seconds).
-function listen() {
-  window.liveRegionSaid = [];
-  new MutationObserver((_, waiting) => {
-    const region = document.getElementById('announcer');
-    if (!region) return;
-    new MutationObserver(() => window.liveRegionSaid.push(region.textContent.trim()))
-      .observe(region, { childList: true, characterData: true, subtree: true });
-    waiting.disconnect();
-  }).observe(document, { childList: true, subtree: true });
-}
-
 // The 3D view's upper 70 %, as analysePng measures it (x0, y0, x1, y1 in CSS pixels): the
 // particles' colours (the Turbo map of their speeds), above the colour legend at the view's
 // foot, which ImGui draws and would be there without them.
@@ -145,7 +132,7 @@ async function main(url) {
   mkdirSync(shotDir, { recursive: true });
   await launchBrowser({ width: SIZES[0][0], height: SIZES[0][1] });
   const { page, started, error } = await openApp(`${url}#preset=${base64url(Buffer.from(JSON.stringify(PRESET)))}`,
-                                                  'context', listen);
+                                                  'context', `(${harness.recordLiveRegion})();`);
   if (!check('the app starts', started, error || '')) return;
 
   // The student's change, through the parallel DOM: the max speed typed into its field.

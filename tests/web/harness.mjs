@@ -142,6 +142,25 @@ export async function openApp(url, label, init = null) {
   return { page, started: started && !error, error };
 }
 
+/** Runs in the page before its scripts (pass it to openApp as `(${recordLiveRegion})();`):
+ *  every text the live region (#announcer) takes, in window.liveRegionSaid. */
+export function recordLiveRegion() {
+  window.liveRegionSaid = [];
+  new MutationObserver((_, waiting) => {
+    const region = document.getElementById('announcer');
+    if (!region) return;
+    new MutationObserver(() => window.liveRegionSaid.push(region.textContent.trim()))
+      .observe(region, { childList: true, characterData: true, subtree: true });
+    waiting.disconnect();
+  }).observe(document, { childList: true, subtree: true });
+}
+
+/** Chrome's own counts for the page (DevTools Protocol Performance.getMetrics, after
+ *  Performance.enable on `cdp`) by name: TaskDuration, ThreadTime, ScriptDuration, Timestamp... */
+export async function pageMetrics(cdp) {
+  return Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
+}
+
 export const state = (page) => page.evaluate(() => {
   const notice = document.getElementById('notice'), text = document.getElementById('notice-text');
   let preset = null;

@@ -19,7 +19,7 @@ const HIDDEN_NOTICE = 'Paused while this tab was hidden';
 
 /** The main thread's busy share and the frames drawn over `ms` of the page's own time. */
 async function measure(page, cdp, ms) {
-  const metrics = async () => Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
+  const metrics = () => harness.pageMetrics(cdp);
   const drawn = () => page.evaluate(() => window.swarmlab.state().frames_drawn);
   const a = await metrics(), f1 = await drawn();
   await sleep(ms);

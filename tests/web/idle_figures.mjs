@@ -14,7 +14,7 @@ import { execSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import { loadavg } from 'node:os';
 import { join } from 'node:path';
-import { root, outDir, startWebServer, launchBrowser, openApp, cleanup, sleep, context } from './harness.mjs';
+import { root, outDir, startWebServer, launchBrowser, openApp, cleanup, sleep, context, pageMetrics } from './harness.mjs';
 import { person } from './person.mjs';
 
 const at = process.argv.indexOf('--seconds');
@@ -25,7 +25,7 @@ const git = (args) => execSync(`git ${args}`, { cwd: root, encoding: 'utf8' }).t
 
 // One window: the main thread's busy fraction and the frames per second over SECONDS.
 async function measure(page, cdp, what) {
-  const metric = async () => Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
+  const metric = () => pageMetrics(cdp);
   const loadStart = load();
   // Frames drawn (state().frames_drawn where the app counts them apart from the main loop's
   // runs, which go on while it idles), and whether the app says it idles.

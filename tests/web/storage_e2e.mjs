@@ -22,15 +22,8 @@ const NEWER = 'Your lesson progress was saved by a newer version of Swarm Lab';
 const LESSON = JSON.parse(readFileSync(new URL('../../assets/lessons/01-one-period.json', import.meta.url), 'utf8'));
 
 // In the page before its scripts: every text the live region takes, and the long tasks.
-function listen() {
-  window.liveRegionSaid = [];
-  new MutationObserver((_, waiting) => {
-    const region = document.getElementById('announcer');
-    if (!region) return;
-    new MutationObserver(() => window.liveRegionSaid.push(region.textContent.trim()))
-      .observe(region, { childList: true, characterData: true, subtree: true });
-    waiting.disconnect();
-  }).observe(document, { childList: true, subtree: true });
+const listen = `(${harness.recordLiveRegion})(); (${recordLongTasks})();`;
+function recordLongTasks() {
   window.longTasks = [];
   try {
     new PerformanceObserver((list) => {
@@ -65,7 +58,7 @@ const faults = {
 
 /** Opens the page with `fault` and `listen` in place, a first visit (no progress put in). */
 async function openWith(url, fault, label) {
-  const init = `(${listen})(); (${faults[fault] || (() => {})})();`;
+  const init = `${listen} (${faults[fault] || (() => {})})();`;
   return openApp(`${url}?welcome`, label, init);
 }
 
