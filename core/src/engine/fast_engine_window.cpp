@@ -52,6 +52,56 @@ Window free(const Vec3& a, const Vec3& b, double T2) {
   return {tau_minus, (aa - T2) / (bb * tau_minus)};
 }
 
+// A window that opens once a turn: an arc of half-width h about c, in phases of 2 theta.
+Window once_a_turn(double c, double h) {
+  if (h >= 2 * M_PI) return {0, 4};  // always
+  return {c, kOnceATurn + h};
+}
+
+// x + w with x = a cos(theta) + B sin(theta), B = b / omega: the common part of S1 and S2
+// (fast_engine_window.h), in phases of 2 theta.
+Window attractive_off_centre(const Vec3& a, const Vec3& b, const Vec3& w, double inv_omega,
+                             double T2) {
+  const double w2 = w.squaredNorm();
+  const double inner = std::sqrt(T2) - std::sqrt(w2);
+  const Window s1 = inner > 0 ? attractive(a, b, inv_omega, inner * inner) : Window{0, 4};
+  if (s1.second < 0) return s1;  // never
+  const Vec3 B = b * inv_omega;
+  const auto [P, Q, S, A] = swing_of(a, b, inv_omega);
+  const double u = w.dot(a), v = w.dot(B), rho = std::sqrt(u * u + v * v);
+  // S2: 2 rho cos(theta - psi) >= need, with need lowered by far more than its rounding.
+  const double sum = T2 + P + A + w2;
+  const double need = T2 - P - A - w2 - 1e-12 * sum;
+  if (need <= -2 * rho) return s1;  // S2 always (also when rho = 0 and need <= 0)
+  if (need > 2 * rho) return {0, -1};
+  const double cos_beta = need / (2 * rho);
+  const double sin_beta = std::sqrt(std::max(0.0, (1 - cos_beta) * (1 + cos_beta)));
+  // S2 is the arc |2 theta - c2| <= h2 modulo 4 pi; c2 and the half-width are each off by
+  // 2 kAtanError at most.
+  const double c2 = 2 * fast_atan2(v, u);
+  const double h2 = 2 * fast_atan2(sin_beta, cos_beta) + 4 * kAtanError;
+  if (s1.second >= M_PI) return once_a_turn(c2, h2);  // S1 always
+  // S1's arcs lie about phi + 2 pi j, of half-width alpha; the nearest to c2 is |d| from it,
+  // the next 2 pi - |d| >= |d|.
+  constexpr double kTwoPi = 2 * M_PI;
+  const double phi = s1.first, alpha = s1.second;
+  const double turns = (c2 - phi) * (1 / kTwoPi);
+  const double d =
+      c2 - phi - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
+  if (std::abs(d) > alpha + h2) return {0, -1};  // S2 meets neither arc
+  const double near = c2 - d;
+  double lo = std::max(c2 - h2, near - alpha), hi = std::min(c2 + h2, near + alpha);
+  if (kTwoPi - std::abs(d) <= alpha + h2) {  // and the other arc too: the arc over both parts
+    const double far = near + (d >= 0 ? kTwoPi : -kTwoPi);
+    lo = std::min(lo, std::max(c2 - h2, far - alpha));
+    hi = std::max(hi, std::min(c2 + h2, far + alpha));
+  }
+  // S1 is open 4 alpha of every 4 pi; the arc hi - lo. The arc's ends carry the rounding of
+  // c2 - phi's reduction and of their sums, far below 1e-12.
+  if (hi - lo >= 4 * alpha) return s1;
+  return once_a_turn(0.5 * (lo + hi), 0.5 * (hi - lo) + 1e-12);
+}
+
 // h_z = A cos(theta - phi) <= L: |theta - phi - pi| <= alpha, cos alpha = -L / A.
 Window attractive_floor(double a_z, double b_z, double inv_omega, double L) {
   const double B = b_z * inv_omega;
@@ -124,6 +174,20 @@ Window window_of(const Vec3& a, const Vec3& b_free, const Spring& spring, double
   }
   const Window w = spring.k < 0 ? repulsive(a, b, spring.inv_omega, T2) : free(a, b, T2);
   return {w.first + phase_origin + rounding, w.second + phase_origin - rounding};
+}
+
+Window off_centre_window_of(const Vec3& a, const Vec3& b, const Vec3& w, const Spring& spring,
+                            double T2, double phase_origin) {
+  if (spring.k == 0) return window_of(a + w, b, spring, T2, phase_origin);  // exact
+  if (spring.k < 0) {
+    const double inner = std::sqrt(T2) - w.norm();
+    return inner > 0 ? window_of(a, b, spring, inner * inner, phase_origin)
+                     : always_window(spring.k);
+  }
+  const Window win = attractive_off_centre(a, b, w, spring.inv_omega, T2);
+  if (win.second < 0 || (win.second >= M_PI && win.second < kOnceATurn)) return win;
+  const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(phase_origin) + 8);
+  return {win.first + phase_origin, win.second + rounding};
 }
 
 Window always_window(double k) {

@@ -22,6 +22,9 @@ namespace swarm::fast {
 ///        coefficient: the window is E <= E- or E >= E+, i.e. 2 Omega tau <= first = log E-
 ///        or >= second = log E+.
 /// J = 0: |h|^2 - T2 is a quadratic in tau: the window is tau <= first or tau >= second.
+/// An orbit about a point off the origin (off_centre_window_of) may reach the wall at one end
+/// of its ellipse only: its J > 0 window can open once a turn, |2 omega tau - first| <= second
+/// - kOnceATurn modulo 4 pi, which second >= kOnceATurn says.
 /// Under mass-proportional drag gamma = 2 eta the oscillator is h = exp(-eta tau) u, u the free
 /// one of stiffness k - eta^2 with coefficients a and b + eta a (ForcedFlow); exp(-eta tau) only
 /// decays, so from the window's making at tau0 on, |h|^2 >= T2 needs |u|^2 >= T2 exp(2 eta
@@ -53,6 +56,22 @@ inline Swing swing_of(const Vec3& a, const Vec3& b, double inv_omega) {
 /// growth: exp(2 eta tau0) under drag (tau0: now, in the epoch's time), else 1.
 Window window_of(const Vec3& a, const Vec3& b, const Spring& spring, double T2,
                  double phase_origin, double growth = 1);
+
+/// The tag a J > 0 window that opens once a turn carries in Window::second (see Window).
+inline constexpr double kOnceATurn = 16;
+
+/// The times at which h(tau) + w, an orbit about the point w, is at least sqrt(T2) from the
+/// origin (without drag), in window_of's numbers: where a swarm that sits off the container's
+/// centre (under gravity) reaches the wall. With x = h(tau), |x + w|^2 = |x|^2 + 2 w.x + |w|^2:
+/// J > 0: with theta = omega tau, |x|^2 = P + A cos(2 theta - phi) <= P + A and w.x = rho
+///        cos(theta - psi), so the window lies within both
+///          S1: |x| >= sqrt(T2) - |w|                       (twice a turn, as window_of's), and
+///          S2: cos(theta - psi) >= (T2 - P - A - |w|^2) / (2 rho)   (once a turn, about psi);
+///        the window is the narrower of S1 and the shortest arc holding S1 and S2's common part.
+/// J = 0: |x + w| is the distance of a straight line: window_of's for a + w.
+/// J < 0: S1 alone.
+Window off_centre_window_of(const Vec3& a, const Vec3& b, const Vec3& w, const Spring& spring,
+                            double T2, double phase_origin);
 
 /// The times at which one coordinate of the oscillator, h_z(tau) = xc(tau) a_z + xs(tau) b_z,
 /// can be at or below the level L: a floor's window, in the same two numbers as window_of's
@@ -99,15 +118,23 @@ inline Span span_of(const Window& w, const Clock& clock) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   constexpr double kTwoPi = 2 * M_PI;
   if (clock.k > 0) {
-    const double phi = w.first, alpha = w.second;
+    const double phi = w.first;
+    double alpha = w.second, period = kTwoPi, per_period = 1 / kTwoPi;
     if (alpha < 0) return {kInf, kInf};
-    if (alpha >= M_PI) return {0, kInf};
+    if (alpha >= kOnceATurn) {
+      alpha -= kOnceATurn;
+      period = 2 * kTwoPi;
+      per_period = 1 / (2 * kTwoPi);
+    } else if (alpha >= M_PI) {
+      return {0, kInf};
+    }
     const double x = clock.phase_per_time * clock.time - phi;
-    // x minus the nearest multiple of 2 pi, in [-pi, pi] (|x| stays far below 2^53).
-    const double turns = x * (1 / kTwoPi);
-    const double psi = x - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
+    // x minus the nearest multiple of the period, in [-period / 2, period / 2] (|x| stays far
+    // below 2^53).
+    const double turns = x * per_period;
+    const double psi = x - period * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
     if (std::abs(psi) <= alpha) return {0, (alpha - psi) * clock.steps_per_phase};
-    const double ahead = psi > alpha ? kTwoPi - alpha - psi : -alpha - psi;
+    const double ahead = psi > alpha ? period - alpha - psi : -alpha - psi;
     return {ahead * clock.steps_per_phase, (ahead + 2 * alpha) * clock.steps_per_phase};
   }
   // J <= 0: the window is x <= first or x >= second.

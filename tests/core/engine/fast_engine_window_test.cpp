@@ -115,6 +115,103 @@ TEST_CASE("an orbit that never reaches the wall has no window, one that never le
 
 namespace {
 
+/// An orbit about the point w off the centre (a swarm that gravity holds against the wall):
+/// every sample of h + w at or beyond T must lie in off_centre_window_of's window. Counts too
+/// how many samples inside T each window holds open (each costs the scheduler checks), against
+/// the plain window for |h| >= T - |w| that a margin about the centre needs.
+struct OffCentreSearch {
+  long outward_crossings = 0, outside_samples = 0, missed = 0;
+  long open_early = 0, open_early_about_centre = 0;
+};
+
+OffCentreSearch search_off_centre(double k, double duration, double h, double speed) {
+  std::mt19937_64 rng(k > 0 ? 31 : k < 0 ? 32 : 33);
+  const double phase_per_time = k != 0 ? 2 * std::sqrt(std::abs(k)) : 1.0;
+  const fast::Spring spring{k, k != 0 ? 1 / std::sqrt(std::abs(k)) : 0.0};
+  const double T = 0.9;
+  OffCentreSearch out;
+  for (int n = 0; n < 60; ++n) {
+    const Vec3 a = random_vector(rng, 0.7), b = random_vector(rng, speed);
+    const Vec3 w = random_vector(rng, 0.3);
+    const double t0 = n % 4 == 0 ? 0.0 : 37.25 * n;
+    const fast::Window win =
+        fast::off_centre_window_of(a, b, w, spring, T * T, phase_per_time * t0);
+    const double inner = T - w.norm();
+    const fast::Window about_centre =
+        fast::window_of(a, b, spring, inner * inner, phase_per_time * t0);
+    double last_r2 = (a + w).squaredNorm();
+    for (long j = 0; j <= long(duration / h); ++j) {
+      const double tau = double(j) * h;
+      const Flow f = Flow::over(k, tau);
+      const double r2 = (f.c * a + f.s * b + w).squaredNorm();
+      const fast::Clock clock{k, phase_per_time, 1.0, t0 + tau};
+      const bool in_window = fast::span_of(win, clock).begin == 0;
+      if (r2 >= T * T) {
+        ++out.outside_samples;
+        if (!in_window) ++out.missed;
+        if (j > 0 && last_r2 < T * T) ++out.outward_crossings;
+      } else {
+        out.open_early += in_window;
+        out.open_early_about_centre += fast::span_of(about_centre, clock).begin == 0;
+      }
+      last_r2 = r2;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every wall crossing of an orbit about a point off the centre lies in its window") {
+  SUBCASE("J > 0") {
+    // Ellipses about w: many reach the wall at their end towards w only, so the window opens
+    // once a turn, and it is held open early much less than |h| >= T - |w| would be.
+    const OffCentreSearch s = search_off_centre(+1.0, 20.0, 2e-4, 1.0);
+    CHECK(s.outward_crossings > 60);
+    CHECK(s.outside_samples > 10000);
+    CHECK(s.missed == 0);
+    CHECK(s.open_early < 0.75 * double(s.open_early_about_centre));  // measured: 0.68
+  }
+  SUBCASE("J = 0") {
+    // Straight lines: the window is the exact one of a + w, open early by its rounding only.
+    const OffCentreSearch s = search_off_centre(0.0, 4.0, 5e-5, 1.0);
+    CHECK(s.outward_crossings > 20);
+    CHECK(s.missed == 0);
+    CHECK(s.open_early < 1e-3 * double(s.open_early_about_centre));
+  }
+  SUBCASE("J < 0") {
+    const OffCentreSearch s = search_off_centre(-1.0, 3.0, 5e-5, 1.5);
+    CHECK(s.outward_crossings > 20);
+    CHECK(s.missed == 0);
+  }
+}
+
+TEST_CASE("a thin orbit along its offset reaches the wall once a turn, one across it twice") {
+  const fast::Spring spring{1.0, 1.0};
+  const Vec3 w(0, 0, -0.3);
+  // x = 0.65 cos(theta) along w: |x + w| = 0.95 at theta = pi (T = 0.9), 0.35 at 0.
+  const fast::Window along =
+      fast::off_centre_window_of(Vec3(0, 0, 0.65), Vec3(1e-3, 0, 0), w, spring, 0.81, 0.0);
+  CHECK(along.second >= fast::kOnceATurn);
+  // The window: |0.65 cos(theta) - 0.3| >= 0.9, so cos(theta) <= -0.923 (the end towards w).
+  const double theta_edge = std::acos(-0.6 / 0.65);
+  for (double theta = 0; theta < 4 * M_PI; theta += 1e-3) {
+    const fast::Clock clock{1.0, 2.0, 1.0, theta};
+    const bool open = fast::span_of(along, clock).begin == 0;
+    const double c = std::cos(theta);
+    if (c <= -0.6 / 0.65) CHECK(open);
+    // Not open far from the end that reaches (the bound is loose by the ellipse's width).
+    if (std::abs(std::remainder(theta - M_PI, 2 * M_PI)) > M_PI - theta_edge + 0.05) CHECK(!open);
+  }
+  // Across w, both ends are sqrt(0.95^2 + 0.09) from the centre: twice a turn.
+  const fast::Window across =
+      fast::off_centre_window_of(Vec3(0.95, 0, 0), Vec3(0, 1e-3, 0), w, spring, 0.81, 0.0);
+  CHECK(across.second < M_PI);
+  CHECK(across.second >= 0);
+}
+
+namespace {
+
 /// Under drag gamma and for a floor at level L: walks the exact damped orbit from the window's
 /// making at tau0 (epoch time) on and counts the samples at or beyond the wall (|y| >= T), or
 /// at or below the level (y_z <= L), that lie outside their window: there must be none.
