@@ -77,6 +77,12 @@ constexpr std::size_t kSumBlock = 4096;
 // cheap enough that a step of a few dozen checks (the headline: about 40) loses nothing on two
 // threads; it no longer gains either (2.48 s on one thread, 2.54 s on two, 2026-11-27).
 constexpr std::size_t kParallelChecks = 1;
+// An off-centre anchor (under gravity) follows the CM's parabola for this many times 1 /
+// omega (J > 0), or steps (J = 0), and then gives way to a new one (OffsetFit): a longer horizon
+// needs a wider margin, a shorter one expires more anchors. Measured on the gravity benchmark
+// against 1 and 2 (bench/RESULTS.md).
+constexpr double kFitTimes = 1.5;
+constexpr double kFitSteps = 128;
 
 // [SECTION] State
 
@@ -158,6 +164,7 @@ class FastEngine final : public Engine {
     spring_ = {window_k_, window_k_ != 0 ? 1 / std::sqrt(std::abs(window_k_)) : 0.0, eta};
     phase_per_time_ = window_k_ != 0 ? 2 * std::sqrt(std::abs(window_k_)) : 1.0;
     checks_more_ = gamma_ > 0 || config.floor;
+    off_centre_anchors_ = forced_ && gamma_ == 0 && k_ >= 0;
     if (config.floor) floor_windows_.resize(initial.particles.size());
     motion_.R_cm = cm_position(initial);
     motion_.V_cm = cm_velocity(initial);
@@ -234,6 +241,7 @@ class FastEngine final : public Engine {
       schedule_all();
     else if (anchors_in_o1 &&
              ((k_ < 0 && step_ - anchors_.current().start >= kRepulsiveAnchorSteps) ||
+              step_ >= anchors_.current().renew_at ||
               anchors_.current().wants_renewal(anchors_.current().offset(motion_, d.f1, step_flow),
                                                radii.end)))
       next_anchor();
@@ -565,7 +573,21 @@ class FastEngine final : public Engine {
     next.start = step_;
     next.p = motion_.aY;
     next.q = motion_.bY;
-    const Vec3 offset = next.offset(motion_, flow_at(tau_), ForcedFlow{});
+    const ForcedFlow now = flow_at(tau_);
+    Vec3 offset = next.offset(motion_, now, ForcedFlow{});
+    fast::OffsetFit fit;
+    if (off_centre_anchors_) {
+      // The offset is R_cm now and, until the next kicks, moves as the CM does.
+      const double horizon = k_ > 0 ? kFitTimes / omega() : kFitSteps * dt_;
+      fit = fast::fit_offset_path(offset, motion_.V_cm, motion_.g, k_, horizon);
+      // The reference path less F: in the epoch's flow, F's coefficients are the inverse flow
+      // of (A, B) now.
+      const double det = now.xc * now.vs - now.vc * now.xs;
+      next.p -= (now.vs * fit.A - now.xs * fit.B) / det;
+      next.q -= (now.xc * fit.B - now.vc * fit.A) / det;
+      offset = fit.centre;
+      if (dt_ > 0) next.renew_at = step_ + StepIndex(horizon / dt_);
+    }
     double R = length(), wall_step = 0;
     if (path_ && dt_ > 0) {
       const double R_end = path_->radius_at(t_ + dt_);
@@ -578,6 +600,8 @@ class FastEngine final : public Engine {
                                     omega(),
                                     motion_.V_cm.norm(),
                                     config_.floor.has_value(),
+                                    off_centre_anchors_,
+                                    fit.residual,
                                     orbits_.size(),
                                     &gaps_};
     anchors_.make_current(fast::anchor_with_margin(next, offset, margin));
@@ -687,11 +711,14 @@ class FastEngine final : public Engine {
     Body& o = orbits_[i];
     if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, int(lane));
     const Anchor& current = anchors_.current();
+    const double phase_origin = phase_per_time_ * epoch_start_;
     o.window = !config_.container_radius ? fast::never_window(window_k_)
-               : current.threshold > 0
+               : current.threshold <= 0 ? fast::always_window(window_k_)
+               : current.centred()
                    ? fast::window_of(o.a - current.p, o.b - current.q, spring_, current.threshold2,
-                                     phase_per_time_ * epoch_start_, growth_)
-                   : fast::always_window(window_k_);
+                                     phase_origin, growth_)
+                   : fast::off_centre_window_of(o.a - current.p, o.b - current.q, current.centre,
+                                                spring_, current.threshold2, phase_origin);
     if (config_.floor)
       floor_windows_[i] = fast::floor_window_of(
           o.a.z() - current.p.z(), o.b.z() - current.q.z(), spring_,
@@ -700,14 +727,15 @@ class FastEngine final : public Engine {
   }
 
   /// The new windows of lane `index`'s hits from the `from`th on, all at once
-  /// (fast_engine_window_batch.h); one by one under drag, with a floor or without a wall, which
-  /// the batch does not know.
+  /// (fast_engine_window_batch.h); one by one under drag, with a floor, without a wall or in an
+  /// off-centre anchor, which the batch does not know.
   void make_windows(std::size_t index, std::size_t from) {
     Lane& lane = lanes_[index];
     const Hit* hits = lane.hits.data() + from;
     const std::size_t n = lane.hits.size() - from;
     const Anchor& current = anchors_.current();
-    if (current.threshold <= 0 || checks_more_ || !config_.container_radius) {
+    if (current.threshold <= 0 || checks_more_ || !config_.container_radius ||
+        !current.centred()) {
       for (std::size_t j = 0; j < n; ++j) make_window(hits[j].id, index);
       return;
     }
@@ -809,6 +837,10 @@ class FastEngine final : public Engine {
   double growth_ = 1;     // exp(gamma tau_): the windows' envelope now (fast_engine_window.h)
   fast::CoefficientSums sums_;  // under drag: for energy_at
   bool checks_more_ = false;    // a floor or drag: check_under_forces
+  // Under gravity (without drag, J >= 0) the anchors are made about the swarm's offset from
+  // the container's centre (fast_engine_anchor.h): J < 0 and drag keep centred ones, for
+  // which off_centre_window_of has no tighter window.
+  bool off_centre_anchors_ = false;
   double swarm_size_ = 0;       // the largest distance from the CM at the start
   std::vector<fast::Window> floor_windows_;  // with a floor: each particle's, as its window
   std::vector<Body> orbits_;

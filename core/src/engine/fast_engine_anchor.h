@@ -54,6 +54,13 @@ struct SharedMotion {
 /// step end where the wall's radius is R_end the offset must stay within margin - (R - R_end)
 /// (margin_at), so that |y_i - (xc p + xs q)| < R - margin still keeps a particle inside R_end.
 /// A wall moving out adds to what is left; one moving in eats it, and the anchor expires.
+///
+/// Under gravity the swarm sits well off the container's centre (|R_cm| about 0.3 R), and a
+/// margin about the centre would have to hold |R_cm| too, which leaves most windows open. An
+/// off-centre anchor is made about its offset when it starts, w (its centre): the margin bounds
+/// only the offset's drift from w, |offset - w| <= margin, and a particle can reach the wall
+/// only where |y_i - (xc p + xs q) + w| >= R - margin (off_centre_window_of). A centred anchor
+/// has w = 0.
 struct Anchor {
   std::uint8_t id = 0;                   ///< ids are 8 bits and wrap
   StepIndex start = 0;                   ///< the step in which it became current
@@ -61,24 +68,30 @@ struct Anchor {
   double radius = 0;                     ///< R, the wall's radius it was made for
   double threshold = 0, threshold2 = 0;  ///< T = R - margin and T^2: the windows' radius
   double renew_level = 0;  ///< while current: start a new anchor when the offset passes this
+  /// Off-centre: while current, start a new anchor from this step on (its fit's horizon ends).
+  StepIndex renew_at = std::numeric_limits<StepIndex>::max();
   /// With a floor: its windows assume that the offset's z stays at least floor_low, so that a
   /// particle can fall through only where its own z is below floor - floor_low; a new anchor
   /// starts when the offset's z drops below floor_renew. -infinity without a floor.
   double floor_low = -std::numeric_limits<double>::infinity();
   double floor_renew = -std::numeric_limits<double>::infinity();
   Vec3 p = Vec3::Zero(), q = Vec3::Zero();
+  Vec3 centre = Vec3::Zero();  ///< w: the offset the margin is about
 
+  bool centred() const { return centre == Vec3::Zero(); }
   /// Whether the schedules made in the anchor still hold with this offset at a step end where
   /// the wall's radius is R_end.
   bool holds(const Vec3& offset, double R_end) const {
     const double left = margin_at(R_end);
-    return left >= 0 && offset.squaredNorm() <= left * left && offset.z() >= floor_low;
+    return left >= 0 && (offset - centre).squaredNorm() <= left * left &&
+           offset.z() >= floor_low;
   }
   /// Whether a current anchor should give way to a new one at this offset and wall radius: a
   /// wall moving out only makes the windows too wide, which costs checks, so a wall's travel
   /// either way counts against renew_level.
   bool wants_renewal(const Vec3& offset, double R_end) const {
-    return offset.norm() + std::abs(radius - R_end) > renew_level || offset.z() < floor_renew;
+    return (offset - centre).norm() + std::abs(radius - R_end) > renew_level ||
+           offset.z() < floor_renew;
   }
 
   /// The anchor's offset o + xc p + xs q at a time u after the current time (f: the flow
@@ -86,7 +99,7 @@ struct Anchor {
   Vec3 offset(const SharedMotion& motion, const ForcedFlow& f, const ForcedFlow& ahead) const {
     return motion.offset_at(f, ahead) + f.xc * p + f.xs * q;
   }
-  /// How far the offset may be from the centre at a step end where the wall's radius is R_end.
+  /// How far the offset may be from w at a step end where the wall's radius is R_end.
   double margin_at(double R_end) const { return margin - (radius - R_end); }
 };
 
@@ -106,6 +119,22 @@ struct GapHistogram {
   }
 };
 
+/// How an off-centre anchor follows the swarm. Its offset moves with the CM (a parabola under
+/// gravity and the wall's steady push) and with the free oscillation its reference path leaves
+/// (Anchor): choosing that path, F(tau) = xc(tau) A + xs(tau) B less than Y's, makes the offset
+/// P(tau) - F(tau), P the CM's predicted path, which the fit keeps close to the constant centre
+/// over the horizon (least squares at a few times). residual: the largest distance left there.
+struct OffsetFit {
+  Vec3 centre = Vec3::Zero();
+  Vec3 A = Vec3::Zero(), B = Vec3::Zero();  ///< F and F' when the anchor starts
+  double residual = 0;                      ///< length
+};
+
+/// The fit for an offset now at `offset`, moving with velocity v and acceleration acc (k = J M
+/// >= 0, no drag), over `horizon` (time).
+OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, double k,
+                          double horizon);
+
 /// What a new anchor's margin depends on.
 struct MarginInputs {
   double R = 1;          ///< the wall's radius
@@ -114,11 +143,14 @@ struct MarginInputs {
   double omega = 0;      ///< sqrt|k|
   double cm_speed = 0;   ///< |V_cm|
   bool floor = false;    ///< whether the anchor also bounds the offset's z for a floor
+  bool off_centre = false;  ///< whether the anchor is made about its offset (Anchor)
+  double residual = 0;      ///< off-centre: OffsetFit::residual
   std::size_t particles = 0;
   const GapHistogram* gaps = nullptr;  ///< J > 0: from the last epoch's start
 };
 
-/// An anchor whose offset is `offset` now. Its margin covers that, the drift of the CM over a
+/// An anchor whose offset is `offset` now. Its margin covers that (an off-centre anchor is
+/// made about it instead: its centre), the drift of the CM over a
 /// few time units, a moving wall's travel over a few hundred steps, and, when few particles can
 /// come near the wall (the attractive expansion's later stages), as much more as leaves at most
 /// N / 100 of them within reach: a wide margin then costs little and lets the anchor live long.
