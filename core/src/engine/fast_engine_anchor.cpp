@@ -15,7 +15,7 @@ constexpr double kMarginFloor = 0.004;
 constexpr double kMarginDriftTimes = 4;
 // An off-centre anchor's margin beyond its fit's residual (OffsetFit), for what the fit cannot
 // foresee: the unsteady part of the wall's kicks. Measured on the gravity benchmark
-// (bench/RESULTS.md) against slacks of 0.02 to 0.1 and the residual counted once to twice.
+// (bench/RESULTS.md) against slacks of 0.005 to 0.1 and the residual counted once or twice.
 constexpr double kFitResidualTimes = 2;
 constexpr double kFitSlack = 0.035;
 // At most N / kShellBudget particles within reach of a widened margin (J > 0).
@@ -46,7 +46,7 @@ OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, do
     P[std::size_t(j)] = offset + tau * v + (0.5 * tau * tau) * acc;
   }
   const bool oscillates = k > 0;
-  double G[3][3] = {}, det = 0;
+  double G[3][3] = {};
   Vec3 rhs[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
   for (std::size_t j = 0; j < kSamples; ++j) {
     const double phi[3] = {1, oscillates ? u[j] : 0.0, s[j]};
@@ -62,7 +62,7 @@ OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, do
            m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
   };
-  det = det3(G);
+  const double det = det3(G);
   if (!(std::abs(det) > 0)) return fit;
   Vec3 coef[3];
   for (int col = 0; col < 3; ++col) {

@@ -55,12 +55,13 @@ struct SharedMotion {
 /// (margin_at), so that |y_i - (xc p + xs q)| < R - margin still keeps a particle inside R_end.
 /// A wall moving out adds to what is left; one moving in eats it, and the anchor expires.
 ///
-/// Under gravity the swarm sits well off the container's centre (|R_cm| about 0.3 R), and a
+/// Under gravity the swarm sits well off the container's centre (|R_cm| 0.1 to 0.5 R), and a
 /// margin about the centre would have to hold |R_cm| too, which leaves most windows open. An
-/// off-centre anchor is made about its offset when it starts, w (its centre): the margin bounds
+/// off-centre anchor is made about a point w (its centre) near its offset: the margin bounds
 /// only the offset's drift from w, |offset - w| <= margin, and a particle can reach the wall
-/// only where |y_i - (xc p + xs q) + w| >= R - margin (off_centre_window_of). A centred anchor
-/// has w = 0.
+/// only where |y_i - (xc p + xs q) + w| >= R - margin (off_centre_window_of). Its p, q also
+/// take in a free oscillation that keeps the offset near w while the CM falls (OffsetFit). A
+/// centred anchor has w = 0.
 struct Anchor {
   std::uint8_t id = 0;                   ///< ids are 8 bits and wrap
   StepIndex start = 0;                   ///< the step in which it became current
