@@ -33,8 +33,9 @@ trap stop_load EXIT
 # The page is built before the load starts: the soak is of the tests, not of the compiler.
 [ $build -eq 0 ] || (cd build && ctest -R '^web_prepare$' --output-on-failure >/dev/null) ||
   { echo "soak.sh: the page did not build" >&2; exit 1; }
+# Without a build, the page's fixture (web, set up by web_prepare) is not run either.
 fixtures=()
-[ $build -eq 1 ] || fixtures=(-FS web_prepare)
+[ $build -eq 1 ] || fixtures=(-FS web)
 if [ $load -eq 1 ]; then
   for _ in 1 2; do (while :; do :; done) & busy+=($!); done
 fi

@@ -107,11 +107,17 @@
     });
   }
 
-  var first = window.Module && Module.onFirstFrame;
-  if (window.Module) Module.onFirstFrame = function () {
-    if (first) first.apply(this, arguments);
+  function appStarted() {
     started = true;
     if (pendingNotice) notice(pendingNotice);
     try { register(); } catch (e) { /* online only */ }
+  }
+  var first = window.Module && Module.onFirstFrame;
+  if (window.Module) Module.onFirstFrame = function () {
+    if (first) first.apply(this, arguments);
+    appStarted();
   };
+  // The app's script loads beside this one (shell.html starts it first): on a slow or busy
+  // machine its first frame may come before this script does.
+  if (window.swarmlab && window.swarmlab.firstFrameMs !== null) appStarted();
 })();

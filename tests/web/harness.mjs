@@ -311,7 +311,16 @@ export async function launchBrowser({ width = 1280, height = 720, hasTouch = fal
  *  `serve`: how build/web is served (Python's http.server; startWebServer for the real one). */
 export async function runSuite(name, overallMs, main, { serve = startServer } = {}) {
   const watchdog = setTimeout(async () => {
-    check(`whole ${name} run within ${overallMs / 1000} s`, false, 'timed out');
+    // Where the app stood when time ran out (a page that still answers within 3 s), and a picture.
+    const page = context?.pages().at(-1);
+    const stood = page ? await Promise.race([page.evaluate(() => {
+      const s = window.swarmlab.state();
+      return `asleep ${window.swarmlab.sleeping()}, ${window.swarmlab.frames()} loop iterations, ` +
+             `display ${s.display.width}x${s.display.height} (window ${innerWidth}x${innerHeight}), ` +
+             `layout ${s.layout} settled ${s.layout_settled}, playing ${s.playing}, t = ${s.t}`;
+    }).catch((e) => 'the page did not answer: ' + e.message.split('\n')[0]), sleep(3000).then(() => 'the page did not answer in 3 s')]) : 'no page';
+    await page?.screenshot({ path: join(outDir, `${name}-timed-out.png`), timeout: 5000 }).catch(() => {});
+    check(`whole ${name} run within ${overallMs / 1000} s`, false, `timed out; ${stood}`);
     await Promise.race([cleanup(), sleep(3000)]);
     finish();
   }, overallMs);

@@ -114,9 +114,21 @@ async function main(url) {
   await setHidden(page, false);
   const quiet = await page.evaluate(() => document.getElementById('notice').hidden);
   check('and nothing is said when it comes back', quiet);
+
+  // 6. Paused by a keyboard user, the focus on an item of the page (the parallel DOM, whose
+  // focus and blur events wake the loop): once settled, the loop sleeps there too.
+  const keys = person(page, 'keyboard');
+  await keys.press('button', /Pause/);
+  const focusedItem = await page.evaluate(() => !!document.activeElement?.closest('#parallel-dom'));
+  const asleep = await until(page, () => !window.swarmlab.state().playing && window.swarmlab.sleeping());
+  const i0 = await page.evaluate(() => window.swarmlab.frames());
+  await sleep(3000);
+  const i1 = await page.evaluate(() => window.swarmlab.frames());
+  check('paused from the keyboard, the focus on a mirrored item, the loop sleeps', focusedItem && asleep && i1 === i0,
+        `focus on a mirrored item: ${focusedItem}, asleep ${asleep}, ${i1 - i0} loop iterations in 3 s`);
   await closeBrowser();
 
-  // 6. A slow device: the CPU slowed by CDP to well under 10 frames a second. The run keeps its
+  // 7. A slow device: the CPU slowed by CDP to well under 10 frames a second. The run keeps its
   // set speed (the simulated time over the page's own time, within 10 %), or says it cannot.
   await launchBrowser({ width: 390, height: 844, hasTouch: true, isMobile: true });
   const gas = base64url(Buffer.from(JSON.stringify(shipped('hot-wall.json'))));
