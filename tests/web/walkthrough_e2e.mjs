@@ -74,7 +74,16 @@ async function walk(url, name) {
   const { page, started, error } = await openApp(url + '?welcome', `walk-${name}`, listenToLiveRegion);
   if (!check(`${name}: the app starts`, started, error || '')) return;
   const me = person(page, device.touch ? 'touch' : 'keyboard');
-  // Timed, so that the log says what the screenshots cost of the walk.
+  // Where the walk's time goes (the log says it at the end): presses, typing, screenshots.
+  const spent = { press: { count: 0, ms: 0 }, type: { count: 0, ms: 0 } };
+  for (const act of Object.keys(spent)) {
+    const doIt = me[act];
+    me[act] = async (...args) => {
+      const start = Date.now();
+      try { return await doIt(...args); } finally { spent[act].count += 1; spent[act].ms += Date.now() - start; }
+    };
+  }
+  const walkStart = Date.now();
   const shots_taken = { count: 0, ms: 0 };
   const shot = async (file) => {
     const start = Date.now();
@@ -111,7 +120,10 @@ async function walk(url, name) {
     if (l + 1 < lessons.length) await me.press('button', `Next lesson: ${lessons[l + 1].title}`);
   }
   check(`${name}: every lesson walked to its summary`, summaries === lessons.length,
-        `${summaries} of ${lessons.length}; ${shots_taken.count} screenshots took ${(shots_taken.ms / 1000).toFixed(1)} s`);
+        `${summaries} of ${lessons.length}; of ${((Date.now() - walkStart) / 1000).toFixed(0)} s, ` +
+        `${spent.press.count} presses took ${(spent.press.ms / 1000).toFixed(1)} s, ` +
+        `${spent.type.count} typed answers ${(spent.type.ms / 1000).toFixed(1)} s, ` +
+        `${shots_taken.count} screenshots ${(shots_taken.ms / 1000).toFixed(1)} s`);
   await checkTranscript(page, name);
   checkLessonText(domText, name);
 }
