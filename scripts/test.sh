@@ -26,6 +26,10 @@ esac
 # Each stage's row of the table goes to a file, so that stages run in a background lane count.
 rows=$(mktemp)
 t_all=$(date +%s)
+# The machine's CPU time, busy and all (/proc/stat's first line: user nice system idle iowait
+# irq softirq steal, in clock ticks), so that the table says how much of both cores the run used.
+cpu_ticks() { awk '/^cpu /{print $2+$3+$4+$7+$8+$9, $2+$3+$4+$5+$6+$7+$8+$9}' /proc/stat; }
+cpu_start=$(cpu_ticks)
 # stage NAME COMMAND...: runs it, times it, records ok or FAILED.
 stage() {
   local name=$1 t0 result
@@ -42,6 +46,9 @@ table() {
   echo "== stages ($([ $quick -eq 1 ] && echo quick || echo full))"
   cat "$rows"
   printf '%-66s %6ss  %s\n' "total" "$(( $(date +%s) - t_all ))" "$(failed && echo FAILED || echo ok)"
+  read -r busy0 all0 <<<"$cpu_start"
+  read -r busy1 all1 <<<"$(cpu_ticks)"
+  [ "$all1" -gt "$all0" ] && echo "the machine's $(nproc) cores were $(( 100 * (busy1 - busy0) / (all1 - all0) )) % busy over the run (everything on it, /proc/stat)"
   rm -f "$rows"
 }
 trap table EXIT
