@@ -38,7 +38,7 @@ TEST_CASE("the batched windows are window_of's to the last bit, for every J") {
     for (const double T : {1e-3, 0.5, 0.987, 30.0}) {
       for (const double origin : {0.0, 17.25, 4.0e5}) {
         std::vector<Vec3> a, b;
-        const std::size_t n = 1003;  // not a multiple of 4: the tail goes one by one
+        const std::size_t n = 1003;  // not a multiple of 4: the tail goes padded
         random_orbits(rng, n, a, b);
         std::vector<fast::Window> batch(n);
         fast::windows_of(a.data(), b.data(), n, spring, T * T, origin, batch.data());
