@@ -4,9 +4,9 @@
 #                            Emscripten, then the doctest suite natively and under node, the CLI
 #                            as a process, the desktop window under Xvfb, native == wasm, the
 #                            browser suites, Lighthouse and axe-core and the walkthroughs in
-#                            headless Chromium, and a minute of fuzzing. About 33 minutes on a
-#                            fresh clone of a 2-core machine (2002 s, 2026-11-27, before SDL2
-#                            for wasm lost its configure step).
+#                            headless Chromium, and a minute of fuzzing. About 32 minutes on a
+#                            fresh clone of a 2-core machine (1903 s, 2026-11-27), nearly all of
+#                            it with both cores busy.
 #   scripts/test.sh --quick  before a commit: the doctest suite, the CLI tests and one browser
 #                            smoke test, under 3 minutes once built.
 # Installs what is missing first. Each stage runs through ctest's labels (unit, cli, desktop,
@@ -63,18 +63,21 @@ build "packages (scripts/deps.sh)" scripts/deps.sh native desktop web webtest fu
 # The wasm doctest suite and the CLI for node, in build-wasm (which the page's build made), one
 # build there at a time (scripts/web.sh takes the same lock).
 wasm_tests_build() {
-  flock build/.web-build.lock cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab
+  flock build/.web-build.lock nice -n 10 cmake --build build-wasm -j"$(nproc)" --target swarm_tests swarmlab
 }
 
 # Two lanes from the start, each building what it needs and then testing it, so that one
 # lane's single-threaded stretches (configuring, linking, emcc's wasm link, a page waiting on
-# its frames) are filled by the other's work:
-#   native: the native build, the doctest, CLI and desktop tests, fuzzing (its own build),
-#           then, once the page is built, the wasm doctest suite and the CLI for node (built
-#           beside the browser suites), the doctest suite under node and native == wasm;
+# its frames) are filled by the other's work. The wasm lane is the long one (its page build,
+# then the browser, which needs both cores for a page and its GPU process): the native lane's
+# builds and fuzzing run niced beside it, so that they take what it leaves.
+#   native: the native build, the doctest, CLI and desktop tests, then, once the page is built,
+#           the wasm doctest suite and the CLI for node (built beside the browser suites), the
+#           doctest suite under node, native == wasm, fuzzing (its own build), and Lighthouse
+#           and axe-core on the page (not a timing check: beside a browser suite is fine);
 #   wasm:   SDL2 for wasm and the page (build/web, and playwright-core: the browser suites'
 #           fixture), then, once the native build is done (ctest runs from build/), the browser
-#           suites one at a time, the audit and the walkthroughs two at a time. The browser suites' timing
+#           suites one at a time and the walkthroughs two at a time. The browser suites' timing
 #           limits leave room for a loaded machine (two busy loops: scripts/soak.sh), not for
 #           three pages at once: they never run beside the walkthroughs.
 # A lane waits for the other's build through a file in build/test-logs that says how it ended.
@@ -91,9 +94,8 @@ await() {
 # The browser tests without their fixture (the wasm lane prepared it as its build).
 browser_ctest() { native_ctest -E '^web_prepare$' -FA '.*' "$@"; }
 native_lane() {
-  if stage "native build" scripts/build.sh; then built native ok; else built native failed; return 1; fi
+  if stage "native build" nice -n 10 scripts/build.sh; then built native ok; else built native failed; return 1; fi
   stage "doctest, CLI, desktop window (ctest -L 'unit|cli|desktop')" native_ctest -L 'unit|cli|desktop' -j2
-  stage "fuzzing, a minute (ctest -L fuzz)" native_ctest -L fuzz
   await wasm || return 1
   stage "wasm build: the doctest suite and the CLI for node" wasm_tests_build || return 1
   stage "doctest suite under node (ctest in build-wasm)" bash -c 'cd build-wasm && ctest --output-on-failure'
@@ -101,6 +103,10 @@ native_lane() {
     build/app/swarmlab build-wasm/app/swarmlab.js \
     tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
     assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
+  stage "fuzzing, a minute (scripts/fuzz.sh, ctest -L fuzz)" nice -n 10 scripts/fuzz.sh 60
+  # What ctest's web_audit runs, outside ctest: the wasm lane's ctest runs in build/ meanwhile.
+  stage "Lighthouse and axe-core on the page (node tests/web/audit.mjs, ctest -L audit)" \
+    nice -n 10 node tests/web/audit.mjs
 }
 wasm_lane() {
   if stage "wasm build: SDL2 for wasm, the page (tests/web/run.sh --prepare)" tests/web/run.sh --prepare
@@ -108,7 +114,6 @@ wasm_lane() {
   else built wasm failed; return 1; fi
   await native || return 1
   stage "browser suites, one at a time (ctest -L web)" browser_ctest -L web
-  stage "Lighthouse and axe-core on the page (ctest -L audit)" browser_ctest -L audit
   stage "walkthroughs: every lesson on four devices, two at a time (ctest -L walkthrough)" \
     browser_ctest -L walkthrough -j2
 }

@@ -16,6 +16,7 @@
 #include <emscripten.h>
 #include <emscripten/html5.h>
 
+#include "frame_sleep.h"
 #include "ui/gl_context_life.h"
 
 namespace {
@@ -37,6 +38,7 @@ EM_BOOL on_restored(int, const void*, void* frontend) {
   if (lost) {
     swarmlab::create_gl_objects(*static_cast<swarmlab::Frontend*>(frontend));
     lost = false;
+    swarmlab::wake_frames(*static_cast<swarmlab::Frontend*>(frontend));
     EM_ASM({
       if (Module.onContextRestored) Module.onContextRestored();
     });

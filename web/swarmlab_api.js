@@ -56,8 +56,10 @@
 //                          fragment, copied, put in the address bar and shown
 //   swarmlab.welcomeShown() whether the welcome window is showing
 //   swarmlab.ready         Promise resolved once main() has started (and a start link is open)
-//   swarmlab.frames()      frames the main loop has run (requestAnimationFrame callbacks, drawn
-//                          or idle: state().frames_drawn counts the drawn ones)
+//   swarmlab.frames()      iterations the main loop has run (drawn or not: state().frames_drawn
+//                          counts the drawn ones); none while it sleeps
+//   swarmlab.sleeping()    whether the main loop sleeps: nothing changes until an input, a call
+//                          or a caret's blink (web/frame_sleep.h), so what is shown is settled
 //   swarmlab.firstFrameMs  performance.now() at the end of the first frame, or null
 //   swarmlab.lastMessage   the last message shown on the page: { kind, text } or null
 // A page that opens with a share link starts its preset (decoded before main() runs). A link
@@ -307,6 +309,7 @@
     firstFrameMs: null,
     lastMessage: null,
     frames: function () { return frames; },
+    sleeping: function () { return Module.swarmlabSleeping(); },
     time: function () { check(); return Module.ccall('swarmlab_time', 'number', [], []); },
     state: function () { check(); return JSON.parse(Module.ccall('swarmlab_state', 'string', [], [])); },
     seek: function (t, options) {
@@ -528,25 +531,18 @@
     });
   }
 
-  // Count main-loop frames: emscripten_set_main_loop(..., fps = 0, ...) runs on requestAnimationFrame.
-  if (typeof window !== 'undefined' && window.requestAnimationFrame) {
-    var raf = window.requestAnimationFrame.bind(window);
-    window.requestAnimationFrame = function (callback) {
-      return raf(function (t) {
-        callback(t);
-        if (runtimeInitialized) {
-          frames++;
-          // After a frame the app drew (web_main.cpp): an idle one changed nothing to follow.
-          if (Module.swarmlabDrew) (Module.swarmlabEachFrame || []).forEach(function (f) { f(); });
-          Module.swarmlabDrew = false;
-          if (api.firstFrameMs === null) {
-            api.firstFrameMs = performance.now();
-            if (Module.onFirstFrame) Module.onFirstFrame(api.firstFrameMs);
-          }
-        }
-      });
-    };
-  }
+  // After each iteration of the main loop (Emscripten's hook around it).
+  Module.postMainLoop = function () {
+    if (!runtimeInitialized) return;
+    frames++;
+    // After a frame the app drew (web_main.cpp): one that was not drawn changed nothing to follow.
+    if (Module.swarmlabDrew) (Module.swarmlabEachFrame || []).forEach(function (f) { f(); });
+    Module.swarmlabDrew = false;
+    if (api.firstFrameMs === null) {
+      api.firstFrameMs = performance.now();
+      if (Module.onFirstFrame) Module.onFirstFrame(api.firstFrameMs);
+    }
+  };
   if (typeof window !== 'undefined') window.swarmlab = api;
   Module.swarmlab = api;
 })();

@@ -1,6 +1,7 @@
 // The browser entry of Swarm Lab: the desktop's window, App and frame loop (app/desktop) with
-// the browser's preset store and storage buttons, driven by requestAnimationFrame; and the
-// page's side of that loop: its wake-up and a hidden tab.
+// the browser's preset store and storage buttons, driven by requestAnimationFrame and asleep
+// while nothing changes (frame_sleep.h); and the page's side of that loop: its wake-up and a
+// hidden tab.
 
 #include <emscripten.h>
 
@@ -9,6 +10,7 @@
 
 #include "context_loss.h"
 #include "finger_times.h"
+#include "frame_sleep.h"
 #include "lessons/lesson_file.h"
 #include "ui/classroom/presentation.h"
 #include "ui/main_loop.h"
@@ -29,7 +31,7 @@ extern "C" {
 
 /// The page changed something the app shows (web/swarmlab_api.js calls this after every call
 /// that is not a question, a file or font that arrived): the idle frame loop draws again.
-EMSCRIPTEN_KEEPALIVE void swarmlab_wake() { frontend.demand.wake(); }
+EMSCRIPTEN_KEEPALIVE void swarmlab_wake() { swarmlab::wake_frames(frontend); }
 
 /// The page was hidden (1) or shown (0): returns 1 when the run was paused while it was hidden
 /// (the page then says so). A run kept going in a hidden tab is driven by a timer, since the
@@ -42,7 +44,7 @@ EMSCRIPTEN_KEEPALIVE int swarmlab_page_hidden(int hidden) {
     emscripten_set_main_loop_timing(EM_TIMING_SETTIMEOUT, 250);
   else
     emscripten_set_main_loop_timing(EM_TIMING_RAF, 1);
-  frontend.demand.wake();
+  swarmlab::wake_frames(frontend);
   return paused ? 1 : 0;
 }
 
@@ -79,13 +81,18 @@ int main() {
   // fps = 0: one frame per requestAnimationFrame; never returns (main's stack frame stays).
   // Scenario > Quit stops the frames, and the page offers to start again.
   emscripten_set_main_loop_arg(
-      [](void* f) {
+      [](void* p) {
+        swarmlab::Frontend& f = *static_cast<swarmlab::Frontend*>(p);
+        swarmlab::after_sleep(f);
         if (swarmlab::context_lost()) return;  // nothing can be drawn: the run waits
-        // Paused and still, a frame only asks whether anything changed (frame_demand.h).
-        if (!swarmlab::frame_wanted(*static_cast<swarmlab::Frontend*>(f))) return;
+        // Paused and still, the loop sleeps until something changes (frame_demand.h).
+        if (!swarmlab::frame_wanted(f)) {
+          swarmlab::sleep_frames(f);
+          return;
+        }
         // The page follows a drawn frame (the parallel DOM, a seek's progress), not an idle one.
         EM_ASM({ Module.swarmlabDrew = true; });
-        if (!swarmlab::run_frame(*static_cast<swarmlab::Frontend*>(f))) {
+        if (!swarmlab::run_frame(f)) {
           emscripten_cancel_main_loop();
           EM_ASM({
             if (Module.onQuit) Module.onQuit();

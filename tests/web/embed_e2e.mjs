@@ -85,13 +85,20 @@ const menuItems = (frame) => frame.evaluate(() =>
   [...document.querySelectorAll('#parallel-dom [role="menuitem"], #parallel-dom [role="menuitemcheckbox"]')]
     .map((e) => e.getAttribute('aria-label') || e.textContent));
 
+// The app's loop goes on: n more frames, or it sleeps with nothing left to change.
 async function framesAdvance(frame, n = 3, timeoutMs = 20_000) {
   const f1 = await frame.evaluate(() => window.swarmlab.frames());
-  return frame.waitForFunction((t) => window.swarmlab.frames() >= t, f1 + n, { timeout: timeoutMs }).then(() => true, () => false);
+  return frame.waitForFunction((t) => window.swarmlab.frames() >= t || window.swarmlab.sleeping(), f1 + n, { timeout: timeoutMs })
+    .then(() => true, () => false);
 }
 
 async function shoot(page, frame, file) {
-  await framesAdvance(frame);  // the app has drawn at the new size
+  // The app has laid itself out at the frame's size, and drawn since.
+  await frame.waitForFunction(() => {
+    const d = window.swarmlab.state().display;
+    return Math.abs(d.width - window.innerWidth) <= 1 && Math.abs(d.height - window.innerHeight) <= 1;
+  }, null, { timeout: 20_000 }).catch(() => {});
+  await framesAdvance(frame);
   const png = await page.screenshot({ path: join(outDir, file) });
   const img = await analysePng(png);
   console.log(`      ${file} ${img.width}x${img.height}: ${img.distinct} colours -> build/web-test/${file}`);

@@ -44,11 +44,11 @@ async function until(page, fn, arg = null) {
   return appState(page);
 }
 // The app has laid the canvas out at W x H, the layout holds, and the page's mirror has
-// followed two frames drawn since (the items' rectangles are the settled ones).
+// followed two frames drawn since, or the loop sleeps (the items' rectangles are the settled ones).
 async function settled(page, W, H) {
   const s = await until(page, (st, a) => st.display.width === a.W && st.display.height === a.H && st.layout_settled, { W, H });
   const f = await page.evaluate(() => window.swarmlab.frames());
-  await page.waitForFunction((t) => window.swarmlab.frames() >= t, f + 2, { timeout: 20_000 }).catch(() => {});
+  await page.waitForFunction((t) => window.swarmlab.frames() >= t || window.swarmlab.sleeping(), f + 2, { timeout: 20_000 }).catch(() => {});
   return s;
 }
 

@@ -141,12 +141,21 @@ async function main() {
                                                   null, { timeout: 30_000 }).then(() => true, () => false);
     if (!check('the first visit starts the app', firstFrame && !(await page.evaluate(() => window.swarmlabError)))) return;
     const t0 = Date.now();
+    // The worker fetches every file of the version before it takes over, at the browser's
+    // background priority: on a loaded machine that may take a minute.
     const controlled = await page.waitForFunction(() => navigator.serviceWorker.controller !== null &&
-                                                  window.swarmlabOffline.version !== null, null, { timeout: 30_000 })
+                                                  window.swarmlabOffline.version !== null, null, { timeout: 90_000 })
       .then(() => true, () => false);
     let st = await offlineState(page);
+    // Where it stood, if it did not take over: the registration's workers and what was fetched.
+    const worker = controlled ? '' : await page.evaluate(async () => {
+      const reg = await navigator.serviceWorker.getRegistration();
+      if (!reg) return 'no registration';
+      return ['installing', 'waiting', 'active'].map((k) => `${k} ${reg[k] ? reg[k].state : '-'}`).join(', ');
+    }).catch((e) => String(e));
     check('a service worker controls the page after the first visit', controlled,
-          `version ${st.version}, after ${Date.now() - t0} ms`);
+          `version ${st.version}, after ${Date.now() - t0} ms` +
+          (controlled ? '' : `; ${worker}; served ${site.served.length} files, service_worker.js ${site.served.includes('service_worker.js') ? 'fetched' : 'never fetched'}`));
     const v1 = st.version;
     check('online, the page does not say it is offline', st.offline === false && st.onLine === true);
     const probe = await page.evaluate((p) => fetch(p).then((r) => r.text()), PROBE);

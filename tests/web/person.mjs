@@ -63,9 +63,9 @@ export function person(page, way) {
     throw new Error('could not scroll to ' + (await el.evaluate((e) => e.textContent || e.getAttribute('aria-label'))));
   }
 
-  /** The item's box once it has held still between two frames the app drew (as Playwright
-   *  waits before a click): a panel scrolls new feedback into view on the frame after it
-   *  appears, moving the buttons below it. */
+  /** The item's box once it has held still between two frames of the app's loop, or while the
+   *  loop sleeps (nothing changes until an input), as Playwright waits before a click: a panel
+   *  scrolls new feedback into view on the frame after it appears, moving the buttons below. */
   async function still(el) {
     const handle = await el.elementHandle();
     await page.waitForFunction((e) => {
@@ -74,7 +74,7 @@ export function person(page, way) {
       const frame = window.swarmlab.frames();
       const last = e.stillSeen;
       if (!last || last.place !== place) e.stillSeen = { place, frame };
-      return last && last.place === place && frame > last.frame;
+      return last && last.place === place && (frame > last.frame || window.swarmlab.sleeping());
     }, handle, { timeout: 20_000 });
     return box(el);
   }

@@ -193,8 +193,12 @@ async function answer(page, me, task, where, lesson) {
     await openTab(me, 'Plots');
     await me.type('average over', String(task.window ?? 0.5));
     await openTab(me, 'Read-outs');
-    // Paused on the step before: play a moment, as the step asks to watch them change.
+    // Paused on the step before: play until the read-outs show P and T (the wall's first
+    // samples), as the step asks to watch them change.
     if (!(await me.find('button', /Pause/).count())) await me.press('button', /Play/);
+    for (const symbol of ['P', 'T'])
+      await me.dom.locator('p', { hasText: new RegExp(`^${symbol} = [-+]?[0-9]`) }).first()
+        .waitFor({ state: 'attached', timeout: 60_000 });
     await pauseAndListen(page, me, where);
   }
   await openTab(me, 'Read-outs');
