@@ -100,11 +100,24 @@ struct StepData {
 /// wall's tally takes the hit and dv is its velocity change. Says whether it hit. The wall
 /// (fast_engine_wall.h) says where it is, whether the particle leaves and what the hit does:
 /// outside(r1), leaving(r0, v0), hit(m, r0, v0, id, tally) -> dv.
+/// The test of the predicted position, which most checks end with, is inlined into the
+/// caller's loop; the rest (reflect_leaving) is not, so that the loop stays small.
+template <class Wall>
+bool reflect_leaving(Body& o, std::uint32_t id, const StepData& d, const Wall& wall,
+                     WallTally& tally, Vec3& dv);
+
 template <class Wall>
 inline bool reflect_if_leaving(Body& o, std::uint32_t id, const StepData& d, const Wall& wall,
                                WallTally& tally, Vec3& dv) {
   const Vec3 r1 = d.f1.xc * o.a + d.f1.xs * o.b + d.o1;
   if (!wall.outside(r1)) return false;
+  return reflect_leaving(o, id, d, wall, tally, dv);
+}
+
+/// reflect_if_leaving once the particle is predicted outside: the hit if it is leaving now.
+template <class Wall>
+[[gnu::noinline]] bool reflect_leaving(Body& o, std::uint32_t id, const StepData& d,
+                                       const Wall& wall, WallTally& tally, Vec3& dv) {
   const Vec3 r0 = d.f0.xc * o.a + d.f0.xs * o.b + d.o0;
   const Vec3 v0 = d.f0.vc * o.a + d.f0.vs * o.b + d.o0v;
   if (!wall.leaving(r0, v0)) return false;

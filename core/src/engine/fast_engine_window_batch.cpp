@@ -1,5 +1,6 @@
 #include "engine/fast_engine_window_batch.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 
@@ -145,7 +146,21 @@ void windows_of(const Vec3* a, const Vec3* b, std::size_t n, const Spring& sprin
         if (special & (1 << l))
           out[j + l] = window_of(a[j + l], b[j + l], spring, T2, phase_origin);
     }
-    windows_one_by_one(a + j, b + j, n - j, spring, T2, phase_origin, out + j);
+    if (j == n) return;
+    // The last one to three go four at a time as well, padded with copies of the last (each
+    // lane is computed on its own, so the padding changes nothing): a step's hits come in
+    // chunks of a few dozen, and window_of one by one costs about four lanes.
+    const std::size_t tail = n - j;
+    Vec3 ta[4], tb[4];
+    Window tw[4];
+    for (std::size_t l = 0; l < 4; ++l) {
+      ta[l] = a[j + std::min(l, tail - 1)];
+      tb[l] = b[j + std::min(l, tail - 1)];
+    }
+    int special = 0;
+    repulsive4(ta, tb, spring.inv_omega, T2, phase_origin, rounding, tw, special);
+    for (std::size_t l = 0; l < tail; ++l)
+      out[j + l] = special & (1 << l) ? window_of(ta[l], tb[l], spring, T2, phase_origin) : tw[l];
     return;
   }
 #endif
