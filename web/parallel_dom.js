@@ -239,6 +239,9 @@
     // Plain text cut off (no item's label): for the layout test (tests/web/layout_e2e.mjs).
     Module.swarmlabCutText = frame.cut_text || [];
     if (!root) makeRoot();
+    // The reading order before this frame: where the focus goes if its item goes away (placing
+    // this frame's items moves the others around the focused one, which then stands last).
+    var before = Array.prototype.slice.call(root.querySelectorAll('button, input'));
     // previous: container -> what was placed in it last; counts: how many groups of a kind a
     // container has had this frame (their keys).
     var seenText = new Map(), alive = new Set(), previous = new Map(), counts = new Map(), used = new Set();
@@ -284,10 +287,9 @@
       if (el === document.activeElement) {
         // The focus stays where it was in the reading order: on the next item one can focus
         // (a pressed Predict button gives way to the feedback; Tab goes on from there).
-        var all = Array.prototype.slice.call(root.querySelectorAll('button, input'));
-        var at = all.indexOf(el), next = null;
-        for (var i = at + 1; i < all.length && !next; ++i) if (alive.has(all[i].swarmlabKey)) next = all[i];
-        for (var j = at - 1; j >= 0 && !next; --j) if (alive.has(all[j].swarmlabKey)) next = all[j];
+        var at = before.indexOf(el), next = null;
+        for (var i = at + 1; i < before.length && !next; ++i) if (alive.has(before[i].swarmlabKey)) next = before[i];
+        for (var j = at - 1; j >= 0 && !next; --j) if (alive.has(before[j].swarmlabKey)) next = before[j];
         if (next && byKeyboard) next.focus(); else document.getElementById('canvas').focus();
       }
       (el.swarmlabHolder || el).remove();

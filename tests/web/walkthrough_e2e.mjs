@@ -187,14 +187,18 @@ async function checkTranscript(page, name) {
 async function answer(page, me, task, where, lesson) {
   const letter = (i) => String.fromCharCode(65 + i);
   if (task.kind === 'predict') {
+    const region = await regionOf(me.find('button', new RegExp(`^Predict ${letter(0)}: `)));
     await me.press('button', new RegExp(`^Predict ${letter(0)}: `));
     check(`${where}: a prediction is recorded and compared`, await feedbackSays(me, 'Your prediction:'));
+    await focusStays(page, me, region, where);
     return;
   }
   if (task.kind === 'choice') {
     const wrong = task.answer === 0 ? 1 : 0;
+    const region = await regionOf(me.find('button', new RegExp(`^Pick ${letter(wrong)}: `)));
     await me.press('button', new RegExp(`^Pick ${letter(wrong)}: `));
     check(`${where}: a wrong choice is marked wrong`, await feedbackSays(me, task.feedback ? task.feedback[wrong] : 'Not'));
+    await focusStays(page, me, region, where);
     await me.press('button', new RegExp(`^Pick ${letter(task.answer)}: `));
     check(`${where}: the right choice is marked right`, await feedbackSays(me, task.feedback ? task.feedback[task.answer] : 'Right'));
     return;
@@ -221,6 +225,19 @@ async function answer(page, me, task, where, lesson) {
   check(`${where}: a wrong number is marked wrong`, await feedbackSays(me, /^Not yet: /));
   await me.type('Your answer', String(Number(right.toPrecision(5))));
   check(`${where}: the right number is marked right (${right.toPrecision(5)})`, await feedbackSays(me, /^Right: /));
+}
+
+// The panel an item is in (its region of the parallel DOM).
+const regionOf = (el) => el.evaluate((e) => e.closest('.pdom-region').getAttribute('aria-label'));
+
+// A keyboard user's choice gives way to its feedback: the focus goes on to the lesson's next
+// item, where Tab goes on from, not to another panel (found 40 Tabs away before 2026-11-27).
+async function focusStays(page, me, region, where) {
+  if (me.way !== 'keyboard') return;
+  const inRegion = await page.waitForFunction((r) => document.activeElement?.closest('.pdom-region')?.getAttribute('aria-label') === r,
+                                              region, { timeout: 10_000 }).then(() => true, () => false);
+  const at = await page.evaluate(() => { const e = document.activeElement; return e && (e.getAttribute('aria-label') || e.textContent || e.id); });
+  check(`${where}: after the choice the focus stays in ${region}`, inRegion, `on ${at}`);
 }
 
 // On a phone or tablet the panels are tabs of a drawer below the view: the person opens the
