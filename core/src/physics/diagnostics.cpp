@@ -19,19 +19,21 @@ double potential_energy_pairwise(const System& s) {
   return 0.5 * s.J * sum;
 }
 
-EnergyParts energy_parts(const System& s) {
+SwarmReading swarm_reading(const System& s) {
   double M = 0, ke = 0;
   Vec3 moment = Vec3::Zero();
   for (const auto& p : s.particles) {
-    M += p.m;
+    M += p.m;  // total_mass
     moment += p.m * p.r;
     ke += 0.5 * p.m * p.v.squaredNorm();
   }
   const Vec3 R = moment / M;  // cm_position
   double sum = 0;
   for (const auto& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
-  return {ke, 0.5 * (s.J * M) * sum};
+  return {{ke, 0.5 * (s.J * M) * sum}, R, std::sqrt(sum / M)};
 }
+
+EnergyParts energy_parts(const System& s) { return swarm_reading(s).energy; }
 
 double potential_energy_cm(const System& s) { return energy_parts(s).potential; }
 
@@ -46,12 +48,7 @@ Vec3 total_momentum(const System& s) {
   return P;
 }
 
-double rms_distance_from_cm(const System& s) {
-  const Vec3 R = cm_position(s);
-  double sum = 0;
-  for (const auto& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
-  return std::sqrt(sum / total_mass(s));
-}
+double rms_distance_from_cm(const System& s) { return swarm_reading(s).size; }
 
 Vec3 angular_momentum_cm(const System& s) {
   const Vec3 R = cm_position(s);

@@ -46,7 +46,10 @@ Run::Run(std::unique_ptr<Engine> engine, const RunPlan& plan)
 
 EnergyParts Run::energy_now() {
   const System& s = engine_->system();
-  EnergyParts e = energy_parts(s);
+  return with_gravity(energy_parts(s), s);
+}
+
+EnergyParts Run::with_gravity(EnergyParts e, const System& s) const {
   const Vec3& g = plan_.engine.forces.gravity;
   if (g != Vec3::Zero()) e.potential += gravity_potential_energy(s, g);
   return e;
@@ -108,15 +111,18 @@ Sample Run::sample_now() {
   out.P = w.P;
   out.T = w.T;
   out.hits = w.hits;
-  const EnergyParts energy = energy_now();
+  // One reading for the energies, the CM and the size, in two passes over the particles
+  // where the three apart take eight: a sample is serial work between the engine's steps,
+  // which on a large swarm and several threads weighs.
+  const SwarmReading reading = swarm_reading(s);
+  const EnergyParts energy = with_gravity(reading.energy, s);
   out.KE = energy.kinetic;
   out.PE = energy.potential;
   out.E = out.KE + out.PE;
   out.R = engine_->container_radius().value_or(0.0);
   out.books = books_;
-  const Vec3 cm = cm_position(s);
-  out.cm_height = cm.z();
-  out.size = rms_distance_from_cm(s);
+  out.cm_height = reading.cm.z();
+  out.size = reading.size;
   sample_meter_.reset();
   return out;
 }

@@ -22,6 +22,16 @@ EnergyParts energy_parts(const System& s);
 Vec3 total_momentum(const System& s);
 /// The swarm's size: sqrt(sum m |r - R_cm|^2 / M), the mass-weighted rms distance from the CM.
 double rms_distance_from_cm(const System& s);
+
+/// What a run's sample reads off the particles, in the two passes of energy_parts: the
+/// energies, the CM and the size, each to the bit what energy_parts, cm_position and
+/// rms_distance_from_cm give (the same sums in the same order), where those three take eight.
+struct SwarmReading {
+  EnergyParts energy;
+  Vec3 cm = Vec3::Zero();
+  double size = 0;
+};
+SwarmReading swarm_reading(const System& s);
 /// L = sum m (r - R_cm) x (v - V_cm).
 Vec3 angular_momentum_cm(const System& s);
 

@@ -102,6 +102,8 @@ class Run {
  private:
   void step_once();
   Sample sample_now();
+  /// e with gravity's potential energy added under gravity.
+  EnergyParts with_gravity(EnergyParts e, const System& s) const;
   void check_finite(const Sample& s);
   void open_stage_by_hand();
   /// The area a step's wall pressure divides by: the sphere the particles' centres reach
