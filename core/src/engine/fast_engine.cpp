@@ -121,6 +121,7 @@ struct alignas(64) Lane {
   std::vector<std::uint32_t> work;  // the ids taken from the wheel for this step
   std::vector<Vec3> hit_a, hit_b;   // the coefficients of its hits in the current anchor
   std::vector<fast::Window> hit_windows;
+  std::vector<std::uint32_t> expiring;  // the ids of an expired anchor's particles (expire)
   std::array<std::vector<std::uint32_t>, kLookahead + 1> lookahead;
   std::vector<Hit> hits;
   // The hits in particle-id order once the checks are done: id << 32 | place in `hits` (sorted
@@ -352,7 +353,8 @@ class FastEngine final : public Engine {
           one = WallTally{};
         }
       }
-      make_windows(index, chunk_hits);
+      make_windows(index, lane.hits.size() - chunk_hits,
+                   [&](std::size_t j) { return lane.hits[chunk_hits + j].id; });
       for (std::size_t j = chunk_checked; j < checked; ++j)
         schedule(lane.work[j], step_ + 1, index);
     }
@@ -640,17 +642,21 @@ class FastEngine final : public Engine {
     start_anchor();
   }
 
-  /// Reschedules, in the current anchor, every particle still scheduled in anchor id.
+  /// Reschedules, in the current anchor, every particle still scheduled in anchor id: their
+  /// windows all at once (make_windows), then their schedules in id order.
   void expire(std::uint8_t id) {
     std::vector<std::int64_t> expired(lanes_.size());
     pool_.run(lanes_.size(), [&](std::size_t lane) {
+      std::vector<std::uint32_t>& ids = lanes_[lane].expiring;
+      ids.clear();
       const std::size_t end = lane_end(lane);
       for (std::size_t i = anchors_.next_relying(id, lane_begin(lane), end); i < end;
-           i = anchors_.next_relying(id, i + 1, end)) {
-        ++expired[lane];
-        orbits_[i].window.first = kUnknown;
-        schedule(std::uint32_t(i), step_, lane);
-      }
+           i = anchors_.next_relying(id, i + 1, end))
+        ids.push_back(std::uint32_t(i));
+      expired[lane] = std::int64_t(ids.size());
+      make_windows(lane, ids.size(), [&](std::size_t j) { return ids[j]; });
+      for (const std::uint32_t i : ids) schedule(i, step_, lane);
+      fast::release_if_large(ids, lane_size_);
     });
     for (const std::int64_t n : expired) stats_.expired += n;
   }
@@ -726,31 +732,31 @@ class FastEngine final : public Engine {
           fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
   }
 
-  /// The new windows of lane `index`'s hits from the `from`th on, all at once
-  /// (fast_engine_window_batch.h); one by one under drag, with a floor, without a wall or in an
-  /// off-centre anchor, which the batch does not know.
-  void make_windows(std::size_t index, std::size_t from) {
+  /// The new windows of n particles of lane `index`, the jth being id_of(j), all at once
+  /// (fast_engine_window_batch.h): a step's hits, or the particles of an expired anchor. One
+  /// by one under drag, with a floor, without a wall or in an off-centre anchor, which the
+  /// batch does not know.
+  template <class IdOf>
+  void make_windows(std::size_t index, std::size_t n, const IdOf& id_of) {
     Lane& lane = lanes_[index];
-    const Hit* hits = lane.hits.data() + from;
-    const std::size_t n = lane.hits.size() - from;
     const Anchor& current = anchors_.current();
     if (current.threshold <= 0 || checks_more_ || !config_.container_radius ||
         !current.centred()) {
-      for (std::size_t j = 0; j < n; ++j) make_window(hits[j].id, index);
+      for (std::size_t j = 0; j < n; ++j) make_window(id_of(j), index);
       return;
     }
     lane.hit_a.resize(n);
     lane.hit_b.resize(n);
     lane.hit_windows.resize(n);
     for (std::size_t j = 0; j < n; ++j) {
-      const std::uint32_t i = hits[j].id;
+      const std::uint32_t i = id_of(j);
       if (!anchors_.relies_on_current(i)) anchors_.move_to_current(i, int(index));
       lane.hit_a[j] = orbits_[i].a - current.p;
       lane.hit_b[j] = orbits_[i].b - current.q;
     }
     fast::windows_of(lane.hit_a.data(), lane.hit_b.data(), n, spring_, current.threshold2,
                      phase_per_time_ * epoch_start_, lane.hit_windows.data());
-    for (std::size_t j = 0; j < n; ++j) orbits_[hits[j].id].window = lane.hit_windows[j];
+    for (std::size_t j = 0; j < n; ++j) orbits_[id_of(j)].window = lane.hit_windows[j];
   }
 
   /// Where particle i's windows lie, seen from the end of step m: the wall's, or with a floor
