@@ -1,5 +1,7 @@
 #include "swarm/physics/diagnostics.h"
 
+#include <cmath>
+
 #include <doctest/doctest.h>
 
 #include "swarm/methods/integrators.h"
@@ -28,6 +30,31 @@ TEST_CASE("pairwise (eq. 8) and CM (eq. 13) potential energies agree for any J")
     const System s = testing::random_swarm(300, J, 11, 2.0);
     CHECK(potential_energy_cm(s) ==
           Approx(potential_energy_pairwise(s)).epsilon(1e-12).scale(1e-300));
+  }
+}
+
+TEST_CASE("a sample's reading: the energies, the CM and the size, to the bit as taken apart") {
+  // By hand: masses 1 and 3 at x = 0 and 2, the CM at 1.5; sum m d^2 = 2.25 + 0.75 = 3, M = 4.
+  System two;
+  two.J = 2.0;
+  two.particles = {{1.0, {0, 0, 0}, {1, 0, 0}}, {3.0, {2, 0, 0}, {0, 1, 0}}};
+  const SwarmReading by_hand = swarm_reading(two);
+  CHECK(by_hand.cm.x() == Approx(1.5));
+  CHECK(by_hand.size == Approx(std::sqrt(0.75)));
+  CHECK(by_hand.energy.potential == Approx(0.5 * (2.0 * 4) * 3));
+  // A run's samples must not change with how they are read: the same sums in the same order as
+  // the functions that read each part alone (kinetic_energy, cm_position) give the same bits,
+  // and the potential agrees with the pairwise sum of eq. 8.
+  for (double J : {1.3, -0.7}) {
+    const System s = testing::random_swarm(3000, J, 17, 2.0);
+    const SwarmReading r = swarm_reading(s);
+    CHECK(r.energy.kinetic == kinetic_energy(s));
+    CHECK(r.cm == cm_position(s));
+    const Vec3 R = cm_position(s);
+    double sum = 0;
+    for (const Particle& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
+    CHECK(r.size == std::sqrt(sum / total_mass(s)));
+    CHECK(r.energy.potential == Approx(potential_energy_pairwise(s)).epsilon(1e-11));
   }
 }
 
