@@ -19,6 +19,12 @@ void sleep_frames(Frontend& frontend) {
   EM_ASM({ Module.swarmlabSleep($0); }, wake_in_ms);
 }
 
+void sleep_until_woken() {
+  asleep = true;
+  emscripten_pause_main_loop();
+  EM_ASM({ Module.swarmlabSleep(Infinity); });
+}
+
 void after_sleep(Frontend& frontend) {
   if (!asleep) return;
   asleep = false;

@@ -13,6 +13,10 @@ namespace swarmlab {
 /// animation frames until woken; a text field's caret sets a timer for its next blink.
 void sleep_frames(Frontend& frontend);
 
+/// Called by the frame loop while nothing can be drawn (the WebGL context lost): no animation
+/// frame is asked for until something wakes the loop (the context back, an input, a call).
+void sleep_until_woken();
+
 /// At the start of each iteration of the frame loop: after a sleep the frame clock starts
 /// afresh, so that the sleep is not the next frame's time (a run pressed into play does not
 /// make up the idle minutes).

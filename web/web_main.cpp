@@ -84,7 +84,11 @@ int main() {
       [](void* p) {
         swarmlab::Frontend& f = *static_cast<swarmlab::Frontend*>(p);
         swarmlab::after_sleep(f);
-        if (swarmlab::context_lost()) return;  // nothing can be drawn: the run waits
+        // Nothing can be drawn: the run waits, and the loop sleeps until the context is back.
+        if (swarmlab::context_lost()) {
+          swarmlab::sleep_until_woken();
+          return;
+        }
         // Paused and still, the loop sleeps until something changes (frame_demand.h).
         if (!swarmlab::frame_wanted(f)) {
           swarmlab::sleep_frames(f);

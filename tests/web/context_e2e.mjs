@@ -97,6 +97,9 @@ async function lostAndRestored(page, W, H, theme) {
   const tStill = await page.evaluate(() => window.swarmlab.time());
   check(`${label}: lost: the run waits where it was`, tStill === tLost, `t ${tLost} -> ${tStill}`);
   check(`${label}: lost: the message line stays while the picture is away`, (await noticeNow(page)).shown);
+  // Nothing can be drawn: the frame loop asks for no animation frame until the context is back.
+  const asleep = await page.waitForFunction(() => window.swarmlab.sleeping(), null, { timeout: 10_000 }).then(() => true, () => false);
+  check(`${label}: lost: the frame loop sleeps`, asleep);
 
   // The browser gives the context back.
   const restoredAt = Date.now();

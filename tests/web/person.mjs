@@ -68,23 +68,26 @@ export function person(page, way) {
    *  scrolls new feedback into view on the frame after it appears, moving the buttons below. */
   async function still(el) {
     const handle = await el.elementHandle();
-    await page.waitForFunction((e) => {
+    const held = await page.waitForFunction((e) => {
       const r = e.getBoundingClientRect();
-      const place = [r.x, r.y, r.width, r.height, e.dataset.clipped].join();
+      const clipped = e.dataset.clipped === 'true';
+      const place = [r.x, r.y, r.width, r.height, clipped].join();
       const frame = window.swarmlab.frames();
       const last = e.stillSeen;
       if (!last || last.place !== place) e.stillSeen = { place, frame };
-      return last && last.place === place && (frame > last.frame || window.swarmlab.sleeping());
+      const isStill = last && last.place === place && (frame > last.frame || window.swarmlab.sleeping());
+      return isStill && { x: r.x, y: r.y, width: r.width, height: r.height, clipped };
     }, handle, { timeout: 20_000 });
-    return box(el);
+    return held.jsonValue();
   }
 
-  /** Scrolled into sight and held still there (it may have moved out of sight while settling). */
+  /** Held still in sight, scrolled there first if it is not (it may move out of sight while
+   *  settling). */
   async function inSightAndStill(el) {
     for (let tries = 0; tries < 5; ++tries) {
-      await reveal(el);
       const b = await still(el);
       if (!b.clipped) return b;
+      await reveal(el);
     }
     throw new Error('the item would not stay in sight');
   }
