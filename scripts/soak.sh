@@ -33,9 +33,9 @@ trap stop_load EXIT
 # The page is built before the load starts: the soak is of the tests, not of the compiler.
 [ $build -eq 0 ] || (cd build && ctest -R '^web_prepare$' --output-on-failure >/dev/null) ||
   { echo "soak.sh: the page did not build" >&2; exit 1; }
-# Without a build, the page's fixture (web, set up by web_prepare) is not run either.
-fixtures=()
-[ $build -eq 1 ] || fixtures=(-FS web)
+# The page's fixture (web_prepare, labelled web as well) runs before the load or not at all:
+# in a run it would rebuild the page whenever the sources had changed beside the soak.
+fixtures=(-E '^web_prepare$' -FA '.*')
 if [ $load -eq 1 ]; then
   for _ in 1 2; do (while :; do :; done) & busy+=($!); done
 fi
