@@ -241,7 +241,8 @@
     if (!root) makeRoot();
     // The reading order before this frame: where the focus goes if its item goes away (placing
     // this frame's items moves the others around the focused one, which then stands last).
-    var before = Array.prototype.slice.call(root.querySelectorAll('button, input'));
+    // Only read when the focus is on a mirrored item (follow runs every frame a run plays).
+    var before = root.contains(document.activeElement) ? Array.prototype.slice.call(root.querySelectorAll('button, input')) : [];
     // previous: container -> what was placed in it last; counts: how many groups of a kind a
     // container has had this frame (their keys).
     var seenText = new Map(), alive = new Set(), previous = new Map(), counts = new Map(), used = new Set();

@@ -187,7 +187,7 @@ async function checkTranscript(page, name) {
 async function answer(page, me, task, where, lesson) {
   const letter = (i) => String.fromCharCode(65 + i);
   if (task.kind === 'predict') {
-    const region = await regionOf(me.find('button', new RegExp(`^Predict ${letter(0)}: `)));
+    const region = await keyboardRegion(me, new RegExp(`^Predict ${letter(0)}: `));
     await me.press('button', new RegExp(`^Predict ${letter(0)}: `));
     check(`${where}: a prediction is recorded and compared`, await feedbackSays(me, 'Your prediction:'));
     await focusStays(page, me, region, where);
@@ -195,7 +195,7 @@ async function answer(page, me, task, where, lesson) {
   }
   if (task.kind === 'choice') {
     const wrong = task.answer === 0 ? 1 : 0;
-    const region = await regionOf(me.find('button', new RegExp(`^Pick ${letter(wrong)}: `)));
+    const region = await keyboardRegion(me, new RegExp(`^Pick ${letter(wrong)}: `));
     await me.press('button', new RegExp(`^Pick ${letter(wrong)}: `));
     check(`${where}: a wrong choice is marked wrong`, await feedbackSays(me, task.feedback ? task.feedback[wrong] : 'Not'));
     await focusStays(page, me, region, where);
@@ -227,8 +227,9 @@ async function answer(page, me, task, where, lesson) {
   check(`${where}: the right number is marked right (${right.toPrecision(5)})`, await feedbackSays(me, /^Right: /));
 }
 
-// The panel an item is in (its region of the parallel DOM).
-const regionOf = (el) => el.evaluate((e) => e.closest('.pdom-region').getAttribute('aria-label'));
+// For a keyboard user, the panel a button is in (its region of the parallel DOM).
+const keyboardRegion = (me, name) => me.way !== 'keyboard' ? null
+  : me.find('button', name).evaluate((e) => e.closest('.pdom-region').getAttribute('aria-label'));
 
 // A keyboard user's choice gives way to its feedback: the focus goes on to the lesson's next
 // item, where Tab goes on from, not to another panel (found 40 Tabs away before 2026-11-27).
