@@ -26,7 +26,7 @@ EM_JS(void, js_pick_progress_file, (), { Module.swarmlab.pickProgressFile(); });
 namespace {
 
 using json = nlohmann::json;
-std::string lessons_text, open_error, state_text, answer_text,
+std::string lessons_text, lesson_open_error, lesson_state_text, answer_text,
     fragment_text;  // valid until the next call
 
 /// Shows a refused lesson in the lesson panel and the scenario panel; returns it.
@@ -34,8 +34,8 @@ const std::string& refuse_lesson(swarmlab::AppState& s, std::string error) {
   s.lessons.error = error;
   s.status = error;
   s.status_is_error = true;
-  open_error = std::move(error);
-  return open_error;
+  lesson_open_error = std::move(error);
+  return lesson_open_error;
 }
 
 json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
@@ -109,8 +109,8 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson(const char* text, int is_j
   if (!error.empty()) return refuse_lesson(s, std::string(source) + ": " + error).c_str();
   s.lessons.error.clear();
   s.lessons.dismiss_welcome();
-  open_error.clear();
-  return open_error.c_str();
+  lesson_open_error.clear();
+  return lesson_open_error.c_str();
 }
 
 /// Opens what a #lesson= link holds (the text after "#lesson=", lesson_link.h): a shipped
@@ -130,8 +130,8 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson_link(const char* value) {
   if (!error.empty()) return refuse_lesson(s, "lesson link: " + error).c_str();
   s.lessons.error.clear();
   s.lessons.dismiss_welcome();
-  open_error.clear();
-  return open_error.c_str();
+  lesson_open_error.clear();
+  return lesson_open_error.c_str();
 }
 
 /// The link fragment ("#lesson=...") that opens the open lesson, "" when none is open.
@@ -144,8 +144,8 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_fragment() {
 /// The open lesson's state as JSON, "null" when none is open.
 EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_state() {
   swarmlab::App* app = swarmlab::web_app();
-  state_text = app ? lesson_state(app->state()).dump() : "null";
-  return state_text.c_str();
+  lesson_state_text = app ? lesson_state(app->state()).dump() : "null";
+  return lesson_state_text.c_str();
 }
 
 /// Answers the current task: a number for measure, an option's index for choice and predict.

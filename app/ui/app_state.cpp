@@ -19,7 +19,7 @@ std::size_t particle_count(const swarm::Preset& p) {
 
 /// The browser runs on school Chromebooks: a preset beyond their means is refused in the page
 /// within a second, before anything is allocated, and the running one carries on.
-swarm::ResourceLimits limits_here() {
+swarm::ResourceLimits resource_limits_here() {
 #ifdef __EMSCRIPTEN__
   return swarm::browser_limits();
 #else
@@ -62,7 +62,7 @@ void AppState::open(const swarm::Preset& p, std::string from) {
 }
 
 std::string AppState::open_json(const std::string& json, std::string from) {
-  const swarm::PresetParse parsed = swarm::parse_preset(json, limits_here());
+  const swarm::PresetParse parsed = swarm::parse_preset(json, resource_limits_here());
   if (!parsed.preset) {
     status = parsed.error;
     status_is_error = true;
@@ -82,7 +82,7 @@ std::string AppState::open_json(const std::string& json, std::string from) {
 }
 
 bool AppState::apply_draft(Section section) {
-  const std::string error = swarm::preset_error(draft, limits_here());
+  const std::string error = swarm::preset_error(draft, resource_limits_here());
   if (!error.empty()) {
     draft_error = error;
     draft_error_section = section;

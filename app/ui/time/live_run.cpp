@@ -21,7 +21,7 @@ swarm::RunPlan plan_of(const swarm::Preset& preset, int threads) {
 
 /// The timeline's snapshots may take this much memory: less in the browser (school
 /// Chromebooks).
-swarm::TimelineLimits limits_here() {
+swarm::TimelineLimits timeline_limits_here() {
   swarm::TimelineLimits limits;
 #ifdef __EMSCRIPTEN__
   limits.snapshot_bytes = 96e6;
@@ -34,7 +34,7 @@ swarm::TimelineLimits limits_here() {
 LiveRun::LiveRun(const swarm::Preset& preset, int threads)
     : preset_(preset),
       timeline_(swarm::initial_system(preset), plan_of(preset, threads), preset.compare,
-                limits_here()) {
+                timeline_limits_here()) {
   static long runs_made = 0;
   id_ = ++runs_made;
   // About 150 trail points per period (or per the same time when J <= 0).
