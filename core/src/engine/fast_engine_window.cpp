@@ -119,8 +119,8 @@ ThetaArc sampled_arc(double c0, double c1, double s1, double c2, double s2, doub
   if (open == 0) return {1, 0, 0};
   const std::uint64_t twice = std::uint64_t(open) | std::uint64_t(open) << kArcSamples;
   const auto turned = std::uint32_t((twice >> origin) & ((std::uint64_t(1) << kArcSamples) - 1));
-  const int first = origin + __builtin_ctz(turned);
-  const int last = origin + 31 - __builtin_clz(turned);
+  int first = origin + __builtin_ctz(turned);
+  int last = origin + 31 - __builtin_clz(turned);
   const auto f = [&](int i) {  // f at fine grid point i, any i >= 0
     i &= kArcFine - 1;
     const int i2 = (2 * i) & (kArcFine - 1);
@@ -128,19 +128,31 @@ ThetaArc sampled_arc(double c0, double c1, double s1, double c2, double s2, doub
            s2 * kCircle.s[i2];
   };
   const double fine_floor = -bend * kFine * kFine / 4;
-  // The fine intervals from the first coarse one's to the last's: from the first open, to the
-  // last (none open: never).
-  int lo = first * kArcRefine, hi = (last + 1) * kArcRefine;
-  double left = f(lo), right = f(hi);
-  for (double next; lo < hi; ++lo, left = next) {
-    next = f(lo + 1);
-    if (std::max(left, next) >= fine_floor) break;
+  // Bit m: fine interval m of coarse interval k is open. Its points are evaluated together
+  // (independent of each other, they overlap), not one by one until one is open.
+  const auto fine_open = [&](int k) {
+    double v[kArcRefine + 1];
+#pragma GCC unroll 9
+    for (int m = 0; m <= kArcRefine; ++m) v[m] = f(k * kArcRefine + m);
+    std::uint32_t bits = 0;
+#pragma GCC unroll 8
+    for (int m = 0; m < kArcRefine; ++m)
+      bits |= std::uint32_t(std::max(v[m], v[m + 1]) >= fine_floor) << m;
+    return bits;
+  };
+  // From the first open fine interval of the coarse ones first .. last to the last (none
+  // open: never).
+  std::uint32_t bits = 0;
+  for (; first <= last && !(bits = fine_open(first)); ++first) {
   }
-  if (lo == hi) return {1, 0, 0};
-  for (double before; hi > lo + 1; --hi, right = before) {
-    before = f(hi - 1);
-    if (std::max(before, right) >= fine_floor) break;
+  if (first > last) return {1, 0, 0};
+  const int lo = first * kArcRefine + __builtin_ctz(bits);
+  if (last > first) {
+    for (; last > first && !(bits = fine_open(last)); --last) {
+    }
+    if (last == first) bits = fine_open(first);
   }
+  const int hi = last * kArcRefine + 32 - __builtin_clz(bits);
   return {lo * kFine, hi * kFine, hi - lo};
 }
 
