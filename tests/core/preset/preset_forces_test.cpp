@@ -19,7 +19,7 @@ std::string preset(const std::string& extra, const std::string& method = "analyt
          (extra.empty() ? "" : ", " + extra) + "}";
 }
 
-std::string error_of(const std::string& extra, const std::string& method = "analytic") {
+std::string error_with(const std::string& extra, const std::string& method = "analytic") {
   return parse_preset(preset(extra, method)).error;
 }
 
@@ -57,39 +57,39 @@ TEST_CASE("a preset without the keys writes none of them") {
 }
 
 TEST_CASE("bad gravity, floor and drag keys get one message naming the field and the rule") {
-  CHECK(error_of(R"("gravity": [0, -9.8])") == "gravity: must be an array of 3 numbers [x, y, z]");
-  CHECK(error_of(R"("gravity": [0, 0, "down"])") == "gravity[2]: must be a number");
-  CHECK(error_of(R"("gravity": [0, 0, 1e200])").rfind("gravity: |g| duration^2 / 2", 0) == 0);
-  CHECK(error_of(R"("floor": {"z": 0, "restitution": 1.5})") ==
+  CHECK(error_with(R"("gravity": [0, -9.8])") == "gravity: must be an array of 3 numbers [x, y, z]");
+  CHECK(error_with(R"("gravity": [0, 0, "down"])") == "gravity[2]: must be a number");
+  CHECK(error_with(R"("gravity": [0, 0, 1e200])").rfind("gravity: |g| duration^2 / 2", 0) == 0);
+  CHECK(error_with(R"("floor": {"z": 0, "restitution": 1.5})") ==
         "floor.restitution: must be in [0, 1] (1: elastic, 0: the particle stops falling)");
-  CHECK(error_of(R"("floor": {"restitution": 1})") == "floor.z: missing (a number is required)");
-  CHECK(error_of(R"("floor": {"z": 0, "height": 1})").rfind("floor.height: unknown key", 0) == 0);
-  CHECK(error_of(R"("floor": {"z": 1.5})") ==
+  CHECK(error_with(R"("floor": {"restitution": 1})") == "floor.z: missing (a number is required)");
+  CHECK(error_with(R"("floor": {"z": 0, "height": 1})").rfind("floor.height: unknown key", 0) == 0);
+  CHECK(error_with(R"("floor": {"z": 1.5})") ==
         "particles[0].r: starts below the floor (z = 1 < floor.z = 1.5)");
-  CHECK(error_of(R"("container": {"radius": 3}, "floor": {"z": -3})") ==
+  CHECK(error_with(R"("container": {"radius": 3}, "floor": {"z": -3})") ==
         "floor.z: must lie inside the container, -radius < z < radius (got z = -3, "
         "container.radius = 3)");
-  CHECK(error_of(R"("drag": {"gamma": 1, "b": 1})").rfind("drag: give exactly one of", 0) == 0);
-  CHECK(error_of(R"("drag": {})").rfind("drag: give exactly one of", 0) == 0);
-  CHECK(error_of(R"("drag": {"gamma": -1})") == "drag.gamma: must be > 0");
-  CHECK(error_of(R"("drag": {"gamma": 1e5})").rfind("drag.gamma: gamma * dt must be <= 100", 0) == 0);
-  CHECK(error_of(R"("drag": {"gamma": 1, "particles": [0]})") ==
+  CHECK(error_with(R"("drag": {"gamma": 1, "b": 1})").rfind("drag: give exactly one of", 0) == 0);
+  CHECK(error_with(R"("drag": {})").rfind("drag: give exactly one of", 0) == 0);
+  CHECK(error_with(R"("drag": {"gamma": -1})") == "drag.gamma: must be > 0");
+  CHECK(error_with(R"("drag": {"gamma": 1e5})").rfind("drag.gamma: gamma * dt must be <= 100", 0) == 0);
+  CHECK(error_with(R"("drag": {"gamma": 1, "particles": [0]})") ==
         "drag.particles: goes with \"b\" (gamma acts on every particle)");
-  CHECK(error_of(R"("drag": {"b": 1, "particles": [0]})").rfind(
+  CHECK(error_with(R"("drag": {"b": 1, "particles": [0]})").rfind(
             "drag.b: drag on chosen particles breaks the centre-of-mass picture", 0) == 0);
-  CHECK(error_of(R"("drag": {"b": 1})", "rk4") ==
+  CHECK(error_with(R"("drag": {"b": 1})", "rk4") ==
         "drag.particles: missing (the indices of the particles b acts on)");
-  CHECK(error_of(R"("drag": {"b": 1, "particles": []})", "rk4") ==
+  CHECK(error_with(R"("drag": {"b": 1, "particles": []})", "rk4") ==
         "drag.particles: must be a non-empty list of particle indices");
-  CHECK(error_of(R"("drag": {"b": 1, "particles": [0, 0]})", "rk4") ==
+  CHECK(error_with(R"("drag": {"b": 1, "particles": [0, 0]})", "rk4") ==
         "drag.particles[1]: lists particle 0 twice");
-  CHECK(error_of(R"("drag": {"b": 1, "particles": [-1]})", "rk4") ==
+  CHECK(error_with(R"("drag": {"b": 1, "particles": [-1]})", "rk4") ==
         "drag.particles[0]: must be >= 0");
-  CHECK(error_of(R"("drag": {"b": 1, "particles": [1.5]})", "rk4") ==
+  CHECK(error_with(R"("drag": {"b": 1, "particles": [1.5]})", "rk4") ==
         "drag.particles[0]: must be a particle index (0, 1, ...)");
-  CHECK(error_of(R"("drag": {"b": 1, "particles": [2]})", "rk4") ==
+  CHECK(error_with(R"("drag": {"b": 1, "particles": [2]})", "rk4") ==
         "drag.particles[0]: particle 2 does not exist (there are 2, numbered from 0)");
-  CHECK(error_of(R"("drag": {"b": 1, "particles": [0]}, "compare": ["analytic"])", "rk4")
+  CHECK(error_with(R"("drag": {"b": 1, "particles": [0]}, "compare": ["analytic"])", "rk4")
             .rfind("compare[0]: \"analytic\" cannot run drag.b", 0) == 0);
   // A generated swarm must start above the floor.
   CHECK(parse_preset(R"({"J": 1, "particles": {"count": 10, "position_radius": 1, "velocity": {"speed": 1}},

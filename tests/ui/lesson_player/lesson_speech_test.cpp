@@ -11,7 +11,7 @@
 namespace swarmlab {
 namespace {
 
-LessonSession loaded() {
+LessonSession shipped_session() {
   LessonSession session;
   session.load(SWARM_LESSON_DIR, make_memory_progress_store(),
                shipped_preset_lookup(SWARM_PRESET_DIR));
@@ -33,7 +33,7 @@ bool has(const std::string& text, const std::string& part) {
 }  // namespace
 
 TEST_CASE("lesson speech: the welcome names every lesson") {
-  LessonSession session = loaded();
+  LessonSession session = shipped_session();
   session.show_welcome = true;
   const std::string words = lesson_speech(session, InputKind::keyboard).words;
   CHECK(words.rfind("Welcome to Swarm Lab.", 0) == 0);
@@ -46,7 +46,7 @@ TEST_CASE("lesson speech: the welcome names every lesson") {
 }
 
 TEST_CASE("lesson speech: a step is read with its place, its text, its question and options") {
-  LessonSession session = loaded();
+  LessonSession session = shipped_session();
   const Lesson& lesson = one_period(session);
   session.open(lesson);
   session.go_to(3);  // "{Tap|Click} each ball in turn ..."
@@ -70,7 +70,7 @@ TEST_CASE("lesson speech: a step is read with its place, its text, its question 
 }
 
 TEST_CASE("lesson speech: an answer is followed by its feedback, a new try by a new turn") {
-  LessonSession session = loaded();
+  LessonSession session = shipped_session();
   const LessonScene scene = session.open(one_period(session));
   LiveRun run(*scene.preset_step->preset);
   session.next();  // "How long is one turn?"
@@ -95,7 +95,7 @@ TEST_CASE("lesson speech: an answer is followed by its feedback, a new try by a 
 
 TEST_CASE(
     "lesson speech: a step whose prediction was made reads it and the outcome, not the options") {
-  LessonSession session = loaded();
+  LessonSession session = shipped_session();
   const Lesson& lesson = one_period(session);
   session.open(lesson);
   session.go_to(2);  // predict: four masses
