@@ -58,47 +58,134 @@ Window once_a_turn(double c, double h) {
   return {c, kOnceATurn + h};
 }
 
-// x + w with x = a cos(theta) + B sin(theta), B = b / omega: the common part of S1 and S2
-// (fast_engine_window.h), in phases of 2 theta.
+// Where |x(theta) + w|^2 - T2 = f(theta) = c0 + c1 cos(theta) + s1 sin(theta) + c2 cos(2
+// theta) + s2 sin(2 theta) can be >= 0, from f's values at the kArcSamples points of a fixed
+// grid round the turn, and at kArcRefine times finer ones where the arc found ends: between
+// two points a distance d apart f is at most the straight line between its values plus bend
+// s (d - s), s from the first point, where bend = max|f''| / 2 <= (|(c1, s1)| + 4 |(c2, s2)|)
+// / 2 (linear interpolation's error), so at most their larger value plus bend d^2 / 4: where
+// that is < 0 the interval is closed. The arc returned runs from the first open interval to
+// the last, going round from the point where f is least: {lo, hi} in theta (on the fine
+// grid), lo > hi when none is open.
+struct ThetaArc {
+  double lo, hi;
+  int intervals;  // how many of the fine grid's: hi - lo = intervals 2 pi / kArcFine
+};
+
+constexpr int kArcSamples = 16;  // at most 32: bits of a mask
+constexpr int kArcRefine = 8;
+constexpr int kArcFine = kArcSamples * kArcRefine;  // a power of 2: indices wrap by a mask
+
+// cos and sin of theta and 2 theta at the fine grid's angles theta = 2 pi j / kArcFine, and
+// at the coarse grid's (every kArcRefine-th) in rows of their own, which vector instructions
+// read straight through.
+struct SampledCircle {
+  double c[kArcFine], s[kArcFine];
+  double coarse_c[kArcSamples + 1], coarse_s[kArcSamples + 1], coarse_c2[kArcSamples + 1],
+      coarse_s2[kArcSamples + 1];  // the turn's first point again at its end
+  SampledCircle() {
+    for (int j = 0; j < kArcFine; ++j) {
+      c[j] = std::cos(2 * M_PI * j / kArcFine);
+      s[j] = std::sin(2 * M_PI * j / kArcFine);
+    }
+    for (int j = 0; j <= kArcSamples; ++j) {
+      const int i = (j * kArcRefine) % kArcFine, i2 = (2 * i) % kArcFine;
+      coarse_c[j] = c[i];
+      coarse_s[j] = s[i];
+      coarse_c2[j] = c[i2];
+      coarse_s2[j] = s[i2];
+    }
+  }
+};
+const SampledCircle kCircle;
+
+ThetaArc sampled_arc(double c0, double c1, double s1, double c2, double s2, double bend,
+                     double rounding) {
+  constexpr double kCoarse = 2 * M_PI / kArcSamples, kFine = kCoarse / kArcRefine;
+  const double base = c0 + rounding;
+  double values[kArcSamples + 1];
+  for (int j = 0; j <= kArcSamples; ++j)
+    values[j] = base + c1 * kCircle.coarse_c[j] + s1 * kCircle.coarse_s[j] +
+                c2 * kCircle.coarse_c2[j] + s2 * kCircle.coarse_s2[j];
+  // Bit j: interval j, from point j to j + 1, is open.
+  const double coarse_floor = -bend * kCoarse * kCoarse / 4;
+  std::uint32_t open = 0;
+  int origin = 0;  // the point where f is least
+#pragma GCC unroll 16
+  for (int j = 0; j < kArcSamples; ++j) {
+    open |= std::uint32_t(std::max(values[j], values[j + 1]) >= coarse_floor) << j;
+    origin = values[j] < values[origin] ? j : origin;
+  }
+  if (open == 0) return {1, 0, 0};
+  const std::uint64_t twice = std::uint64_t(open) | std::uint64_t(open) << kArcSamples;
+  const auto turned = std::uint32_t((twice >> origin) & ((std::uint64_t(1) << kArcSamples) - 1));
+  int first = origin + __builtin_ctz(turned);
+  int last = origin + 31 - __builtin_clz(turned);
+  const auto f = [&](int i) {  // f at fine grid point i, any i >= 0
+    i &= kArcFine - 1;
+    const int i2 = (2 * i) & (kArcFine - 1);
+    return base + c1 * kCircle.c[i] + s1 * kCircle.s[i] + c2 * kCircle.c[i2] +
+           s2 * kCircle.s[i2];
+  };
+  const double fine_floor = -bend * kFine * kFine / 4;
+  // Bit m: fine interval m of coarse interval k is open. Its points are evaluated together
+  // (independent of each other, they overlap), not one by one until one is open.
+  const auto fine_open = [&](int k) {
+    double v[kArcRefine + 1];
+#pragma GCC unroll 9
+    for (int m = 0; m <= kArcRefine; ++m) v[m] = f(k * kArcRefine + m);
+    std::uint32_t bits = 0;
+#pragma GCC unroll 8
+    for (int m = 0; m < kArcRefine; ++m)
+      bits |= std::uint32_t(std::max(v[m], v[m + 1]) >= fine_floor) << m;
+    return bits;
+  };
+  // From the first open fine interval of the coarse ones first .. last to the last (none
+  // open: never).
+  std::uint32_t bits = 0;
+  for (; first <= last && !(bits = fine_open(first)); ++first) {
+  }
+  if (first > last) return {1, 0, 0};
+  const int lo = first * kArcRefine + __builtin_ctz(bits);
+  if (last > first) {
+    for (; last > first && !(bits = fine_open(last)); --last) {
+    }
+    if (last == first) bits = fine_open(first);
+  }
+  const int hi = last * kArcRefine + 32 - __builtin_clz(bits);
+  return {lo * kFine, hi * kFine, hi - lo};
+}
+
+// x + w with x = a cos(theta) + B sin(theta), B = b / omega (fast_engine_window.h), in phases
+// of 2 theta: never where S1 or S2 is; else the arc sampled_arc finds, or S1 where that is
+// open for less time.
 Window attractive_off_centre(const Vec3& a, const Vec3& b, const Vec3& w, double inv_omega,
                              double T2) {
   const double w2 = w.squaredNorm();
   const double inner = std::sqrt(T2) - std::sqrt(w2);
-  const Window s1 = inner > 0 ? attractive(a, b, inv_omega, inner * inner) : Window{0, 4};
-  if (s1.second < 0) return s1;  // never
   const Vec3 B = b * inv_omega;
   const auto [P, Q, S, A] = swing_of(a, b, inv_omega);
+  // S1 never: |x| <= sqrt(P + A) < inner (attractive's test).
+  if (inner > 0 && inner * inner > P + A) return {0, -1};
   const double u = w.dot(a), v = w.dot(B), rho = std::sqrt(u * u + v * v);
-  // S2: 2 rho cos(theta - psi) >= need, with need lowered by far more than its rounding.
+  // S2 never: |x + w|^2 <= P + A + 2 rho + |w|^2 < T2, by far more than its rounding.
   const double sum = T2 + P + A + w2;
-  const double need = T2 - P - A - w2 - 1e-12 * sum;
-  if (need <= -2 * rho) return s1;  // S2 always (also when rho = 0 and need <= 0)
-  if (need > 2 * rho) return {0, -1};
-  const double cos_beta = need / (2 * rho);
-  const double sin_beta = std::sqrt(std::max(0.0, (1 - cos_beta) * (1 + cos_beta)));
-  // S2 is the arc |2 theta - c2| <= h2 modulo 4 pi; c2 and the half-width are each off by
-  // 2 kAtanError at most.
-  const double c2 = 2 * fast_atan2(v, u);
-  const double h2 = 2 * fast_atan2(sin_beta, cos_beta) + 4 * kAtanError;
-  if (s1.second >= M_PI) return once_a_turn(c2, h2);  // S1 always
-  // S1's arcs lie about phi + 2 pi j, of half-width alpha; the nearest to c2 is |d| from it,
-  // the next 2 pi - |d| >= |d|.
-  constexpr double kTwoPi = 2 * M_PI;
-  const double phi = s1.first, alpha = s1.second;
-  const double turns = (c2 - phi) * (1 / kTwoPi);
-  const double d =
-      c2 - phi - kTwoPi * double(std::int64_t(turns + (turns >= 0 ? 0.5 : -0.5)));
-  if (std::abs(d) > alpha + h2) return {0, -1};  // S2 meets neither arc
-  const double near = c2 - d;
-  double lo = std::max(c2 - h2, near - alpha), hi = std::min(c2 + h2, near + alpha);
-  if (kTwoPi - std::abs(d) <= alpha + h2) {  // and the other arc too: the arc over both parts
-    const double far = near + (d >= 0 ? kTwoPi : -kTwoPi);
-    lo = std::min(lo, std::max(c2 - h2, far - alpha));
-    hi = std::max(hi, std::min(c2 + h2, far + alpha));
+  if (T2 - P - A - w2 - 1e-12 * sum > 2 * rho) return {0, -1};
+  // f = |x + w|^2 - T2, raised by far more than its rounding; |f''| <= 2 rho + 4 A.
+  const ThetaArc arc = sampled_arc(P + w2 - T2, 2 * u, 2 * v, Q, S, rho + 2 * A, 1e-12 * sum);
+  if (arc.lo > arc.hi) return {0, -1};
+  // S1 is open 4 alpha of every 4 pi, the arc 2 (hi - lo) = 4 x: S1 is open for less time
+  // where alpha < x, cos(alpha) = (inner^2 - P) / A > cos(x) (x = (arc.hi - arc.lo) / 2 <=
+  // pi, cos(x) = +-sqrt((1 + cos 2x) / 2) from the grid's table). Either window holds every
+  // crossing, so the rounding of the choice does not matter. S1 is always when inner <= 0 or
+  // inner^2 <= P - A.
+  const double lo = 2 * arc.lo, hi = 2 * arc.hi;
+  const double cos_2x = kCircle.c[arc.intervals & (kArcFine - 1)];
+  const double cos_x = std::copysign(std::sqrt(0.5 * (1 + cos_2x)), kArcFine / 2 - arc.intervals);
+  if (inner > 0 && A > 0 && (inner * inner - P) / A > cos_x) {
+    const Window s1 = attractive(a, b, inv_omega, inner * inner);
+    if (s1.second >= 0 && hi - lo >= 4 * s1.second) return s1;
   }
-  // S1 is open 4 alpha of every 4 pi; the arc hi - lo. The arc's ends carry the rounding of
-  // c2 - phi's reduction and of their sums, far below 1e-12.
-  if (hi - lo >= 4 * alpha) return s1;
   return once_a_turn(0.5 * (lo + hi), 0.5 * (hi - lo) + 1e-12);
 }
 

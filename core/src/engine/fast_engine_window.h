@@ -66,8 +66,15 @@ inline constexpr double kOnceATurn = 16;
 /// J > 0: with theta = omega tau, |x|^2 = P + A cos(2 theta - phi) <= P + A and w.x = rho
 ///        cos(theta - psi), so the window lies within both
 ///          S1: |x| >= sqrt(T2) - |w|                       (twice a turn, as window_of's), and
-///          S2: cos(theta - psi) >= (T2 - P - A - |w|^2) / (2 rho)   (once a turn, about psi);
-///        the window is the narrower of S1 and the shortest arc holding S1 and S2's common part.
+///          S2: cos(theta - psi) >= (T2 - P - A - |w|^2) / (2 rho)   (once a turn, about psi):
+///        never where either is. Else |x + w|^2 - T2, a sum of sinusoids in theta and 2 theta,
+///        is evaluated on a grid of the turn, finer where the arc ends, and the bound of its
+///        second derivative between grid points says where it can reach 0: the window is the
+///        arc over those places (once a turn, open a grid step or two before and after the
+///        crossings: 2 pi / 128 in theta), or S1 where that is open for less time. (S1 and S2's
+///        common part alone held windows open far longer under gravity, where the anchors'
+///        centres are 0.6 to 1.3 R out and S2 often holds all round: 1,527 checks a step
+///        against 594 at N = 40,000, bench/RESULTS.md.)
 /// J = 0: |x + w| is the distance of a straight line: window_of's for a + w.
 /// J < 0: S1 alone.
 Window off_centre_window_of(const Vec3& a, const Vec3& b, const Vec3& w, const Spring& spring,
