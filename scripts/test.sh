@@ -4,8 +4,8 @@
 #                            Emscripten, then the doctest suite natively and under node, the CLI
 #                            as a process, the desktop window under Xvfb, native == wasm, the
 #                            browser suites, Lighthouse and axe-core and the walkthroughs in
-#                            headless Chromium, and a minute of fuzzing. About 25 minutes on a
-#                            fresh clone of a 2-core machine (1506 s, 2026-11-28, both cores 99 %
+#                            headless Chromium, and a minute of fuzzing. About 18 minutes on a
+#                            fresh clone of a 2-core machine (1098 s, 2026-11-28, both cores 97 %
 #                            busy: what is left to cut is work, not waiting).
 #   scripts/test.sh --quick  before a commit: the doctest suite, the CLI tests and one browser
 #                            smoke test, under 3 minutes once built.
