@@ -725,23 +725,28 @@ class FastEngine final : public Engine {
                                      phase_origin, growth_)
                    : fast::off_centre_window_of(o.a - current.p, o.b - current.q, current.centre,
                                                 spring_, current.threshold2, phase_origin);
-    if (config_.floor)
-      floor_windows_[i] = fast::floor_window_of(
-          o.a.z() - current.p.z(), o.b.z() - current.q.z(), spring_,
-          config_.floor->z - current.floor_low,
-          fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
+    if (config_.floor) make_floor_window(i);
+  }
+
+  /// Particle i's floor window in the current anchor.
+  void make_floor_window(std::uint32_t i) {
+    const Body& o = orbits_[i];
+    const Anchor& current = anchors_.current();
+    floor_windows_[i] = fast::floor_window_of(
+        o.a.z() - current.p.z(), o.b.z() - current.q.z(), spring_,
+        config_.floor->z - current.floor_low,
+        fast::floor_clock(clock_at(step_)).phase_per_time * epoch_start_, growth_);
   }
 
   /// The new windows of n particles of lane `index`, the jth being id_of(j), all at once
-  /// (fast_engine_window_batch.h): a step's hits, or the particles of an expired anchor. One
-  /// by one under drag, with a floor, without a wall or in an off-centre anchor, which the
-  /// batch does not know.
+  /// (fast_engine_window_batch.h): a step's hits, or the particles of an expired anchor; with
+  /// a floor, their floor windows one by one. One by one under drag or without a wall, which
+  /// the batch does not know.
   template <class IdOf>
   void make_windows(std::size_t index, std::size_t n, const IdOf& id_of) {
     Lane& lane = lanes_[index];
     const Anchor& current = anchors_.current();
-    if (current.threshold <= 0 || checks_more_ || !config_.container_radius ||
-        !current.centred()) {
+    if (current.threshold <= 0 || gamma_ > 0 || !config_.container_radius) {
       for (std::size_t j = 0; j < n; ++j) make_window(id_of(j), index);
       return;
     }
@@ -754,9 +759,17 @@ class FastEngine final : public Engine {
       lane.hit_a[j] = orbits_[i].a - current.p;
       lane.hit_b[j] = orbits_[i].b - current.q;
     }
-    fast::windows_of(lane.hit_a.data(), lane.hit_b.data(), n, spring_, current.threshold2,
-                     phase_per_time_ * epoch_start_, lane.hit_windows.data());
+    const double phase_origin = phase_per_time_ * epoch_start_;
+    if (current.centred())
+      fast::windows_of(lane.hit_a.data(), lane.hit_b.data(), n, spring_, current.threshold2,
+                       phase_origin, lane.hit_windows.data());
+    else
+      fast::off_centre_windows_of(lane.hit_a.data(), lane.hit_b.data(), n, current.centre,
+                                  spring_, current.threshold2, phase_origin,
+                                  lane.hit_windows.data());
     for (std::size_t j = 0; j < n; ++j) orbits_[id_of(j)].window = lane.hit_windows[j];
+    if (config_.floor)
+      for (std::size_t j = 0; j < n; ++j) make_floor_window(id_of(j));
   }
 
   /// Where particle i's windows lie, seen from the end of step m: the wall's, or with a floor

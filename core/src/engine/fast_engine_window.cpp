@@ -7,6 +7,11 @@
 
 #include "math/fast_math.h"
 
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__EMSCRIPTEN__)
+#define SWARM_ARC_AVX2 1
+#include <immintrin.h>
+#endif
+
 namespace swarm::fast {
 namespace {
 
@@ -78,15 +83,22 @@ constexpr int kArcFine = kArcSamples * kArcRefine;  // a power of 2: indices wra
 
 // cos and sin of theta and 2 theta at the fine grid's angles theta = 2 pi j / kArcFine, and
 // at the coarse grid's (every kArcRefine-th) in rows of their own, which vector instructions
-// read straight through.
+// read straight through; the fine rows of 2 theta (fine_c2[j] = c[2 j mod kArcFine]) are for
+// them, too.
 struct SampledCircle {
-  double c[kArcFine], s[kArcFine];
+  double c[kArcFine + 1], s[kArcFine + 1], fine_c2[kArcFine + 1], fine_s2[kArcFine + 1];
   double coarse_c[kArcSamples + 1], coarse_s[kArcSamples + 1], coarse_c2[kArcSamples + 1],
       coarse_s2[kArcSamples + 1];  // the turn's first point again at its end
   SampledCircle() {
     for (int j = 0; j < kArcFine; ++j) {
       c[j] = std::cos(2 * M_PI * j / kArcFine);
       s[j] = std::sin(2 * M_PI * j / kArcFine);
+    }
+    c[kArcFine] = c[0];
+    s[kArcFine] = s[0];
+    for (int j = 0; j <= kArcFine; ++j) {
+      fine_c2[j] = c[(2 * j) % kArcFine];
+      fine_s2[j] = s[(2 * j) % kArcFine];
     }
     for (int j = 0; j <= kArcSamples; ++j) {
       const int i = (j * kArcRefine) % kArcFine, i2 = (2 * i) % kArcFine;
@@ -99,47 +111,18 @@ struct SampledCircle {
 };
 const SampledCircle kCircle;
 
-ThetaArc sampled_arc(double c0, double c1, double s1, double c2, double s2, double bend,
-                     double rounding) {
-  constexpr double kCoarse = 2 * M_PI / kArcSamples, kFine = kCoarse / kArcRefine;
-  const double base = c0 + rounding;
-  double values[kArcSamples + 1];
-  for (int j = 0; j <= kArcSamples; ++j)
-    values[j] = base + c1 * kCircle.coarse_c[j] + s1 * kCircle.coarse_s[j] +
-                c2 * kCircle.coarse_c2[j] + s2 * kCircle.coarse_s2[j];
-  // Bit j: interval j, from point j to j + 1, is open.
-  const double coarse_floor = -bend * kCoarse * kCoarse / 4;
-  std::uint32_t open = 0;
-  int origin = 0;  // the point where f is least
-#pragma GCC unroll 16
-  for (int j = 0; j < kArcSamples; ++j) {
-    open |= std::uint32_t(std::max(values[j], values[j + 1]) >= coarse_floor) << j;
-    origin = values[j] < values[origin] ? j : origin;
-  }
+constexpr double kArcCoarseStep = 2 * M_PI / kArcSamples, kArcFineStep = kArcCoarseStep / kArcRefine;
+
+// sampled_arc's work once the coarse grid is known: open (bit j: coarse interval j open) and
+// origin (the first point where f is least) narrowed to the fine intervals that fine_open(k)
+// finds open in coarse interval k (any k >= 0, taken modulo the turn).
+template <class FineOpen>
+ThetaArc arc_of_open(std::uint32_t open, int origin, const FineOpen& fine_open) {
   if (open == 0) return {1, 0, 0};
   const std::uint64_t twice = std::uint64_t(open) | std::uint64_t(open) << kArcSamples;
   const auto turned = std::uint32_t((twice >> origin) & ((std::uint64_t(1) << kArcSamples) - 1));
   int first = origin + __builtin_ctz(turned);
   int last = origin + 31 - __builtin_clz(turned);
-  const auto f = [&](int i) {  // f at fine grid point i, any i >= 0
-    i &= kArcFine - 1;
-    const int i2 = (2 * i) & (kArcFine - 1);
-    return base + c1 * kCircle.c[i] + s1 * kCircle.s[i] + c2 * kCircle.c[i2] +
-           s2 * kCircle.s[i2];
-  };
-  const double fine_floor = -bend * kFine * kFine / 4;
-  // Bit m: fine interval m of coarse interval k is open. Its points are evaluated together
-  // (independent of each other, they overlap), not one by one until one is open.
-  const auto fine_open = [&](int k) {
-    double v[kArcRefine + 1];
-#pragma GCC unroll 9
-    for (int m = 0; m <= kArcRefine; ++m) v[m] = f(k * kArcRefine + m);
-    std::uint32_t bits = 0;
-#pragma GCC unroll 8
-    for (int m = 0; m < kArcRefine; ++m)
-      bits |= std::uint32_t(std::max(v[m], v[m + 1]) >= fine_floor) << m;
-    return bits;
-  };
   // From the first open fine interval of the coarse ones first .. last to the last (none
   // open: never).
   std::uint32_t bits = 0;
@@ -153,12 +136,133 @@ ThetaArc sampled_arc(double c0, double c1, double s1, double c2, double s2, doub
     if (last == first) bits = fine_open(first);
   }
   const int hi = last * kArcRefine + 32 - __builtin_clz(bits);
-  return {lo * kFine, hi * kFine, hi - lo};
+  return {lo * kArcFineStep, hi * kArcFineStep, hi - lo};
 }
+
+ThetaArc sampled_arc(double c0, double c1, double s1, double c2, double s2, double bend,
+                     double rounding) {
+  const double base = c0 + rounding;
+  double values[kArcSamples + 1];
+  for (int j = 0; j <= kArcSamples; ++j)
+    values[j] = base + c1 * kCircle.coarse_c[j] + s1 * kCircle.coarse_s[j] +
+                c2 * kCircle.coarse_c2[j] + s2 * kCircle.coarse_s2[j];
+  // Bit j: interval j, from point j to j + 1, is open.
+  const double coarse_floor = -bend * kArcCoarseStep * kArcCoarseStep / 4;
+  std::uint32_t open = 0;
+  int origin = 0;  // the point where f is least
+#pragma GCC unroll 16
+  for (int j = 0; j < kArcSamples; ++j) {
+    open |= std::uint32_t(std::max(values[j], values[j + 1]) >= coarse_floor) << j;
+    origin = values[j] < values[origin] ? j : origin;
+  }
+  const auto f = [&](int i) {  // f at fine grid point i, any i >= 0
+    i &= kArcFine - 1;
+    const int i2 = (2 * i) & (kArcFine - 1);
+    return base + c1 * kCircle.c[i] + s1 * kCircle.s[i] + c2 * kCircle.c[i2] +
+           s2 * kCircle.s[i2];
+  };
+  const double fine_floor = -bend * kArcFineStep * kArcFineStep / 4;
+  // Bit m: fine interval m of coarse interval k is open. Its points are evaluated together
+  // (independent of each other, they overlap), not one by one until one is open.
+  const auto fine_open = [&](int k) {
+    double v[kArcRefine + 1];
+#pragma GCC unroll 9
+    for (int m = 0; m <= kArcRefine; ++m) v[m] = f(k * kArcRefine + m);
+    std::uint32_t bits = 0;
+#pragma GCC unroll 8
+    for (int m = 0; m < kArcRefine; ++m)
+      bits |= std::uint32_t(std::max(v[m], v[m + 1]) >= fine_floor) << m;
+    return bits;
+  };
+  return arc_of_open(open, origin, fine_open);
+}
+
+#ifdef SWARM_ARC_AVX2
+
+// sampled_arc four grid points to a register. Each point's value is the scalar's sum, term by
+// term in its order, of the same tables' entries (target("avx2") without "fma": nothing is
+// fused), and _mm256_max_pd(y, x) is std::max(x, y), NaN and all: the same bits and the same
+// arc.
+struct ArcSum4 {
+  __m256d base, c1, s1, c2, s2;
+  __attribute__((target("avx2"))) __m256d at(const double* c, const double* s, const double* c2x,
+                                             const double* s2x) const {
+    return _mm256_add_pd(
+        _mm256_add_pd(_mm256_add_pd(_mm256_add_pd(base, _mm256_mul_pd(c1, _mm256_loadu_pd(c))),
+                                    _mm256_mul_pd(s1, _mm256_loadu_pd(s))),
+                      _mm256_mul_pd(c2, _mm256_loadu_pd(c2x))),
+        _mm256_mul_pd(s2, _mm256_loadu_pd(s2x)));
+  }
+  // Bits of the four intervals from points (v, shifted) that are open above `floor`.
+  __attribute__((target("avx2"))) static std::uint32_t open4(__m256d v, __m256d shifted,
+                                                            __m256d floor) {
+    return std::uint32_t(_mm256_movemask_pd(
+        _mm256_cmp_pd(_mm256_max_pd(shifted, v), floor, _CMP_GE_OQ)));
+  }
+  // sampled_arc's fine_open(k): the fine rows of 2 theta run on, and the tables hold the
+  // turn's first point again at kArcFine, so the nine points are read straight through.
+  __m256d fine_floor;
+  __attribute__((target("avx2"))) __m256d at_fine(int j) const {
+    return at(kCircle.c + j, kCircle.s + j, kCircle.fine_c2 + j, kCircle.fine_s2 + j);
+  }
+  __attribute__((target("avx2"))) std::uint32_t operator()(int k) const {
+    const int i = (k & (kArcSamples - 1)) * kArcRefine;
+    return open4(at_fine(i), at_fine(i + 1), fine_floor) |
+           open4(at_fine(i + 4), at_fine(i + 5), fine_floor) << 4;
+  }
+};
+
+__attribute__((target("avx2"))) ThetaArc sampled_arc_avx2(double c0, double c1, double s1,
+                                                         double c2, double s2, double bend,
+                                                         double rounding) {
+  const ArcSum4 sum{_mm256_set1_pd(c0 + rounding), _mm256_set1_pd(c1), _mm256_set1_pd(s1),
+                    _mm256_set1_pd(c2), _mm256_set1_pd(s2),
+                    _mm256_set1_pd(-bend * kArcFineStep * kArcFineStep / 4)};
+  __m256d v[4];
+  for (int g = 0; g < 4; ++g)
+    v[g] = sum.at(kCircle.coarse_c + 4 * g, kCircle.coarse_s + 4 * g,
+                  kCircle.coarse_c2 + 4 * g, kCircle.coarse_s2 + 4 * g);
+  // Points 1 to 4, 5 to 8, ..., 13 to 16 from the registers themselves (through memory, the
+  // loads would wait on the stores), point kArcSamples being point 0 (the same tables'
+  // entries).
+  const __m256d coarse_floor = _mm256_set1_pd(-bend * kArcCoarseStep * kArcCoarseStep / 4);
+  std::uint32_t open = 0;
+  for (int g = 0; g < 4; ++g) {
+    const __m256d next = _mm256_blend_pd(v[g], v[(g + 1) & 3], 1);  // its lane 0, v[g]'s others
+    const __m256d shifted = _mm256_permute4x64_pd(next, 0x39);    // lanes 1, 2, 3, 0
+    open |= ArcSum4::open4(v[g], shifted, coarse_floor) << (4 * g);
+  }
+  if (open == 0) return {1, 0, 0};
+  // The first point where f is least: the first equal to the least value, as the scalar's
+  // strict comparisons find it (-0 and +0 compare equal in both); with a NaN, its own loop.
+  const __m256d least2 = _mm256_min_pd(_mm256_min_pd(v[0], v[1]), _mm256_min_pd(v[2], v[3]));
+  int origin = 0;
+  if (_mm256_movemask_pd(_mm256_or_pd(_mm256_cmp_pd(v[0], v[1], _CMP_UNORD_Q),
+                                      _mm256_cmp_pd(v[2], v[3], _CMP_UNORD_Q)))) {
+    alignas(32) double values[kArcSamples];
+    for (int g = 0; g < 4; ++g) _mm256_store_pd(values + 4 * g, v[g]);
+    for (int j = 0; j < kArcSamples; ++j) origin = values[j] < values[origin] ? j : origin;
+  } else {
+    __m256d least = _mm256_min_pd(least2, _mm256_permute2f128_pd(least2, least2, 1));
+    least = _mm256_min_pd(least, _mm256_permute_pd(least, 5));
+    std::uint32_t at_least = 0;
+    for (int g = 0; g < 4; ++g)
+      at_least |= std::uint32_t(_mm256_movemask_pd(_mm256_cmp_pd(v[g], least, _CMP_EQ_OQ)))
+                  << (4 * g);
+    origin = __builtin_ctz(at_least);
+  }
+  return arc_of_open(open, origin, sum);
+}
+
+#endif  // SWARM_ARC_AVX2
+
+using ArcFinder = ThetaArc (*)(double c0, double c1, double s1, double c2, double s2,
+                               double bend, double rounding);
 
 // x + w with x = a cos(theta) + B sin(theta), B = b / omega (fast_engine_window.h), in phases
 // of 2 theta: never where S1 or S2 is; else the arc sampled_arc finds, or S1 where that is
 // open for less time.
+template <ArcFinder arc_of>
 Window attractive_off_centre(const Vec3& a, const Vec3& b, const Vec3& w, double inv_omega,
                              double T2) {
   const double w2 = w.squaredNorm();
@@ -172,7 +276,7 @@ Window attractive_off_centre(const Vec3& a, const Vec3& b, const Vec3& w, double
   const double sum = T2 + P + A + w2;
   if (T2 - P - A - w2 - 1e-12 * sum > 2 * rho) return {0, -1};
   // f = |x + w|^2 - T2, raised by far more than its rounding; |f''| <= 2 rho + 4 A.
-  const ThetaArc arc = sampled_arc(P + w2 - T2, 2 * u, 2 * v, Q, S, rho + 2 * A, 1e-12 * sum);
+  const ThetaArc arc = arc_of(P + w2 - T2, 2 * u, 2 * v, Q, S, rho + 2 * A, 1e-12 * sum);
   if (arc.lo > arc.hi) return {0, -1};
   // S1 is open 4 alpha of every 4 pi, the arc 2 (hi - lo) = 4 x: S1 is open for less time
   // where alpha < x, cos(alpha) = (inner^2 - P) / A > cos(x) (x = (arc.hi - arc.lo) / 2 <=
@@ -263,18 +367,37 @@ Window window_of(const Vec3& a, const Vec3& b_free, const Spring& spring, double
   return {w.first + phase_origin + rounding, w.second + phase_origin - rounding};
 }
 
-Window off_centre_window_of(const Vec3& a, const Vec3& b, const Vec3& w, const Spring& spring,
-                            double T2, double phase_origin) {
+namespace {
+
+template <ArcFinder arc_of>
+Window off_centre_window(const Vec3& a, const Vec3& b, const Vec3& w, const Spring& spring,
+                         double T2, double phase_origin) {
   if (spring.k == 0) return window_of(a + w, b, spring, T2, phase_origin);  // exact
   if (spring.k < 0) {
     const double inner = std::sqrt(T2) - w.norm();
     return inner > 0 ? window_of(a, b, spring, inner * inner, phase_origin)
                      : always_window(spring.k);
   }
-  const Window win = attractive_off_centre(a, b, w, spring.inv_omega, T2);
+  const Window win = attractive_off_centre<arc_of>(a, b, w, spring.inv_omega, T2);
   if (win.second < 0 || (win.second >= M_PI && win.second < kOnceATurn)) return win;
   const double rounding = 4 * std::numeric_limits<double>::epsilon() * (std::abs(phase_origin) + 8);
   return {win.first + phase_origin, win.second + rounding};
+}
+
+}  // namespace
+
+Window off_centre_window_of(const Vec3& a, const Vec3& b, const Vec3& w, const Spring& spring,
+                            double T2, double phase_origin) {
+  return off_centre_window<sampled_arc>(a, b, w, spring, T2, phase_origin);
+}
+
+Window off_centre_window_of_avx2(const Vec3& a, const Vec3& b, const Vec3& w,
+                                 const Spring& spring, double T2, double phase_origin) {
+#ifdef SWARM_ARC_AVX2
+  return off_centre_window<sampled_arc_avx2>(a, b, w, spring, T2, phase_origin);
+#else
+  return off_centre_window<sampled_arc>(a, b, w, spring, T2, phase_origin);
+#endif
 }
 
 Window always_window(double k) {

@@ -79,6 +79,11 @@ inline constexpr double kOnceATurn = 16;
 /// J < 0: S1 alone.
 Window off_centre_window_of(const Vec3& a, const Vec3& b, const Vec3& w, const Spring& spring,
                             double T2, double phase_origin);
+/// off_centre_window_of with its grid of the turn four points to an AVX2 register, to the
+/// last bit (the scalar one where the build has no AVX2 path). Only on a CPU with AVX2:
+/// off_centre_windows_of (fast_engine_window_batch.h) asks.
+Window off_centre_window_of_avx2(const Vec3& a, const Vec3& b, const Vec3& w,
+                                 const Spring& spring, double T2, double phase_origin);
 
 /// The times at which one coordinate of the oscillator, h_z(tau) = xc(tau) a_z + xs(tau) b_z,
 /// can be at or below the level L: a floor's window, in the same two numbers as window_of's

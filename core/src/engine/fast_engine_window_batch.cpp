@@ -167,4 +167,17 @@ void windows_of(const Vec3* a, const Vec3* b, std::size_t n, const Spring& sprin
   windows_one_by_one(a, b, n, spring, T2, phase_origin, out);
 }
 
+void off_centre_windows_of(const Vec3* a, const Vec3* b, std::size_t n, const Vec3& w,
+                           const Spring& spring, double T2, double phase_origin, Window* out) {
+#ifdef SWARM_WINDOWS_AVX2
+  if (cpu_has_avx2()) {
+    for (std::size_t j = 0; j < n; ++j)
+      out[j] = off_centre_window_of_avx2(a[j], b[j], w, spring, T2, phase_origin);
+    return;
+  }
+#endif
+  for (std::size_t j = 0; j < n; ++j)
+    out[j] = off_centre_window_of(a[j], b[j], w, spring, T2, phase_origin);
+}
+
 }  // namespace swarm::fast
