@@ -116,8 +116,9 @@ constexpr double kArcCoarseStep = 2 * M_PI / kArcSamples, kArcFineStep = kArcCoa
 // sampled_arc's work once the coarse grid is known: open (bit j: coarse interval j open) and
 // origin (the first point where f is least) narrowed to the fine intervals that fine_open(k)
 // finds open in coarse interval k (any k >= 0, taken modulo the turn).
+// (Inlined into each caller: into sampled_arc_avx2, its AVX2 fine_open is inlined, too.)
 template <class FineOpen>
-ThetaArc arc_of_open(std::uint32_t open, int origin, const FineOpen& fine_open) {
+__attribute__((always_inline)) inline ThetaArc arc_of_open(std::uint32_t open, int origin, const FineOpen& fine_open) {
   if (open == 0) return {1, 0, 0};
   const std::uint64_t twice = std::uint64_t(open) | std::uint64_t(open) << kArcSamples;
   const auto turned = std::uint32_t((twice >> origin) & ((std::uint64_t(1) << kArcSamples) - 1));
