@@ -21,28 +21,33 @@ command -v ccache >/dev/null && launcher=(ccache)
 
 # The core compiles one unit a folder (a file that includes the folder's sources: each header
 # parsed once for the folder, half the CPU time of a file at a time: 42 against 83 s,
-# 2026-11-28), on every core; only units whose sources or headers changed are rebuilt.
+# 2026-11-28), on every core; a unit is rebuilt when its folder's sources or a header changed.
 objects=()
 jobs=$(nproc 2>/dev/null || echo 2)
-units=()
+headers=$(find core/include core/src -name '*.h')
+# stale OBJECT FILE...: the object is missing or older than one of the files.
+stale() {
+  local obj=$1
+  shift
+  [ ! -f "$obj" ] || [ -n "$(find "$@" -newer "$obj" -print -quit)" ]
+}
+# compile SOURCE OBJECT: in the background, at most one compiler a core.
+compile() {
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
+  "${launcher[@]}" clang++ "${flags[@]}" -c "$1" -o "$2" &
+}
 for folder in core/src/*/; do
-  name=$(basename "$folder")
-  unit="$out/obj/core_$name.cpp"
+  unit="$out/obj/core_$(basename "$folder").cpp"
   listing=$(for src in "$folder"*.cpp; do echo "#include \"$PWD/$src\""; done)
-  [ -f "$unit" ] && [ "$(cat "$unit")" = "$listing" ] || echo "$listing" >"$unit"
-  units+=("$unit")
+  [ "$(cat "$unit" 2>/dev/null)" = "$listing" ] || echo "$listing" >"$unit"
+  # shellcheck disable=SC2086 # the headers' paths have no spaces
+  stale "${unit%.cpp}.o" "$unit" "$folder"*.cpp $headers && compile "$unit" "${unit%.cpp}.o"
+  objects+=("${unit%.cpp}.o")
 done
-for src in "${units[@]}" tests/fuzz/preset_fuzz.cpp; do
-  obj="$out/obj/$(basename "${src%.cpp}").o"
-  sources=("$src")
-  case $src in "$out"/obj/core_*) sources=(core/src/"$(basename "${src%.cpp}" | sed 's/^core_//')"/*.cpp) ;; esac
-  if [ ! -f "$obj" ] || [ -n "$(find "$src" "${sources[@]}" -newer "$obj" -print -quit)" ] ||
-     [ -n "$(find core/include core/src -newer "$obj" -name '*.h' -print -quit)" ]; then
-    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do wait -n; done
-    "${launcher[@]}" clang++ "${flags[@]}" -c "$src" -o "$obj" &
-  fi
-  objects+=("$obj")
-done
+# shellcheck disable=SC2086
+stale "$out/obj/preset_fuzz.o" tests/fuzz/preset_fuzz.cpp $headers &&
+  compile tests/fuzz/preset_fuzz.cpp "$out/obj/preset_fuzz.o"
+objects+=("$out/obj/preset_fuzz.o")
 while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n; done
 clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$out/preset_fuzz" -lpthread
 
