@@ -5,12 +5,9 @@
 #include <cstdint>
 #include <limits>
 
+#include "math/avx2.h"
 #include "math/fast_math.h"
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__EMSCRIPTEN__)
-#define SWARM_ARC_AVX2 1
-#include <immintrin.h>
-#endif
+#include "math/portable_math.h"
 
 namespace swarm::fast {
 namespace {
@@ -91,8 +88,9 @@ struct SampledCircle {
       coarse_s2[kArcSamples + 1];  // the turn's first point again at its end
   SampledCircle() {
     for (int j = 0; j < kArcFine; ++j) {
-      c[j] = std::cos(2 * M_PI * j / kArcFine);
-      s[j] = std::sin(2 * M_PI * j / kArcFine);
+      // portable: the same table natively and in wasm (libm's last bits differ).
+      c[j] = portable::cos(2 * M_PI * j / kArcFine);
+      s[j] = portable::sin(2 * M_PI * j / kArcFine);
     }
     c[kArcFine] = c[0];
     s[kArcFine] = s[0];
@@ -178,7 +176,7 @@ ThetaArc sampled_arc(double c0, double c1, double s1, double c2, double s2, doub
   return arc_of_open(open, origin, fine_open);
 }
 
-#ifdef SWARM_ARC_AVX2
+#ifdef SWARM_AVX2_BUILD
 
 // sampled_arc four grid points to a register. Each point's value is the scalar's sum, term by
 // term in its order, of the same tables' entries (target("avx2") without "fma": nothing is
@@ -255,7 +253,7 @@ __attribute__((target("avx2"))) ThetaArc sampled_arc_avx2(double c0, double c1, 
   return arc_of_open(open, origin, sum);
 }
 
-#endif  // SWARM_ARC_AVX2
+#endif  // SWARM_AVX2_BUILD
 
 using ArcFinder = ThetaArc (*)(double c0, double c1, double s1, double c2, double s2,
                                double bend, double rounding);
@@ -394,7 +392,7 @@ Window off_centre_window_of(const Vec3& a, const Vec3& b, const Vec3& w, const S
 
 Window off_centre_window_of_avx2(const Vec3& a, const Vec3& b, const Vec3& w,
                                  const Spring& spring, double T2, double phase_origin) {
-#ifdef SWARM_ARC_AVX2
+#ifdef SWARM_AVX2_BUILD
   return off_centre_window<sampled_arc_avx2>(a, b, w, spring, T2, phase_origin);
 #else
   return off_centre_window<sampled_arc>(a, b, w, spring, T2, phase_origin);

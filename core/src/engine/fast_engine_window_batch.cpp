@@ -4,12 +4,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "math/avx2.h"
 #include "math/fast_math.h"
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__EMSCRIPTEN__)
-#define SWARM_WINDOWS_AVX2 1
-#include <immintrin.h>
-#endif
 
 namespace swarm::fast {
 namespace {
@@ -19,7 +15,7 @@ void windows_one_by_one(const Vec3* a, const Vec3* b, std::size_t n, const Sprin
   for (std::size_t j = 0; j < n; ++j) out[j] = window_of(a[j], b[j], spring, T2, phase_origin);
 }
 
-#ifdef SWARM_WINDOWS_AVX2
+#ifdef SWARM_AVX2_BUILD
 
 #define SWARM_AVX2 __attribute__((target("avx2")))
 
@@ -119,12 +115,12 @@ bool cpu_has_avx2() {
   return has;
 }
 
-#endif  // SWARM_WINDOWS_AVX2
+#endif  // SWARM_AVX2_BUILD
 
 }  // namespace
 
 bool windows_use_avx2() {
-#ifdef SWARM_WINDOWS_AVX2
+#ifdef SWARM_AVX2_BUILD
   return cpu_has_avx2();
 #else
   return false;
@@ -133,7 +129,7 @@ bool windows_use_avx2() {
 
 void windows_of(const Vec3* a, const Vec3* b, std::size_t n, const Spring& spring, double T2,
                 double phase_origin, Window* out) {
-#ifdef SWARM_WINDOWS_AVX2
+#ifdef SWARM_AVX2_BUILD
   if (spring.k < 0 && cpu_has_avx2()) {
     // window_of's widening for the rounding of the phase origin, computed as it does.
     const double rounding =
@@ -169,7 +165,7 @@ void windows_of(const Vec3* a, const Vec3* b, std::size_t n, const Spring& sprin
 
 void off_centre_windows_of(const Vec3* a, const Vec3* b, std::size_t n, const Vec3& w,
                            const Spring& spring, double T2, double phase_origin, Window* out) {
-#ifdef SWARM_WINDOWS_AVX2
+#ifdef SWARM_AVX2_BUILD
   if (cpu_has_avx2()) {
     for (std::size_t j = 0; j < n; ++j)
       out[j] = off_centre_window_of_avx2(a[j], b[j], w, spring, T2, phase_origin);
