@@ -444,6 +444,10 @@ class FastEngine final : public Engine {
       motion_.V_cm = step.cm_vv * motion_.V_cm + step.cm_vg * motion_.g;
       if (gamma_ > 0) tally.books.drag_loss += energy_before - energy_at(f1);
     }
+    if (off_centre_anchors_ && dt > 0) {
+      const double memory = k_ > 0 ? kFitTimes / omega() : kFitSteps * dt;
+      wall_push_ += (kick / dt - wall_push_) * std::min(1.0, dt / memory);
+    }
     lookahead_.record_kick(step_, kick.norm());
     tau_ += dt;
     t_ += dt;
@@ -579,9 +583,10 @@ class FastEngine final : public Engine {
     Vec3 offset = next.offset(motion_, now, ForcedFlow{});
     fast::OffsetFit fit;
     if (off_centre_anchors_) {
-      // The offset is R_cm now and, until the next kicks, moves as the CM does.
+      // The offset is R_cm now and moves as the CM does under g, less the wall's recent mean
+      // push, which moves R_cm and Y alike but Y as an oscillator.
       const double horizon = k_ > 0 ? kFitTimes / omega() : kFitSteps * dt_;
-      fit = fast::fit_offset_path(offset, motion_.V_cm, motion_.g, k_, horizon);
+      fit = fast::fit_offset_path(offset, motion_.V_cm, motion_.g, wall_push_, k_, horizon);
       // The reference path less F: in the epoch's flow, F's coefficients are the inverse flow
       // of (A, B) now.
       const double det = now.xc * now.vs - now.vc * now.xs;
@@ -860,6 +865,9 @@ class FastEngine final : public Engine {
   // the container's centre (fast_engine_anchor.h): J < 0 and drag keep centred ones, for
   // which off_centre_window_of has no tighter window.
   bool off_centre_anchors_ = false;
+  // Off-centre: the wall's push on the CM (kicks a time, length/time^2), a running mean over
+  // the fit's horizon: the CM's forecast falls with g less what the wall holds up.
+  Vec3 wall_push_ = Vec3::Zero();
   double swarm_size_ = 0;       // the largest distance from the CM at the start
   std::vector<fast::Window> floor_windows_;  // with a floor: each particle's, as its window
   std::vector<Body> orbits_;

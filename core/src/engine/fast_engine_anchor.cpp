@@ -27,8 +27,8 @@ constexpr double kMarginWallSteps = 512;
 
 }  // namespace
 
-OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, double k,
-                          double horizon) {
+OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, const Vec3& push,
+                          double k, double horizon) {
   OffsetFit fit;
   fit.centre = offset;
   if (!(horizon > 0)) return fit;
@@ -44,6 +44,9 @@ OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, do
     u[std::size_t(j)] = 1 - f.c;
     s[std::size_t(j)] = f.s;
     P[std::size_t(j)] = offset + tau * v + (0.5 * tau * tau) * acc;
+    // A steady push a moves R_cm by a tau^2 / 2 and Y, which takes the same kicks, by
+    // a (1 - cos) / k: the offset R_cm - Y by the difference (nothing when k = 0).
+    if (k > 0) P[std::size_t(j)] += (0.5 * tau * tau - u[std::size_t(j)] / k) * push;
   }
   const bool oscillates = k > 0;
   double G[3][3] = {};

@@ -131,10 +131,11 @@ struct OffsetFit {
   double residual = 0;                      ///< length
 };
 
-/// The fit for an offset now at `offset`, moving with velocity v and acceleration acc (k = J M
-/// >= 0, no drag), over `horizon` (time).
-OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, double k,
-                          double horizon);
+/// The fit for an offset now at `offset`, moving with velocity v and acceleration acc, and a
+/// steady push on the CM (the wall's, length/time^2) that kicks Y alike (k = J M >= 0, no
+/// drag), over `horizon` (time).
+OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, const Vec3& push,
+                          double k, double horizon);
 
 /// What a new anchor's margin depends on.
 struct MarginInputs {
