@@ -109,7 +109,8 @@ native_lane() {
   stage "native and wasm reach the same final state" python3 tests/wasm/same_final_state.py \
     build/app/swarmlab build-wasm/app/swarmlab.js \
     tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
-    assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json
+    assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json \
+    tests/wasm/gravity-wall.json tests/wasm/gravity-floor.json
   stage "fuzzing, a minute (scripts/fuzz.sh, ctest -L fuzz)" nice -n 10 scripts/fuzz.sh 60
   # What ctest's web_audit runs, outside ctest: the wasm lane's ctest runs in build/ meanwhile.
   stage "Lighthouse and axe-core on the page (node tests/web/audit.mjs, ctest -L audit)" \
