@@ -581,12 +581,25 @@ class FastEngine final : public Engine {
     next.q = motion_.bY;
     const ForcedFlow now = flow_at(tau_);
     Vec3 offset = next.offset(motion_, now, ForcedFlow{});
+    double R = length(), wall_step = 0;
+    if (path_ && dt_ > 0) {
+      const double R_end = path_->radius_at(t_ + dt_);
+      wall_step = std::abs(R_end - R);
+      R = std::min(R, R_end);
+    }
     fast::OffsetFit fit;
     if (off_centre_anchors_) {
       // The offset is R_cm now and moves as the CM does under g, less the wall's recent mean
       // push, which moves R_cm and Y alike but Y as an oscillator.
-      const double horizon = k_ > 0 ? kFitTimes / omega() : kFitSteps * dt_;
+      double horizon = k_ > 0 ? kFitTimes / omega() : kFitSteps * dt_;
       fit = fast::fit_offset_path(offset, motion_.V_cm, motion_.g, wall_push_, k_, horizon);
+      // Strong gravity on a loose swarm (g / k, or g horizon^2 for J = 0, of the order of R):
+      // a shorter horizon until the anchor's margin, which has a cap, holds what the fit
+      // leaves; else the anchor would start with its offset outside its own margin.
+      while (fit.residual > fast::largest_fit_residual(R) && horizon > dt_) {
+        horizon *= 0.5;
+        fit = fast::fit_offset_path(offset, motion_.V_cm, motion_.g, wall_push_, k_, horizon);
+      }
       // The reference path less F: in the epoch's flow, F's coefficients are the inverse flow
       // of (A, B) now.
       const double det = now.xc * now.vs - now.vc * now.xs;
@@ -594,12 +607,6 @@ class FastEngine final : public Engine {
       next.q -= (now.xc * fit.B - now.vc * fit.A) / det;
       offset = fit.centre;
       if (dt_ > 0) next.renew_at = step_ + StepIndex(horizon / dt_);
-    }
-    double R = length(), wall_step = 0;
-    if (path_ && dt_ > 0) {
-      const double R_end = path_->radius_at(t_ + dt_);
-      wall_step = std::abs(R_end - R);
-      R = std::min(R, R_end);
     }
     const fast::MarginInputs margin{R,
                                     wall_step,
@@ -865,8 +872,9 @@ class FastEngine final : public Engine {
   // the container's centre (fast_engine_anchor.h): J < 0 and drag keep centred ones, for
   // which off_centre_window_of has no tighter window.
   bool off_centre_anchors_ = false;
-  // Off-centre: the wall's push on the CM (kicks a time, length/time^2), a running mean over
-  // the fit's horizon: the CM's forecast falls with g less what the wall holds up.
+  // Off-centre: the push of the wall and the floor on the CM (their kicks a time,
+  // length/time^2), a running mean over the fit's horizon: the CM's forecast falls with g less
+  // what they hold up.
   Vec3 wall_push_ = Vec3::Zero();
   double swarm_size_ = 0;       // the largest distance from the CM at the start
   std::vector<fast::Window> floor_windows_;  // with a floor: each particle's, as its window

@@ -18,6 +18,8 @@ constexpr double kMarginDriftTimes = 4;
 // (bench/RESULTS.md) against slacks of 0.005 to 0.1 and the residual counted once or twice.
 constexpr double kFitResidualTimes = 2;
 constexpr double kFitSlack = 0.035;
+// No margin is wider than this fraction of the wall radius.
+constexpr double kMarginCap = 0.5;
 // At most N / kShellBudget particles within reach of a widened margin (J > 0).
 constexpr std::size_t kShellBudget = 100;
 // A moving wall spends an anchor's margin (Anchor::margin_at), which is renewed at half of it:
@@ -87,6 +89,8 @@ OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, co
   return fit;
 }
 
+double largest_fit_residual(double R) { return (kMarginCap - kFitSlack) * R / kFitResidualTimes; }
+
 Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs& in) {
   if (in.off_centre) anchor.centre = offset;
   const double base = in.off_centre ? 0.0 : offset.norm();
@@ -106,7 +110,7 @@ Anchor anchor_with_margin(Anchor anchor, const Vec3& offset, const MarginInputs&
       within += in.gaps->counts[std::size_t(bin++)];
     extra = std::max(extra, 0.5 * Rw * bin / kBins);
   }
-  extra = std::min(extra, 0.5 * Rw);
+  extra = std::min(extra, kMarginCap * Rw);
   anchor.margin = base + extra;
   anchor.radius = Rw;
   anchor.threshold = Rw - anchor.margin;

@@ -137,6 +137,11 @@ struct OffsetFit {
 OffsetFit fit_offset_path(const Vec3& offset, const Vec3& v, const Vec3& acc, const Vec3& push,
                           double k, double horizon);
 
+/// The largest OffsetFit::residual an off-centre anchor's margin holds for a wall of radius R
+/// (length): anchor_with_margin widens the margin by a multiple of the residual and a slack, up
+/// to a cap.
+double largest_fit_residual(double R);
+
 /// What a new anchor's margin depends on.
 struct MarginInputs {
   double R = 1;          ///< the wall's radius

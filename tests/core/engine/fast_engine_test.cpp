@@ -83,6 +83,28 @@ TEST_CASE("under gravity and drag the fast engine hits the wall when the referen
   }
 }
 
+TEST_CASE("under strong gravity a loose swarm hits the wall when the reference engine does") {
+  // g = 9.8 in the unit sphere with J = 0 (free particles) or a weak pull (omega = 0.1): the
+  // CM's parabola bends by g h^2 / 2, about 8 R, over an anchor's horizon h, far more than an
+  // anchor's margin can hold (the engine then shortens the horizon: at J = 0 main's engine hit
+  // the wall differently from the 8th step on). 400 steps: the swarm, pressed on the wall,
+  // bounces every few steps, and the two engines' rounding would part later.
+  for (double J : {0.0, 0.01}) {
+    CAPTURE(J);
+    System s = crowded_swarm(2000, 1.0, 43);
+    s.J *= J;
+    EngineConfig c{Method::analytic, CollisionMode::paper, 1.0};
+    c.forces.gravity = Vec3(0.1, 0, -9.8);
+    SUBCASE("the wall") { CHECK(require_same_run(s, c, 1e-2, 400).hits > 10000); }
+    SUBCASE("the wall and a floor") {
+      c.floor = Floor{-0.5, 1};
+      const SideBySideRun run = require_same_run(s, c, 1e-2, 400);
+      CHECK(run.hits > 1000);
+      CHECK(run.floor_hits > 10000);
+    }
+  }
+}
+
 TEST_CASE("the fast engine drops the shipped swarm on its floor as the reference engine does") {
   // No container: the floor is the only wall. 4,000 steps take the swarm through its first
   // bounces.
