@@ -258,18 +258,23 @@ const tabStates = (me) => me.dom.locator('[role=tab]').evaluateAll(
 // a pause that lands as it starts again, before the wall's first sample, is rightly said
 // without P (the read-outs wait for samples too); the person plays on and pauses again.
 async function pauseAndListen(page, me, where) {
+  let said = '';
   for (let tries = 0; tries < 3; ++tries) {
     const before = (await liveRegionSaid(page)).length;
     await me.press('button', /Pause/);
+    // What the live region says from "Paused, " on (a lesson's own words may come before it
+    // and may hold a "P = " of their own).
     const text = await page.waitForFunction(
-      (n) => window.liveRegionSaid.slice(n).filter((s) => /Paused, /.test(s)).pop(), before, { timeout: 20_000 })
+      (n) => window.liveRegionSaid.slice(n).map((s) => s.slice(s.indexOf('Paused, ')))
+        .filter((s) => s.startsWith('Paused, ')).pop(), before, { timeout: 20_000 })
       .then((h) => h.jsonValue(), async () => {
         const heard = (await liveRegionSaid(page)).slice(before).slice(-4).join(' | ') || 'nothing';
         const focus = await page.evaluate(() => document.activeElement?.getAttribute('aria-label') || document.activeElement?.tagName);
         throw new Error(`no "Paused" from the live region within 20 s of pressing Pause (it said: ${heard}; focus on ${focus})`);
       });
-    if (/P = /.test(text)) {
-      const number = (symbol) => parseFloat(text.split(`${symbol} = `)[1]);
+    said = text;
+    if (/ P = /.test(text)) {
+      const number = (symbol) => parseFloat(text.split(` ${symbol} = `)[1]);
       for (const symbol of ['P', 'T']) {
         const shown = await readout(me, symbol);
         check(`${where}: the live region says ${symbol} as the read-out shows it (${number(symbol)}, ${shown})`,
@@ -277,12 +282,16 @@ async function pauseAndListen(page, me, where) {
       }
       return;
     }
+    // No P said: the read-out must be waiting for its samples too.
+    const waiting = await me.dom.locator('p', { hasText: /^P = [^-+0-9]/ }).first()
+      .waitFor({ state: 'attached', timeout: 10_000 }).then(() => true, () => false);
+    if (!waiting) throw new Error(`the live region said no P ("${text}") while the read-out shows one`);
     await me.press('button', /Play/);
     for (const symbol of ['P', 'T'])
       await me.dom.locator('p', { hasText: new RegExp(`^${symbol} = [-+]?[0-9]`) }).first()
         .waitFor({ state: 'attached', timeout: 60_000 });
   }
-  throw new Error('three pauses in a row came before the wall\'s first sample');
+  throw new Error(`three pauses in a row came before the wall's first sample (the last said "${said}")`);
 }
 
 // Waits until a paragraph of the parallel DOM says it (feedback appears next to Check).
