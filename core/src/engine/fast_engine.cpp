@@ -307,7 +307,11 @@ class FastEngine final : public Engine {
   std::optional<double> container_radius() const override { return config_.container_radius; }
   const EngineConfig& config() const override { return config_; }
   std::unique_ptr<Engine> clone() const override { return std::make_unique<FastEngine>(*this); }
-  const FastEngineStats& stats() const { return stats_; }
+  FastEngineStats stats() const {
+    FastEngineStats stats = stats_;
+    stats.wall_push = wall_push_;
+    return stats;
+  }
 
  private:
   // [SECTION] Checks

@@ -83,6 +83,36 @@ TEST_CASE("under gravity and drag the fast engine hits the wall when the referen
   }
 }
 
+TEST_CASE("under gravity the anchors' forecast takes in the wall's mean push on the CM") {
+  // The swarm, pressed on the wall, is held up by it: over 25 time units the wall's kicks add
+  // up to the CM's change of velocity less g t. The engine's running mean of the push (what its
+  // forecast of the CM uses), averaged over the same steps, must agree, sign and size, with
+  // that sum taken from the particles' momenta.
+  const System s = crowded_swarm(2000, 1.0, 47);
+  EngineConfig c{Method::analytic, CollisionMode::paper, 1.0};
+  c.forces.gravity = Vec3(0.1, 0, -0.6);
+  auto engine = make_fast_engine(s, c);
+  const double dt = 1e-2;
+  const auto cm_velocity = [](const System& now) {
+    Vec3 p = Vec3::Zero();
+    for (const Particle& q : now.particles) p += q.m * q.v;
+    return Vec3(p / total_mass(now));
+  };
+  for (int i = 0; i < 500; ++i) engine->step(dt);
+  const Vec3 v0 = cm_velocity(engine->system());
+  Vec3 mean_push = Vec3::Zero();
+  constexpr int kSteps = 2500;
+  for (int i = 0; i < kSteps; ++i) {
+    engine->step(dt);
+    mean_push += fast_engine_stats(*engine)->wall_push / kSteps;
+  }
+  const Vec3 held = (cm_velocity(engine->system()) - v0) / (kSteps * dt) - c.forces.gravity;
+  CAPTURE(held.transpose());
+  CAPTURE(mean_push.transpose());
+  CHECK(held.z() > 0.3);  // the wall holds the swarm up against g_z = -0.6
+  CHECK((mean_push - held).norm() < 0.1 * c.forces.gravity.norm());
+}
+
 TEST_CASE("under strong gravity a loose swarm hits the wall when the reference engine does") {
   // g = 9.8 in the unit sphere with J = 0 (free particles) or a weak pull (omega = 0.1): the
   // CM's parabola bends by g h^2 / 2, about 8 R, over an anchor's horizon h, far more than an

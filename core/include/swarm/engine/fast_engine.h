@@ -84,6 +84,9 @@ struct FastEngineStats {
   std::int64_t reschedules = 0;     ///< O(N) full reschedules (radius or dt changed)
   std::int64_t expired = 0;         ///< particles rescheduled because their anchor expired
   std::int64_t parallel_steps = 0;  ///< steps whose checks ran on several threads
+  /// Under gravity: the push of the wall and the floor on the CM that the anchors' forecast
+  /// takes in (length/time^2), a running mean of the kicks over the forecast's horizon.
+  Vec3 wall_push = Vec3::Zero();
 };
 
 /// The counters of engine if it is a fast engine, else nothing.
