@@ -448,10 +448,8 @@ class FastEngine final : public Engine {
       motion_.V_cm = step.cm_vv * motion_.V_cm + step.cm_vg * motion_.g;
       if (gamma_ > 0) tally.books.drag_loss += energy_before - energy_at(f1);
     }
-    if (off_centre_anchors_ && dt > 0) {
-      const double memory = k_ > 0 ? kFitTimes / omega() : kFitSteps * dt;
-      wall_push_ += (kick / dt - wall_push_) * std::min(1.0, dt / memory);
-    }
+    if (off_centre_anchors_ && dt > 0)
+      wall_push_ += (kick / dt - wall_push_) * std::min(1.0, dt / fit_horizon());
     lookahead_.record_kick(step_, kick.norm());
     tau_ += dt;
     t_ += dt;
@@ -467,6 +465,9 @@ class FastEngine final : public Engine {
   /// The length the schedule's margins and budgets scale with: the wall's radius, or without
   /// one (a floor alone) the swarm's size at the start.
   double length() const { return config_.container_radius.value_or(swarm_size_); }
+
+  /// How far ahead an off-centre anchor's forecast looks (time), at most (OffsetFit).
+  double fit_horizon() const { return k_ > 0 ? kFitTimes / omega() : kFitSteps * dt_; }
 
   /// The flow of the y_i over the time tau since the epoch began.
   ForcedFlow flow_at(double tau) const { return ForcedFlow::over(k_, gamma_, tau); }
@@ -595,7 +596,7 @@ class FastEngine final : public Engine {
     if (off_centre_anchors_) {
       // The offset is R_cm now and moves as the CM does under g, less the wall's recent mean
       // push, which moves R_cm and Y alike but Y as an oscillator.
-      double horizon = k_ > 0 ? kFitTimes / omega() : kFitSteps * dt_;
+      double horizon = fit_horizon();
       fit = fast::fit_offset_path(offset, motion_.V_cm, motion_.g, wall_push_, k_, horizon);
       // Strong gravity on a loose swarm (g / k, or g horizon^2 for J = 0, of the order of R):
       // a shorter horizon until the anchor's margin, which has a cap, holds what the fit

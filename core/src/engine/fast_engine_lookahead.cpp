@@ -1,18 +1,12 @@
 #include "engine/fast_engine_lookahead.h"
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__EMSCRIPTEN__)
-#define SWARM_LOOKAHEAD_AVX2 1
-#include <immintrin.h>
-#endif
+#include "math/avx2.h"
 
 namespace swarm::fast {
 
-#ifdef SWARM_LOOKAHEAD_AVX2
+#ifdef SWARM_AVX2_BUILD
 
-bool Lookahead::uses_avx2() {
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has;
-}
+bool Lookahead::uses_avx2() { return cpu_has_avx2(); }
 
 // target("avx2") without "fma": the compiler cannot fuse a multiply and an add, so each lane
 // rounds as first_reach_one_by_one does.

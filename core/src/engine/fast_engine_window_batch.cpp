@@ -110,11 +110,6 @@ SWARM_AVX2 void repulsive4(const Vec3* a, const Vec3* b, double inv_omega, doubl
   special = _mm256_movemask_pd(_mm256_castsi256_pd(off));
 }
 
-bool cpu_has_avx2() {
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has;
-}
-
 #endif  // SWARM_AVX2_BUILD
 
 }  // namespace
