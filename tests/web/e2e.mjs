@@ -173,7 +173,12 @@ async function main(url) {
     // Copy link (the button, clicked): the running preset into the address, the same preset back from it.
     await z.page.evaluate(() => history.replaceState(null, '', location.pathname));
     const clickedCopy = await clickButton(z.page, 'Copy link');
-    await z.page.waitForFunction(() => location.hash.length > 3, null, { timeout: 5000 }).catch(() => {});
+    // A person waits for the notice that shows the link (the address changes first, the notice
+    // and swarmlab.link() with the frame after: the first sign of change is not the end of it).
+    await z.page.waitForFunction(() => {
+      const notice = document.getElementById('notice');
+      return !notice.hidden && notice.className === 'link' && document.getElementById('notice-link').value !== '';
+    }, null, { timeout: 30_000 }).catch(() => {});
     const shown = await state(z.page);
     const copied = await z.page.evaluate(() => location.href);
     const linkShown = await z.page.evaluate(() => document.getElementById('notice-link').value);

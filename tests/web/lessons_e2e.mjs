@@ -42,12 +42,23 @@ async function resize(page, width, height) {
 // Until the app has drawn `text` (the parallel DOM mirrors what the last frame drew).
 const drawn = (page, text) => until(page, (t) => (document.getElementById('parallel-dom') || {}).textContent?.includes(t), text);
 
+// Waits until the measure task's instruments read a value (P and T wait for wall hits), polling
+// the page's own state; gives up only after READING_WAIT_MS (far beyond any loaded machine's
+// first wall sample, inside the suite's watchdog) and then returns null, never a stale value.
+const READING_WAIT_MS = 200_000;
+async function readingShown(page) {
+  const shown = await until(page, () => window.swarmlab.lessonState().task.reading !== null, null, READING_WAIT_MS);
+  return shown ? page.evaluate(() => window.swarmlab.lessonState().task.reading) : null;
+}
+
 // Answers the open step's task the way a student who measured well would; returns the marking.
 async function answerWell(page, lesson, st) {
   const task = st.task;
   if (task.kind === 'measure') {
-    // P and T need wall hits first: wait until the instruments read a value.
-    await until(page, () => window.swarmlab.lessonState().task.reading !== null, null, 60_000);
+    // P and T need wall hits first: a student waits until the instruments read a value, however
+    // long a loaded machine takes (the suite's watchdog bounds a stall), and never answers before.
+    const reading = await readingShown(page);
+    if (reading === null) return { reading, marking: { correct: 'not answered: no reading was shown' } };
     // Read and answer in one evaluation, so no frame passes between them.
     return page.evaluate(() => {
       const reading = window.swarmlab.lessonState().task.reading;
@@ -97,8 +108,7 @@ async function main(url) {
         if (running !== name) problems.push(`step ${st.step}: runs "${running}", not "${name}"`);
       }
       if (st.task) {
-        if (!wrongChecked && st.task.kind === 'measure') {
-          await until(page, () => window.swarmlab.lessonState().task.reading !== null, null, 60_000);
+        if (!wrongChecked && st.task.kind === 'measure' && await readingShown(page) !== null) {
           const wrong = await page.evaluate(() => {
             const reading = window.swarmlab.lessonState().task.reading;
             return reading === null ? null : window.swarmlab.lessonAnswer(reading * 1.5);
