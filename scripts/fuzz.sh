@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes preset parsing, validation and the resource estimate with libFuzzer (Debian's clang,
 # AddressSanitizer and UndefinedBehaviorSanitizer), seeded with the shipped presets, and the
-# browser's share-link decoding under node (tests/fuzz/share_link_fuzz.mjs).
+# browser's share-link decoding under node (tests/fuzz/share_link_fuzz.mjs), as well as the
+# embed bridge's message parser (tests/fuzz/embed_bridge_fuzz.mjs).
 # Usage: scripts/fuzz.sh [seconds] (default 60). New interesting inputs collect in
 # build-fuzz/corpus and make the next run start further; a crash leaves build-fuzz/crash-*,
 # which `build-fuzz/preset_fuzz FILE` replays.
@@ -54,6 +55,9 @@ clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$out/preset_fuzz
 # The share links' decoding in the page's JavaScript, under node, for a third of the time.
 echo "== share-link decoding (web/share_link.js) under node"
 node tests/fuzz/share_link_fuzz.mjs "$(( seconds / 3 > 0 ? seconds / 3 : 1 ))"
+# The embed bridge's messages and its ?origins= list (JavaScript too), as long.
+echo "== embed-bridge messages (web/embed_bridge.js) under node"
+node tests/fuzz/embed_bridge_fuzz.mjs "$(( seconds / 3 > 0 ? seconds / 3 : 1 ))"
 
 # The first corpus folder receives new inputs; the shipped presets are read-only seeds.
 echo "== preset parsing, validation and the resource estimate under libFuzzer"

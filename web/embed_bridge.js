@@ -54,10 +54,14 @@
 
   // An origin as a browser writes event.origin, or null for anything that is not one.
   function exactOrigin(text) {
+    // The URL parser drops a tab or a newline without a word; the list is refused them instead.
+    if (/[\u0000-\u001f\u007f-\u009f]/.test(text)) return null;
     var url;
     try { url = new URL(text); } catch (e) { return null; }
     if (url.protocol !== 'https:' && url.protocol !== 'http:') return null;
-    return url.href === url.origin + '/' ? url.origin : null;  // no path, query, user or fragment
+    // As written, but for the case of letters and a trailing '/': the parser's own mending
+    // (http:///host, /. at the end, a default port) is no origin that was meant.
+    return text.replace(/\/$/, '').toLowerCase() === url.origin ? url.origin : null;
   }
 
   var embedded = addressValues('embed').some(function (v) { return v !== '0' && v !== 'false'; });
@@ -84,8 +88,8 @@
   // What each call takes: its arguments' kinds, all required.
   var calls = {
     ready: [], state: [], time: [], preset: [], positions: [], shipped: [], frames: [], lastMessage: [],
-    load: ['json'], set: ['object'], seek: ['number'], select: ['index'], stopwatch: ['string'],
-    link: [], openLink: ['string'], download: [], exportCsv: [], screenPosition: ['integer'],
+    load: ['json'], set: ['object'], seek: ['number'], select: ['indexOrNull'], stopwatch: ['string'],
+    link: [], openLink: ['string'], download: [], exportCsv: [], screenPosition: ['index'],
     buttonRect: ['string'], welcomeShown: [],
     lessons: [], openLesson: ['json'], lessonState: [], lessonAnswer: ['number'], lessonNext: [],
     lessonBack: [], lessonFinish: [], lessonRestart: [], lessonLink: ['json'],
@@ -94,8 +98,9 @@
     json: ['JSON text or an object', function (v) { return typeof v === 'string' || (v !== null && typeof v === 'object'); }],
     object: ['an object', function (v) { return v !== null && typeof v === 'object' && !Array.isArray(v); }],
     number: ['a finite number', function (v) { return typeof v === 'number' && isFinite(v); }],
-    integer: ['an integer', function (v) { return Number.isInteger(v); }],
-    index: ['an integer >= 0 or null', function (v) { return v === null || (Number.isInteger(v) && v >= 0); }],
+    // Indices are safe integers (exact in a double); the call itself checks them against N.
+    index: ['an integer from 0 to 2^53 - 1', function (v) { return Number.isSafeInteger(v) && v >= 0; }],
+    indexOrNull: ['an integer from 0 to 2^53 - 1 or null', function (v) { return v === null || (Number.isSafeInteger(v) && v >= 0); }],
     string: ['a string', function (v) { return typeof v === 'string'; }],
   };
 
@@ -114,10 +119,15 @@
 
   function plural(n) { return n + ' argument' + (n === 1 ? '' : 's'); }
 
+  // A value as an error quotes it: JSON, at most 100 characters (a cycle or a BigInt: its type).
+  function quoted(value) {
+    try { return String(JSON.stringify(value)).slice(0, 100); } catch (e) { return 'a ' + typeof value + ' that is not JSON'; }
+  }
+
   // The request as plain JSON data ({ id, call, args }), or throws Error(what is wrong).
   function checked(data) {
     if (data.swarmlab !== kVersion)
-      throw new Error('swarmlab: ' + JSON.stringify(data.swarmlab) + ' is not a version of the message format (1 is)');
+      throw new Error('swarmlab: ' + quoted(data.swarmlab) + ' is not a version of the message format (1 is)');
     var id = data.id;
     if (!((typeof id === 'string' && id.length <= kMaxIdChars) || (typeof id === 'number' && isFinite(id))))
       throw new Error('id must be a string of at most ' + kMaxIdChars + ' characters or a number');
@@ -125,13 +135,13 @@
     if (Array.isArray(data.args) && data.args.some(function (a) { return typeof a === 'string' && a.length > kMaxMessageChars; }))
       throw new Error('the message is over ' + kMaxMessageChars + ' characters of JSON, the limit');
     var text;
-    try { text = JSON.stringify(data); } catch (e) { throw new Error('the message is not JSON data (' + e.message + ')'); }
+    try { text = JSON.stringify(data); } catch (e) { throw new Error('the message is not JSON data (' + e.message.split('\n')[0] + ')'); }
     if (text.length > kMaxMessageChars)
       throw new Error('the message is ' + text.length + ' characters of JSON; at most ' + kMaxMessageChars);
     var plain = JSON.parse(text);  // structured-clone extras (Map, Blob, Date) become JSON's
     var call = plain.call;
     if (typeof call !== 'string' || !Object.prototype.hasOwnProperty.call(calls, call))
-      throw new Error((typeof call === 'string' ? 'unknown call "' + call.slice(0, 100) + '"' : 'call must be a string') +
+      throw new Error((typeof call === 'string' ? 'unknown call ' + quoted(call) : 'call must be a string') +
                       ' (calls: ' + Object.keys(calls).join(', ') + ')');
     var args = plain.args === undefined ? [] : plain.args;
     if (!Array.isArray(args)) throw new Error(call + ': args must be an array');
@@ -140,7 +150,7 @@
       throw new Error(call + ' takes ' + plural(wanted.length) + ', not ' + args.length);
     wanted.forEach(function (kind, i) {
       if (!kinds[kind][1](args[i]))
-        throw new Error(call + ': argument ' + (i + 1) + ' must be ' + kinds[kind][0] + ', not ' + JSON.stringify(args[i]).slice(0, 100));
+        throw new Error(call + ': argument ' + (i + 1) + ' must be ' + kinds[kind][0] + ', not ' + quoted(args[i]));
     });
     return { id: plain.id, call: call, args: args };
   }
