@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "math/portable_math.h"
 #include "swarm/engine/engine.h"
 #include "swarm/measure/state_hash.h"
 #include "swarm/physics/diagnostics.h"
@@ -21,6 +22,44 @@
 #include "swarm/preset/preset.h"
 
 namespace swarm::testing {
+
+/// n unit masses, all at speed `speed` in directions drawn from the generator's Maxwellian
+/// (normalised), on a simple cubic lattice filling a ball of radius `room`, nearest first,
+/// so that no two spheres start overlapping when the spacing exceeds 2a.
+inline System lattice_gas(long n, double room, double speed, std::uint64_t seed, double* spacing) {
+  SwarmSpec spec;
+  spec.count = n;
+  spec.velocities = SwarmSpec::Velocities::maxwell;
+  spec.cm_at_rest = true;
+  spec.seed = seed;
+  System s = generate_swarm(spec);
+  const double volume = 4.0 / 3.0 * M_PI * room * room * room;
+  // The core's own cube root (exp and log), so that the start is the same bits in wasm.
+  double h = portable::exp(portable::log(volume / double(n)) / 3);
+  std::vector<Vec3> sites;
+  while (long(sites.size()) < n) {
+    sites.clear();
+    const int k = int(room / h) + 1;
+    for (int x = -k; x <= k; ++x)
+      for (int y = -k; y <= k; ++y)
+        for (int z = -k; z <= k; ++z) {
+          const Vec3 r = h * Vec3(x + 0.5, y + 0.5, z + 0.5);
+          if (r.norm() <= room) sites.push_back(r);
+        }
+    if (long(sites.size()) < n) h *= 0.98;
+  }
+  std::stable_sort(sites.begin(), sites.end(),
+                   [](const Vec3& a, const Vec3& b) { return a.norm() < b.norm(); });
+  for (long i = 0; i < n; ++i) {
+    Particle& p = s.particles[std::size_t(i)];
+    p.m = 1;
+    p.r = sites[std::size_t(i)];
+    p.v = speed * p.v.normalized();
+  }
+  s.J = 0;
+  *spacing = h;
+  return s;
+}
 
 /// The four masses of the paper's Fig. 1 (0.25, 0.5, 1, 1.5) at its drawn positions, with
 /// velocities chosen by hand so the orbits are genuinely three-dimensional.

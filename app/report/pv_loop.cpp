@@ -5,7 +5,8 @@
 
 namespace swarmlab::report {
 
-PvLoop pv_loop(const std::vector<swarm::Sample>& samples, double half_window) {
+PvLoop pv_loop(const std::vector<swarm::Sample>& samples, double half_window,
+               double sphere_radius) {
   PvLoop loop;
   if (samples.size() < 2) return loop;
   // Interval i ends at sample i + 1 (the first sample covers no step).
@@ -16,7 +17,7 @@ PvLoop pv_loop(const std::vector<swarm::Sample>& samples, double half_window) {
   for (std::size_t i = 0; i < running.size(); ++i)
     if (samples[i + 1].R < samples[innermost + 1].R) innermost = i;
   for (std::size_t i = 0; i < running.size(); ++i) {
-    const double V = swarm::sphere_volume(samples[i + 1].R);
+    const double V = swarm::sphere_volume(samples[i + 1].R - sphere_radius);
     if (i <= innermost) {
       loop.V_in.push_back(V);
       loop.P_in.push_back(running[i].P);

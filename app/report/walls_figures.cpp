@@ -15,7 +15,7 @@ std::optional<NamedFigure> pv_loop_figure(const RunRecord& r) {
   // The running wall average over 3 % of the run; the way in and the way out in their own
   // colours.
   const double half_window = 0.015 * (r.samples.back().t - r.samples.front().t);
-  const PvLoop loop = pv_loop(r.samples, half_window);
+  const PvLoop loop = pv_loop(r.samples, half_window, r.preset.sphere_radius.value_or(0.0));
   Series in, out;
   in.name = "squeezing: the wall moving in";
   in.colour = 0;
@@ -30,7 +30,7 @@ std::optional<NamedFigure> pv_loop_figure(const RunRecord& r) {
   // A free gas (J = 0) moved slowly follows the adiabat P V^(5/3) = P0 V0^(5/3), with P0 the
   // ideal-gas pressure 2 KE0 / (3 V0) of its start.
   if (r.preset.J == 0) {
-    const double V0 = swarm::sphere_volume(r.samples.front().R);
+    const double V0 = swarm::sphere_volume(r.samples.front().R - r.preset.sphere_radius.value_or(0.0));
     const double P0 = 2 * r.samples.front().KE / (3 * V0);
     Series adiabat;
     adiabat.name = "adiabat P V^(5/3) = const (a slow, reversible move)";

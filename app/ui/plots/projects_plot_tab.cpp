@@ -36,7 +36,9 @@ struct ProjectCache {
     series = project_series(samples);
     // Each sample's P is over a few hits: the loop is drawn with the running wall average
     // over 3 % of the run, as in the CLI's pv-loop figure.
-    if (plots.pv_loop) loop = report::pv_loop(samples, 0.015 * state.preset.duration);
+    if (plots.pv_loop)
+      loop = report::pv_loop(samples, 0.015 * state.preset.duration,
+                             state.preset.sphere_radius.value_or(0.0));
     if (plots.speeds) {
       // About sqrt(n) bins: enough particles in each to see the shape.
       const std::size_t n = state.run->system().particles.size();

@@ -90,7 +90,7 @@ void Run::expand_now(double factor) {
     const WallReading w =
         hand_tallies_.reading(std::lround(f * double(length)), plan_.dt, wall_area(*R, *R));
     stages_.push_back(
-        {*R, sphere_volume(*R), w.P, w.T, total_energy(engine_->system()), w.hits, true});
+        {*R, wall_volume(*R), w.P, w.T, total_energy(engine_->system()), w.hits, true});
   }
   engine_->set_container_radius(*R * factor);
   if (stage_by_hand_open()) open_stage_by_hand();
@@ -99,6 +99,10 @@ void Run::expand_now(double factor) {
 double Run::wall_area(double R_before, double R_after) const {
   const double a = plan_.engine.sphere_radius.value_or(0.0);
   return swept_area(R_before - a, R_after - a);
+}
+
+double Run::wall_volume(double R) const {
+  return sphere_volume(R - plan_.engine.sphere_radius.value_or(0.0));
 }
 
 void Run::extend(long steps) { plan_.steps += std::max(0L, steps); }
@@ -148,7 +152,7 @@ void Run::step_once() {
     if (in_stage == per_stage - 1) {
       const WallReading w = stage_meter_.reading();
       const EnergyParts energy = energy_now();
-      stages_.push_back({R, sphere_volume(R), w.P, w.T, energy.kinetic + energy.potential, w.hits});
+      stages_.push_back({R, wall_volume(R), w.P, w.T, energy.kinetic + energy.potential, w.hits});
       stage_meter_.reset();
       if (long(stages_.size()) < e.stages) engine_->set_container_radius(R * e.factor);
     }

@@ -7,55 +7,17 @@
 #include <algorithm>
 #include <cmath>
 
-#include "math/portable_math.h"
 #include "swarm/engine/engine.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/measure/state_hash.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/hard_spheres.h"
 #include "swarm/preset/initial_conditions.h"
+#include "test_systems.h"
 
 using namespace swarm;
 
 namespace {
-
-/// n unit masses, all at speed `speed` in directions drawn from the generator's Maxwellian
-/// (normalised), on a simple cubic lattice filling a ball of radius `room`, nearest first,
-/// so that no two spheres start overlapping when the spacing exceeds 2a.
-System lattice_gas(long n, double room, double speed, std::uint64_t seed, double* spacing) {
-  SwarmSpec spec;
-  spec.count = n;
-  spec.velocities = SwarmSpec::Velocities::maxwell;
-  spec.cm_at_rest = true;
-  spec.seed = seed;
-  System s = generate_swarm(spec);
-  const double volume = 4.0 / 3.0 * M_PI * room * room * room;
-  // The core's own cube root (exp and log), so that the start is the same bits in wasm.
-  double h = portable::exp(portable::log(volume / double(n)) / 3);
-  std::vector<Vec3> sites;
-  while (long(sites.size()) < n) {
-    sites.clear();
-    const int k = int(room / h) + 1;
-    for (int x = -k; x <= k; ++x)
-      for (int y = -k; y <= k; ++y)
-        for (int z = -k; z <= k; ++z) {
-          const Vec3 r = h * Vec3(x + 0.5, y + 0.5, z + 0.5);
-          if (r.norm() <= room) sites.push_back(r);
-        }
-    if (long(sites.size()) < n) h *= 0.98;
-  }
-  std::stable_sort(sites.begin(), sites.end(),
-                   [](const Vec3& a, const Vec3& b) { return a.norm() < b.norm(); });
-  for (long i = 0; i < n; ++i) {
-    Particle& p = s.particles[std::size_t(i)];
-    p.m = 1;
-    p.r = sites[std::size_t(i)];
-    p.v = speed * p.v.normalized();
-  }
-  s.J = 0;
-  *spacing = h;
-  return s;
-}
 
 Vec3 momentum(const System& s) {
   Vec3 P = Vec3::Zero();
@@ -102,7 +64,7 @@ TEST_CASE("Hard spheres: energy and momentum conserved to rounding (isolated, J 
 
 TEST_CASE("Hard spheres: a single-speed gas becomes Maxwellian (and without contacts stays put)") {
   double h = 0;
-  const System s = lattice_gas(1000, 0.95, 1.0, 21, &h);
+  const System s = testing::lattice_gas(1000, 0.95, 1.0, 21, &h);
   EngineConfig with, without;
   with.container_radius = without.container_radius = 1.0;
   with.sphere_radius = 0.035;  // packing fraction ~0.05: a mean free path ~0.2
@@ -131,7 +93,7 @@ TEST_CASE("Hard spheres: the wall pressure follows Carnahan-Starling at packing 
     CAPTURE(eta_mean);
     const double a = room * std::cbrt(eta_mean / double(N));
     double h = 0;
-    const System s = lattice_gas(N, room - 0.5 * a, 1.0, 31, &h);
+    const System s = testing::lattice_gas(N, room - 0.5 * a, 1.0, 31, &h);
     REQUIRE(h > 2 * a);
     EngineConfig config;
     config.container_radius = room + a;
@@ -165,7 +127,7 @@ TEST_CASE("Hard spheres: an attractive swarm thermalises faster after an expansi
   // without contacts. Measured: how far the speeds are from the Maxwellian at the kinetic
   // temperature, some time after the step.
   double h = 0;
-  const System start = lattice_gas(800, 0.9, 0.8, 41, &h);
+  const System start = testing::lattice_gas(800, 0.9, 0.8, 41, &h);
   auto after_expansion = [&](std::optional<double> a) {
     System s = start;
     s.J = 1.0 / 800;  // omega = 1
@@ -188,7 +150,7 @@ TEST_CASE("Hard spheres: an attractive swarm thermalises faster after an expansi
 
 TEST_CASE("a hard-sphere run in a moving container ends in the pinned state (native == wasm)") {
   double h = 0;
-  System s = lattice_gas(300, 0.9, 1.0, 9, &h);
+  System s = testing::lattice_gas(300, 0.9, 1.0, 9, &h);
   s.J = 0.3 / 300;
   EngineConfig config;
   config.container_radius = 1.0;
