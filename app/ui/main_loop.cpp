@@ -48,6 +48,13 @@ const ImGuiWindow* window_at(float x, float y) {
   return nullptr;
 }
 
+/// The language the UI is drawn in: the one chosen, or English while the chosen one's glyphs
+/// are missing (cjk_font.h).
+std::string drawn_language(const std::string& chosen) {
+  const Language* language = find_language(chosen);
+  return language && language->needs_cjk_font && cjk_font_missing() ? "en" : chosen;
+}
+
 /// What a finger landing at x, y acts on. While a menu or popup is open, a tap anywhere goes to
 /// ImGui (outside the popup it closes it, as a click does), never to the view behind; a window
 /// floating over the timeline's bar takes the finger before the bar does.
@@ -160,12 +167,15 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
   }
 
   // A new UI scale or language rebuilds the font atlas, which only may happen between frames,
-  // and not while a slider is being dragged; so does a font that arrived (Chinese, fetched).
+  // and not while a slider is being dragged; so does the Chinese font arriving or given up on.
   Layout& layout = f.app->state().layout;
   LanguageChoice& language = f.app->state().language;
-  bool new_fonts = cjk_font_arrived();
+  bool new_fonts = cjk_font_news() != CjkFontNews::none;
   if (!language.pending.empty() && !ImGui::IsAnyItemActive()) {
     std::string error;
+    // Chinese chosen anew tries its font again, if it had been given up on.
+    if (const Language* chosen = find_language(language.pending); chosen && chosen->needs_cjk_font)
+      retry_cjk_font();
     if (speak(language.pending, error)) {
       language.code = language.pending;
       // The pseudo-language is for layout tests: never the next visit's.
@@ -175,6 +185,13 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
       std::fprintf(stderr, "swarmlab: %s\n", error.c_str());
     }
     language.pending.clear();
+  }
+  // Chinese without its font would show a '?' for every character: English is drawn instead
+  // until the font is here (the page says so, in Chinese, with a retry: cjk_font_web.cpp).
+  if (const std::string drawn = drawn_language(language.code);
+      translator().language().code != drawn) {
+    std::string error;
+    if (speak(drawn, error)) new_fonts = true;
   }
   if (layout.pending_ui_scale != layout.ui_scale && !ImGui::IsAnyItemActive()) {
     layout.ui_scale = layout.pending_ui_scale;

@@ -290,15 +290,17 @@ export function cliMessage(json) {
   return m ? m[1].trim() : null;
 }
 
-/** Opens the browser at viewport (CSS pixels) with touch when asked. */
-export async function launchBrowser({ width = 1280, height = 720, hasTouch = false, isMobile = false } = {}) {
+/** Opens the browser at viewport (CSS pixels) with touch when asked; serviceWorkers: 'block'
+ *  keeps the offline worker out (a route of the page's own then sees every fetch). */
+export async function launchBrowser({ width = 1280, height = 720, hasTouch = false, isMobile = false,
+                                      serviceWorkers = 'allow' } = {}) {
   mkdirSync(outDir, { recursive: true });
   profile = mkdtempSync(join(tmpdir(), 'swarmlab-chromium-'));
   context = await chromium.launchPersistentContext(profile, {
     executablePath: chromiumPath,
     headless: true,
     viewport: { width, height },
-    hasTouch, isMobile,
+    hasTouch, isMobile, serviceWorkers,
     acceptDownloads: true,
     timeout: 30_000,
     args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
