@@ -169,6 +169,16 @@ int main(int argc, char** argv) {
       app.add_subcommand("validate", "Check a preset or a lesson and say what is wrong");
   validate_cmd->add_option("file", validate_path, "Preset or lesson file (JSON)")->required();
 
+  swarmlab::CheckLessonOptions check_lesson;
+  CLI::App* check_lesson_cmd = app.add_subcommand(
+      "check-lesson",
+      "Run the claims of each lesson's steps (an ensemble of seeds each) and fail, naming the "
+      "lesson, the step and the numbers, where the physics contradicts the marked answer or the text");
+  check_lesson_cmd->add_option("lessons", check_lesson.lesson_paths, "Lesson files (JSON)")->required();
+  check_lesson_cmd->add_option("--jobs,-j", check_lesson.jobs, "Runs at once (default: every core)")
+      ->check(CLI::Range(1, 4096));
+  check_lesson_cmd->add_flag("--quiet,-q", check_lesson.quiet, "No table: only the errors");
+
   swarmlab::BenchOptions bench;
   CLI::App* bench_cmd = swarmlab::add_bench_subcommand(app, bench);
 
@@ -181,6 +191,7 @@ int main(int argc, char** argv) {
   if (*ensemble_cmd) return swarmlab::ensemble_command(ensemble);
   if (*plan_cmd) return swarmlab::plan_command(plan);
   if (*merge_cmd) return swarmlab::merge_command(merge);
+  if (*check_lesson_cmd) return swarmlab::check_lesson_command(check_lesson);
 #ifdef SWARMLAB_HAS_DESKTOP
   return swarmlab::run_desktop(
       {window_preset, frames, screenshot, select, presentation, plot_tab, sound, lesson_summary,

@@ -56,11 +56,19 @@ struct ReportOptions {
   bool quiet = false;
 };
 
+/// swarmlab check-lesson: the claims of each lesson's steps run and judged.
+struct CheckLessonOptions {
+  std::vector<std::string> lesson_paths;
+  int jobs = 0;  // runs at once; 0: every hardware thread
+  bool quiet = false;
+};
+
 int run_command(const RunOptions& options);
 int validate_command(const std::string& preset_path);
 int report_command(const ReportOptions& options);
 int ensemble_command(const EnsembleOptions& options);
 int plan_command(const EnsembleOptions& options);
 int merge_command(const MergeOptions& options);
+int check_lesson_command(const CheckLessonOptions& options);
 
 }  // namespace swarmlab

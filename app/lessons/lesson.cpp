@@ -240,7 +240,7 @@ LessonTask task_of(const json& j, const std::string& path, const swarm::Preset& 
 
 LessonStep step_of(const json& j, const std::string& path, const PresetLookup& lookup,
                    const std::optional<swarm::Preset>& running) {
-  const Fields f(j, path, {"text", "preset", "show", "hide", "run", "task"});
+  const Fields f(j, path, {"text", "preset", "show", "hide", "run", "task", "claims"});
   LessonStep s;
   s.text = f.text("text", kMaxTextBytes, "what the step says");
   check_prose(s.text, f.path("text"));
@@ -312,6 +312,13 @@ LessonStep step_of(const json& j, const std::string& path, const PresetLookup& l
     }
   }
   if (f.has("task")) s.task = task_of(f.at("task"), f.path("task"), scene);
+  if (f.has("claims")) {
+    const bool choice = s.task && s.task->kind == LessonTask::Kind::choice;
+    ClaimsParse claims = parse_claims(f.at("claims").dump(), f.path("claims"), scene,
+                                      choice ? s.task->options.size() : 0, lookup);
+    if (!claims.error.empty()) throw Invalid{claims.error};
+    s.claims = std::move(claims.claims);
+  }
   return s;
 }
 

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lessons/lesson_claim.h"
 #include "swarm/preset/preset.h"
 
 namespace swarmlab {
@@ -63,6 +64,8 @@ struct LessonStep {
   std::optional<double> run_until;
   bool run_loop = false;
   std::optional<LessonTask> task;
+  /// What the step says the simulation does, in a form `swarmlab check-lesson` tests.
+  std::vector<LessonClaim> claims;
 
   bool hides(LessonHidden what) const;
 };
