@@ -5,6 +5,7 @@
 #include "report/ensemble_figures.h"
 #include "report/plot_files.h"
 #include "report/report.h"
+#include "report/run_record.h"
 
 namespace swarmlab {
 
@@ -13,7 +14,7 @@ namespace {
 /// The file's text when it is an ensemble report (swarmlab merge), else "".
 std::string ensemble_report_text(const std::string& path) {
   std::string unreadable;  // read_result_file says what is wrong with the file
-  const std::string text = read_text_file(path, unreadable);
+  const std::string text = read_text_file(path, unreadable, report::kResultFileLimit);
   return text.find(report::kEnsembleReportFormat) != std::string::npos &&
                  text.find("\"format\"") != std::string::npos
              ? text

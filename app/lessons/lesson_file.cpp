@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "files/preset_file.h"
 #include "swarm/preset/printable_text.h"
@@ -22,8 +20,10 @@ PresetLookup shipped_preset_lookup(std::string directory) {
                   "\" is not a shipped preset's file name (such as \"two-body-circular.json\")";
       return out;
     }
-    std::ifstream probe(directory + "/" + name);
-    if (!probe) {
+    // Looked up without opening it: a FIFO under that name must not block (read_preset_file
+    // refuses anything but a regular file).
+    std::error_code ec;
+    if (!std::filesystem::exists(directory + "/" + name, ec)) {
       out.error = "no shipped preset \"" + swarm::printable(name) + "\"";
       return out;
     }

@@ -1,9 +1,9 @@
 #include "report/run_record.h"
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
+
+#include "files/text_file.h"
 
 namespace swarmlab::report {
 namespace {
@@ -43,12 +43,11 @@ RunRecord record_of(const swarm::Preset& preset, swarm::SideBySide& runs) {
 }
 
 RecordRead read_result_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return {std::nullopt, path + ": cannot open the file"};
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string unreadable;
+  const std::string text = read_text_file(path, unreadable, kResultFileLimit);
+  if (!unreadable.empty()) return {std::nullopt, unreadable};
   try {
-    const json j = json::parse(text.str());
+    const json j = json::parse(text);
     swarm::PresetParse parsed = swarm::parse_preset(j.at("preset").dump());
     if (!parsed.preset) return {std::nullopt, path + ": preset: " + parsed.error};
     RunRecord r;

@@ -2,6 +2,7 @@
 // Everything a report draws from one run, whether the run just finished in this process or
 // was saved earlier as RESULT.json (so that two saved runs can be overlaid without re-running).
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,11 @@ struct RecordRead {
   std::optional<RunRecord> record;
   std::string error;  ///< names the file and what is wrong with it
 };
+
+/// The most a saved run (RESULT.json) or an ensemble's report may hold: they carry every
+/// sample, the final particles or a value per run, hundreds of MB for a long run of many
+/// particles, still far below this.
+inline constexpr std::size_t kResultFileLimit = std::size_t(2) << 30;
 
 /// Reads a RESULT.json written by `swarmlab run --out`.
 RecordRead read_result_file(const std::string& path);
