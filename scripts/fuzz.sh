@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Fuzzes preset parsing, validation and the resource estimate with libFuzzer (Debian's clang,
-# AddressSanitizer and UndefinedBehaviorSanitizer), seeded with the shipped presets, and the
-# browser's share-link decoding under node (tests/fuzz/share_link_fuzz.mjs), as well as the
+# AddressSanitizer and UndefinedBehaviorSanitizer), seeded with the shipped presets, the reader
+# of ensembles' run records (tests/fuzz/run_record_fuzz.cpp, seeded with tests/fuzz/run_records/),
+# and the browser's share-link decoding under node (tests/fuzz/share_link_fuzz.mjs), as well as the
 # embed bridge's message parser (tests/fuzz/embed_bridge_fuzz.mjs).
 # Usage: scripts/fuzz.sh [seconds] (default 60). New interesting inputs collect in
 # build-fuzz/corpus and make the next run start further; a crash leaves build-fuzz/crash-*,
-# which `build-fuzz/preset_fuzz FILE` replays.
+# which `build-fuzz/preset_fuzz FILE` (or run_record_fuzz) replays.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -16,7 +17,7 @@ mkdir -p "$out/obj" "$out/corpus"
 # Line tables are all a sanitizer's report needs (file and line of each frame), at a fraction
 # of full debug information's compile time.
 flags=(-std=c++17 -gline-tables-only -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
-       -Icore/include -Icore/src -I/usr/include/eigen3)
+       -Icore/include -Icore/src -Iapp -I/usr/include/eigen3)
 launcher=()
 command -v ccache >/dev/null && launcher=(ccache)
 
@@ -48,9 +49,18 @@ done
 # shellcheck disable=SC2086
 stale "$out/obj/preset_fuzz.o" tests/fuzz/preset_fuzz.cpp $headers &&
   compile tests/fuzz/preset_fuzz.cpp "$out/obj/preset_fuzz.o"
-objects+=("$out/obj/preset_fuzz.o")
+# The run-record reader: its two app files and the target.
+record_objects=()
+for src in app/ensemble/run_record.cpp app/ensemble/sha256.cpp tests/fuzz/run_record_fuzz.cpp; do
+  obj="$out/obj/$(basename "${src%.cpp}").o"
+  # shellcheck disable=SC2086
+  stale "$obj" "$src" app/ensemble/*.h $headers && compile "$src" "$obj"
+  record_objects+=("$obj")
+done
 while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n; done
-clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$out/preset_fuzz" -lpthread
+clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" "$out/obj/preset_fuzz.o" -o "$out/preset_fuzz" -lpthread
+clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" "${record_objects[@]}" \
+  -o "$out/run_record_fuzz" -lpthread
 
 # The share links' decoding in the page's JavaScript, under node, for a third of the time.
 echo "== share-link decoding (web/share_link.js) under node"
@@ -59,8 +69,14 @@ node tests/fuzz/share_link_fuzz.mjs "$(( seconds / 3 > 0 ? seconds / 3 : 1 ))"
 echo "== embed-bridge messages (web/embed_bridge.js) under node"
 node tests/fuzz/embed_bridge_fuzz.mjs "$(( seconds / 3 > 0 ? seconds / 3 : 1 ))"
 
-# The first corpus folder receives new inputs; the shipped presets are read-only seeds.
+# The two libFuzzer targets share the time one had. The first corpus folder receives new
+# inputs; the shipped presets and records are read-only seeds.
+half=$(( seconds / 2 > 0 ? seconds / 2 : 1 ))
 echo "== preset parsing, validation and the resource estimate under libFuzzer"
 cd "$out"
-./preset_fuzz -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
+./preset_fuzz -max_total_time="$half" -timeout=10 -rss_limit_mb=4096 -max_len=16384 \
   -print_final_stats=1 corpus ../assets/presets
+echo "== ensemble run records (swarmlab merge's reader) under libFuzzer"
+mkdir -p corpus-run-records
+./run_record_fuzz -max_total_time="$half" -timeout=10 -rss_limit_mb=4096 -max_len=65536 \
+  -print_final_stats=1 corpus-run-records ../tests/fuzz/run_records

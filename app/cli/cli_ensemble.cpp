@@ -16,6 +16,7 @@
 #include "files/atomic_file.h"
 #include "files/text_file.h"
 #include "swarm/preset/ensemble_seed.h"
+#include "swarm/preset/printable_text.h"
 
 namespace swarmlab {
 namespace {
@@ -35,6 +36,14 @@ struct Prepared {
   EnsemblePlan plan;
   std::string dir;  // absolute
 };
+
+/// The ensemble's folder as an absolute path without a trailing slash.
+std::string absolute_folder(const std::string& dir) {
+  std::error_code ec;
+  std::string out = fs::absolute(dir, ec).lexically_normal().string();
+  if (!out.empty() && out.back() == '/') out.pop_back();
+  return out;
+}
 
 Prepared prepare(const EnsembleOptions& o, int jobs) {
   Prepared out;
@@ -65,6 +74,10 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
   }
   if (seeds < 1) {
     out.error = "--seeds: how many runs (per point) is missing: give --seeds N, or \"seeds\" in the sweep";
+    return out;
+  }
+  if (const std::string e = runs_limit_error(points.size(), seeds); !e.empty()) {
+    out.error = "--seeds: " + e;
     return out;
   }
   out.plan = {points, seeds, o.seed, o.perturb, program_version()};
@@ -105,17 +118,15 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
     return out;
   }
   std::error_code ec;
-  out.dir = fs::absolute(o.dir, ec).lexically_normal().string();
-  if (!out.dir.empty() && out.dir.back() == '/') out.dir.pop_back();
+  out.dir = absolute_folder(o.dir);
   fs::create_directories(out.dir + "/runs", ec);
   if (!ec && points.size() > 1) fs::create_directories(out.dir + "/points", ec);
   if (ec) {
     out.error = o.dir + ": cannot make the folder: " + ec.message();
     return out;
   }
-  if (fs::exists(plan_path(out.dir))) {
-    std::string unreadable;
-    const PlanRead old = parse_plan(read_text_file(plan_path(out.dir), unreadable));
+  if (const TextFile existing = read_regular_file(plan_path(out.dir)); !existing.missing) {
+    const PlanRead old = existing.error.empty() ? parse_plan(existing.text) : PlanRead{{}, existing.error};
     const EnsemblePlan& p = out.plan;
     if (!old.plan) {
       out.error = plan_path(out.dir) + ": " + old.error;
@@ -225,10 +236,41 @@ int ensemble_command(const EnsembleOptions& o) {
   return write_merge(p.dir, m);
 }
 
+namespace {
+
+/// "" when every text that plan writes into the manifest or the Slurm script is safe there
+/// (control_character_in), else one message naming the flag. Checked before anything is
+/// written.
+std::string unsafe_plan_text(const EnsembleOptions& o, const std::string& swarmlab) {
+  struct Text {
+    const char* flag;
+    const char* what;
+    std::string text;
+  };
+  const Text texts[] = {
+      {"--out", "the folder's path", absolute_folder(o.dir)},
+      {"--swarmlab", o.swarmlab.empty() ? "this swarmlab's own path (give --swarmlab CMD)"
+                                        : "the program to call",
+       swarmlab},
+      {"PRESET", "the preset's path", o.preset_path}};
+  for (const Text& t : texts)
+    if (const std::string bad = control_character_in(t.text); !bad.empty())
+      return std::string(t.flag) + ": " + t.what + " \"" + swarm::printable(t.text) + "\" holds " +
+             bad + ", which a runner could obey as the end of a line and a new command; only "
+             "printable UTF-8 text may reach a manifest";
+  if (o.slurm && absolute_folder(o.dir).find('\\') != std::string::npos)
+    return "--out: a backslash in the folder's path stops Slurm naming each task's log by its "
+           "number (--output=.../%a.out); choose a folder without one";
+  return {};
+}
+
+}  // namespace
+
 int plan_command(const EnsembleOptions& o) {
+  const std::string swarmlab = o.swarmlab.empty() ? this_program() : o.swarmlab;
+  if (const std::string unsafe = unsafe_plan_text(o, swarmlab); !unsafe.empty()) return fail(unsafe);
   const Prepared p = prepare(o, 0);
   if (!p.error.empty()) return fail(p.error);
-  const std::string swarmlab = o.swarmlab.empty() ? this_program() : o.swarmlab;
   OutputFiles files;
   std::string err = files.stage(p.dir + "/manifest.txt", manifest(p.plan, swarmlab, p.dir));
   if (err.empty() && o.slurm) {
@@ -242,10 +284,11 @@ int plan_command(const EnsembleOptions& o) {
     std::printf("wrote %s/manifest.txt: %ld runs (%zu points x %ld seeds), one swarmlab run "
                 "command per line\n",
                 p.dir.c_str(), p.plan.runs(), p.plan.points.size(), p.plan.seeds);
-    std::printf("run them, for example:\n  parallel --joblog %s/joblog --resume-failed < %s/manifest.txt\n",
-                p.dir.c_str(), p.dir.c_str());
-    if (o.slurm) std::printf("  sbatch %s/array.sbatch\n", p.dir.c_str());
-    std::printf("then: swarmlab merge %s\n", p.dir.c_str());
+    // The commands as they can be pasted: the folder quoted for the shell.
+    std::printf("run them, for example:\n  parallel --joblog %s --resume-failed < %s\n",
+                shell_quoted(p.dir + "/joblog").c_str(), shell_quoted(p.dir + "/manifest.txt").c_str());
+    if (o.slurm) std::printf("  sbatch %s\n", shell_quoted(p.dir + "/array.sbatch").c_str());
+    std::printf("then: swarmlab merge %s\n", shell_quoted(p.dir).c_str());
   }
   return 0;
 }

@@ -11,11 +11,17 @@ namespace {
 
 using json = nlohmann::json;
 
-/// A word the shell passes through unchanged: in single quotes, each ' written as '\''.
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+/// An argument of an #SBATCH line as sbatch reads it (its _get_argument): in double quotes,
+/// with \ before each \, ", ' and # (an unescaped # ends the line there for older Slurm), and
+/// each % doubled, since a % in --output starts a pattern such as %a.
+std::string slurm_quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '\\' || c == '"' || c == '\'' || c == '#') out += '\\';
+    out += c;
+    if (c == '%') out += '%';
+  }
+  return out + "\"";
 }
 
 std::string number(double x) {
@@ -27,6 +33,42 @@ std::string number(double x) {
 }  // namespace
 
 std::string program_version() { return SWARMLAB_VERSION; }
+
+std::string shell_quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string runs_limit_error(std::size_t points, long seeds) {
+  if (double(points) * double(seeds) <= double(kMaxRuns)) return {};
+  char buf[160];
+  std::snprintf(buf, sizeof buf,
+                "%zu points x %ld seeds = %.4g runs, more than the 1,000,000 one ensemble may hold",
+                points, seeds, double(points) * double(seeds));
+  return buf;
+}
+
+std::string control_character_in(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = (unsigned char)text[i];
+    const std::string at = " (byte " + std::to_string(i + 1) + ")";
+    if (c == '\n') return "a newline" + at;
+    if (c == '\r') return "a carriage return" + at;
+    if (c == 0) return "a NUL" + at;
+    if (c < 0x20 || c == 0x7f) return "a control character" + at;
+    if (c < 0x80) continue;
+    // UTF-8: a lead byte and its continuation bytes, no overlong form of an ASCII character.
+    const std::size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3
+                        : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    bool whole = n > 0 && i + n <= text.size();
+    for (std::size_t k = 1; whole && k < n; ++k) whole = ((unsigned char)text[i + k] & 0xC0) == 0x80;
+    if (!whole) return "a byte that is not UTF-8" + at;
+    if (c == 0xC2 && (unsigned char)text[i + 1] < 0xA0) return "a C1 control character" + at;
+    i += n - 1;
+  }
+  return {};
+}
 
 std::string preset_hash(const swarm::Preset& p) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -87,6 +129,10 @@ PlanRead parse_plan(const std::string& text) {
     out.error = "perturbation: missing or not a number";
     return out;
   }
+  if (const std::string e = runs_limit_error(p.points.size(), j["seeds"].get<long>()); !e.empty()) {
+    out.error = "points, seeds: " + e;
+    return out;
+  }
   p.version = j["swarmlab"];
   p.seeds = j["seeds"];
   p.seed = j["seed"];
@@ -108,12 +154,12 @@ std::string run_command_line(const EnsemblePlan& plan, long run, const std::stri
                              const std::string& dir) {
   const long point = plan.point_of(run);
   std::string line =
-      quoted(swarmlab) + " run " + quoted(preset_path(dir, plan, point)) + " --seed " +
+      shell_quoted(swarmlab) + " run " + shell_quoted(preset_path(dir, plan, point)) + " --seed " +
       std::to_string(swarm::run_seed(plan.seed, std::uint64_t(plan.seed_index_of(run))));
   if (plan.perturbation > 0) line += " --perturb " + number(plan.perturbation);
   line += " --run-index " + std::to_string(run) + " --preset-hash " +
           plan.points[std::size_t(point)].preset_hash + " --record " +
-          quoted(run_path(dir, run)) + " --quiet";
+          shell_quoted(run_path(dir, run)) + " --quiet";
   return line;
 }
 
@@ -127,16 +173,16 @@ std::string slurm_array_script(const EnsemblePlan& plan, const std::string& dir,
   std::string array = "0-" + std::to_string(plan.runs() - 1);
   if (at_once > 0) array += "%" + std::to_string(at_once);
   return "#!/bin/bash\n"
-         "# One run of the ensemble in " + dir + " per array task: task i runs line i + 1 of\n"
-         "# manifest.txt. Submit with: sbatch " + dir + "/array.sbatch\n"
+         "# One run of the ensemble in " + shell_quoted(dir) + " per array task: task i runs line\n"
+         "# i + 1 of manifest.txt. Submit with: sbatch " + shell_quoted(dir + "/array.sbatch") + "\n"
          "#SBATCH --job-name=swarmlab-ensemble\n"
          "#SBATCH --array=" + array + "\n"
          "#SBATCH --ntasks=1\n"
          "#SBATCH --cpus-per-task=1\n"
-         "#SBATCH --output=" + dir + "/logs/%a.out\n"
+         "#SBATCH --output=" + slurm_quoted(dir + "/logs/") + "%a.out\n"
          "set -euo pipefail\n"
-         "mkdir -p " + quoted(dir + "/logs") + "\n"
-         "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + quoted(dir + "/manifest.txt") + ")\n"
+         "mkdir -p " + shell_quoted(dir + "/logs") + "\n"
+         "line=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + shell_quoted(dir + "/manifest.txt") + ")\n"
          "[ -n \"$line\" ] || { echo \"no line $((SLURM_ARRAY_TASK_ID + 1)) in the manifest\" >&2; exit 1; }\n"
          "eval \"$line\"\n";
 }

@@ -1,6 +1,7 @@
 #include "ensemble/merge.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -8,10 +9,12 @@
 #include <set>
 
 #include "files/text_file.h"
+#include "report/csv_field.h"
 #include "report/ensemble_figures.h"
 #include "swarm/measure/confidence.h"
 #include "swarm/measure/fit.h"
 #include "swarm/preset/ensemble_seed.h"
+#include "swarm/preset/printable_text.h"
 
 namespace swarmlab::ensemble {
 namespace {
@@ -19,7 +22,24 @@ namespace {
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
-json interval_json(const swarm::MeanInterval& m) {
+/// A statistic of finite values that is not finite itself: a sum passed the largest double
+/// (six runs with P = 1.7e308). JSON would write it as null; the merge stops with this instead.
+struct Overflow {
+  std::string message;
+};
+
+/// Throws Overflow naming `quantity` unless every number of m is finite.
+void require_finite(const swarm::MeanInterval& m, const std::string& quantity) {
+  const bool finite = std::isfinite(m.mean) && std::isfinite(m.sd) && std::isfinite(m.se) &&
+                      (!m.lo || (std::isfinite(*m.lo) && std::isfinite(*m.hi)));
+  if (!finite)
+    throw Overflow{quantity + ": the mean, spread or interval of " + std::to_string(m.n) +
+                   " runs' values is beyond the range of a double (about 1.8e308); no report "
+                   "written"};
+}
+
+json interval_json(const swarm::MeanInterval& m, const std::string& quantity) {
+  require_finite(m, quantity);
   json j = {{"mean", m.mean}, {"sd", m.sd}, {"se", m.se}};
   j["ci95"] = m.lo ? json::array({*m.lo, *m.hi}) : json(nullptr);
   return j;
@@ -29,13 +49,15 @@ json interval_json(const swarm::MeanInterval& m) {
 struct Band {
   std::vector<double> x;
   std::vector<std::vector<double>> values;  // per point, one per run
-  json to_json() const {
+  /// name: the band's quantity in a message ("bands.time.P").
+  json to_json(const std::string& name) const {
     json mean = json::array(), lo = json::array(), hi = json::array();
-    for (const auto& all : values) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
       std::vector<double> v;
-      for (double x : all)
+      for (double x : values[i])
         if (std::isfinite(x)) v.push_back(x);
       const swarm::MeanInterval m = swarm::mean_interval(v);
+      if (!v.empty()) require_finite(m, name + " at point " + std::to_string(i));
       if (v.empty()) {
         mean.push_back(nullptr), lo.push_back(nullptr), hi.push_back(nullptr);
         continue;
@@ -69,6 +91,9 @@ double pooled_exponent(const std::vector<std::vector<double>>& x_runs,
   return f.valid ? f.slope : NAN;
 }
 
+/// A name from a file, as the terminal may show it.
+std::string shown(const std::string& text) { return swarm::printable(text, 200); }
+
 std::string format_interval(const json& q) {
   char buf[160];
   if (q["ci95"].is_array())
@@ -86,7 +111,9 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
   RunScan scan;
   std::error_code ec;
   const long runs = plan.runs();
-  // Files in runs/ that no run of this plan writes.
+  // The folder is listed once: the work follows the files that are there, whatever number of
+  // runs the plan claims. Files that no run of this plan writes are named.
+  std::vector<long> present;
   for (const auto& entry : fs::directory_iterator(dir + "/runs", ec)) {
     const std::string name = entry.path().filename().string();
     if (name.size() < 6 || name.substr(name.size() - 5) != ".json") continue;
@@ -94,22 +121,24 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
     const bool numeric = !stem.empty() && stem.find_first_not_of("0123456789") == std::string::npos &&
                          stem.size() < 12 && (stem == "0" || stem[0] != '0');
     if (!numeric || std::stol(stem) >= runs)
-      scan.mixed += (scan.mixed.empty() ? "" : "; ") + ("runs/" + name) +
+      scan.mixed += (scan.mixed.empty() ? "" : "; ") + ("runs/" + shown(name)) +
                     ": not a run of this plan (runs 0 to " + std::to_string(runs - 1) + ")";
+    else
+      present.push_back(std::stol(stem));
   }
-  for (long k = 0; k < runs; ++k) {
-    const std::string path = run_path(dir, k);
-    if (!fs::exists(path, ec)) {
+  std::sort(present.begin(), present.end());
+  for (long k = 0, next = 0; k < runs; ++k)
+    if (next < long(present.size()) && present[std::size_t(next)] == k)
+      ++next;
+    else
       scan.missing.push_back(k);
+  for (const long k : present) {
+    const TextFile file = read_regular_file(run_path(dir, k));
+    if (!file.error.empty()) {
+      scan.corrupted.push_back({k, file.error});
       continue;
     }
-    std::string unreadable;
-    const std::string text = read_text_file(path, unreadable);
-    if (!unreadable.empty()) {
-      scan.corrupted.push_back({k, "cannot be read"});
-      continue;
-    }
-    const RecordRead read = parse_record(text);
+    const RecordRead read = parse_record(file.text);
     if (!read.record) {
       scan.corrupted.push_back({k, read.error});
       continue;
@@ -118,9 +147,9 @@ RunScan scan_runs(const std::string& dir, const EnsemblePlan& plan,
     const std::string& hash = plan.points[std::size_t(plan.point_of(k))].preset_hash;
     std::string why;
     if (r.id.preset_hash != hash)
-      why = "a run of another preset (hash " + r.id.preset_hash + ", the plan's " + hash + ")";
+      why = "a run of another preset (hash " + shown(r.id.preset_hash) + ", the plan's " + hash + ")";
     else if (r.id.version != plan.version)
-      why = "made by swarmlab " + r.id.version + ", the plan's is " + plan.version;
+      why = "made by swarmlab " + shown(r.id.version) + ", the plan's is " + shown(plan.version);
     else if (r.id.index != k)
       why = "holds run " + std::to_string(r.id.index);
     else if (r.id.seed != swarm::run_seed(plan.seed, std::uint64_t(plan.seed_index_of(k))))
@@ -196,7 +225,7 @@ json point_quantities(const PointRuns& p, double relative_half_width, std::strin
     for (double x : column)
       if (std::isfinite(x)) v.push_back(x);
     const swarm::MeanInterval m = swarm::mean_interval(v);
-    json q = interval_json(m);
+    json q = interval_json(m, name);
     q["values"] = column;
     q["runs"] = v.size();
     if (m.lo && m.mean != 0)
@@ -211,9 +240,17 @@ json point_quantities(const PointRuns& p, double relative_half_width, std::strin
         if (std::isfinite(se)) sum += se * se, ++count;
       if (count > 0) {
         within = std::sqrt(sum / double(count));
+        if (!std::isfinite(within))
+          throw Overflow{name + ": the runs' within-run errors, squared and summed, pass the "
+                                "largest double; no report written"};
         q["within_se"] = within;
         // sd over runs against the rms within-run error: near 1 when the error bars are honest.
-        if (within > 0 && m.lo) q["spread_ratio"] = m.sd / within;
+        if (within > 0 && m.lo) {
+          if (!std::isfinite(m.sd / within))
+            throw Overflow{name + ": the spread over runs divided by the within-run error "
+                                  "passes the largest double; no report written"};
+          q["spread_ratio"] = m.sd / within;
+        }
       }
     }
     const std::string fit_prefix = "fit.";
@@ -229,7 +266,7 @@ json point_quantities(const PointRuns& p, double relative_half_width, std::strin
           return pooled_exponent(x, y, pick);
         });
         if (b) {
-          q["mean_of_run_fits"] = interval_json(m);
+          q["mean_of_run_fits"] = interval_json(m, name);
           q["mean"] = b->estimate;
           q["ci95"] = {b->lo, b->hi};
           q["interval"] = "BCa bootstrap over whole runs, the fit to the runs' mean stages";
@@ -240,7 +277,7 @@ json point_quantities(const PointRuns& p, double relative_half_width, std::strin
     if (std::isfinite(within)) std::snprintf(within_text, sizeof within_text, "%11.4g", within);
     if (q.contains("spread_ratio"))
       std::snprintf(ratio_text, sizeof ratio_text, "%7.2f", q["spread_ratio"].get<double>());
-    std::snprintf(line, sizeof line, "%-14s %5zu %s %11.4g %11s %7s\n", name.c_str(), v.size(),
+    std::snprintf(line, sizeof line, "%-14s %5zu %s %11.4g %11s %7s\n", shown(name).c_str(), v.size(),
                   format_interval(q).c_str(), m.sd, within_text, ratio_text);
     table += line;
     quantities[name] = q;
@@ -251,7 +288,8 @@ json point_quantities(const PointRuns& p, double relative_half_width, std::strin
 json point_bands(const PointRuns& p) {
   json bands = json::object();
   if (p.bands_agree && !p.P_t.x.empty())
-    bands["time"] = {{"t", p.P_t.x}, {"P", p.P_t.to_json()}, {"T", p.T_t.to_json()}};
+    bands["time"] = {{"t", p.P_t.x}, {"P", p.P_t.to_json("bands.time.P")},
+                     {"T", p.T_t.to_json("bands.time.T")}};
   if (!p.stage_V.front().empty()) {
     Band sP, sT;
     sP.x = p.stage_V.front();
@@ -263,7 +301,9 @@ json point_bands(const PointRuns& p) {
       for (std::size_t s = 0; agree && s < sP.x.size(); ++s)
         sP.values[s].push_back(p.stage_P[r][s]), sT.values[s].push_back(p.stage_T[r][s]);
     }
-    if (agree) bands["stages"] = {{"V", sP.x}, {"P", sP.to_json()}, {"T", sT.to_json()}};
+    if (agree)
+      bands["stages"] = {{"V", sP.x}, {"P", sP.to_json("bands.stages.P")},
+                         {"T", sT.to_json("bands.stages.T")}};
   }
   return bands;
 }
@@ -277,16 +317,21 @@ std::vector<long> of_point(const std::vector<long>& runs, const EnsemblePlan& pl
 
 }  // namespace
 
-MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
+namespace {
+
+MergeReport merge_runs(const std::string& dir, double relative_half_width) {
   MergeReport out;
-  std::string unreadable;
-  const std::string text = read_text_file(plan_path(dir), unreadable);
-  if (!unreadable.empty()) {
+  const TextFile file = read_regular_file(plan_path(dir));
+  if (file.missing) {
     out.error = plan_path(dir) +
                 ": missing: not an ensemble folder (swarmlab plan or swarmlab ensemble makes one)";
     return out;
   }
-  const PlanRead read = parse_plan(text);
+  if (!file.error.empty()) {
+    out.error = plan_path(dir) + ": " + file.error;
+    return out;
+  }
+  const PlanRead read = parse_plan(file.text);
   if (!read.plan) {
     out.error = plan_path(dir) + ": " + read.error;
     return out;
@@ -337,9 +382,10 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
     const json values = json::parse(pp.values);
     for (const auto& [key, v] : values.items()) keys.insert(key);
   }
-  out.csv = "index,seed";
-  for (const std::string& key : keys) out.csv += "," + key;
-  for (const std::string& name : names) out.csv += "," + name;
+  // Keys and names come from files (plan.json, the records): text fields, formula-safe.
+  out.csv = report::csv_text("index") + "," + report::csv_text("seed");
+  for (const std::string& key : keys) out.csv += "," + report::csv_text(key);
+  for (const std::string& name : names) out.csv += "," + report::csv_text(name);
   out.csv += "\n";
 
   json point_reports = json::array();
@@ -347,7 +393,8 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
     const PointRuns& runs = points[p];
     const json values = json::parse(plan.points[p].values);
     out.table += "\n";
-    if (plan.points.size() > 1) out.table += "point " + std::to_string(p) + ": " + values.dump() + "\n";
+    if (plan.points.size() > 1)
+      out.table += "point " + std::to_string(p) + ": " + shown(values.dump()) + "\n";
     json r = {{"values", values},
               {"preset_hash", plan.points[p].preset_hash},
               {"runs", runs.indices.size()},
@@ -358,20 +405,26 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
       continue;
     }
     out.table += header;
-    r["equilibration_start"] = interval_json(swarm::mean_interval(runs.starts));
+    r["equilibration_start"] =
+        interval_json(swarm::mean_interval(runs.starts), "equilibration_start");
     r["quantities"] = point_quantities(runs, relative_half_width, out.table);
     r["bands"] = point_bands(runs);
     point_reports.push_back(r);
     for (std::size_t i = 0; i < runs.indices.size(); ++i) {
-      out.csv += std::to_string(runs.indices[i]) + "," + std::to_string(runs.seeds[i]);
-      for (const std::string& key : keys)
-        out.csv += "," + (values.contains(key) ? values[key].dump() : std::string());
+      out.csv += report::csv_number_text(std::to_string(runs.indices[i])) + "," +
+                 report::csv_number_text(std::to_string(runs.seeds[i]));
+      for (const std::string& key : keys) {
+        // A swept value: a JSON number is a number; text (a method's name) is text.
+        const json v = values.contains(key) ? values[key] : json();
+        out.csv += "," + (v.is_number()   ? report::csv_number_text(v.dump())
+                          : v.is_string() ? report::csv_text(v.get<std::string>())
+                          : v.is_null()   ? report::csv_text("")
+                                          : report::csv_text(v.dump()));
+      }
       for (const std::string& name : names) {
-        char buf[40] = "";
         const auto c = runs.values.find(name);
-        if (c != runs.values.end() && std::isfinite(c->second[i]))
-          std::snprintf(buf, sizeof buf, "%.17g", c->second[i]);
-        out.csv += std::string(",") + buf;
+        const bool has = c != runs.values.end() && std::isfinite(c->second[i]);
+        out.csv += "," + (has ? report::csv_number(c->second[i]) : report::csv_text(""));
       }
       out.csv += "\n";
     }
@@ -387,6 +440,18 @@ MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
   }
   out.json = report.dump(1) + "\n";
   return out;
+}
+
+}  // namespace
+
+MergeReport merge_ensemble(const std::string& dir, double relative_half_width) {
+  try {
+    return merge_runs(dir, relative_half_width);
+  } catch (const Overflow& overflow) {
+    MergeReport out;
+    out.error = overflow.message;
+    return out;
+  }
 }
 
 }  // namespace swarmlab::ensemble

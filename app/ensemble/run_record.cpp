@@ -1,10 +1,13 @@
 #include "ensemble/run_record.h"
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
+#include "ensemble/sha256.h"
 #include "swarm/measure/wall_time_average.h"
+#include "swarm/preset/printable_text.h"
 
 namespace swarmlab::ensemble {
 namespace {
@@ -65,6 +68,21 @@ bool read_array(const json& j, const char* key, std::vector<double>& out, std::s
   return true;
 }
 
+std::string canonical_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+std::string canonical_text_item(const std::string& s) { return std::to_string(s.size()) + ":" + s; }
+
+std::string canonical_list(const char* name, const std::vector<double>& xs) {
+  std::string line = std::string(name) + " " + std::to_string(xs.size());
+  for (double x : xs) line += " " + canonical_number(x);
+  return line + "\n";
+}
+
 }  // namespace
 
 RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
@@ -117,6 +135,27 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
   return r;
 }
 
+std::string canonical_text(const RunRecord& r) {
+  std::string out = std::string(kRunFormat) + " " + std::to_string(kRunFormatVersion) + "\n";
+  out += "swarmlab " + canonical_text_item(r.id.version) + "\n";
+  out += "preset_hash " + canonical_text_item(r.id.preset_hash) + "\n";
+  out += "index " + std::to_string(r.id.index) + "\n";
+  out += "seed " + std::to_string(r.id.seed) + "\n";
+  out += "perturbation " + canonical_number(r.id.perturbation) + "\n";
+  out += "failure " + canonical_text_item(r.failure) + "\n";
+  out += "equilibration_start " + canonical_number(r.equilibration_start) + "\n";
+  for (const auto& [name, v] : r.values)
+    out += "value " + canonical_text_item(name) + " " + canonical_number(v.value) + " " +
+           (v.se ? canonical_number(*v.se) : std::string("-")) + "\n";
+  out += canonical_list("series.t", r.t) + canonical_list("series.P", r.P) +
+         canonical_list("series.T", r.T) + canonical_list("series.R", r.R);
+  out += canonical_list("stages.V", r.stage_V) + canonical_list("stages.P", r.stage_P) +
+         canonical_list("stages.T", r.stage_T);
+  return out;
+}
+
+std::string record_digest(const RunRecord& r) { return "sha256:" + sha256_hex(canonical_text(r)); }
+
 std::string record_json(const RunRecord& r) {
   json values = json::object();
   for (const auto& [name, v] : r.values) {
@@ -135,7 +174,8 @@ std::string record_json(const RunRecord& r) {
             {"equilibration_start", r.equilibration_start},
             {"values", values},
             {"series", {{"t", r.t}, {"P", r.P}, {"T", r.T}, {"R", r.R}}},
-            {"stages", {{"V", r.stage_V}, {"P", r.stage_P}, {"T", r.stage_T}}}};
+            {"stages", {{"V", r.stage_V}, {"P", r.stage_P}, {"T", r.stage_T}}},
+            {"digest", record_digest(r)}};
   return j.dump() + "\n";
 }
 
@@ -182,9 +222,10 @@ RecordRead parse_record(const std::string& text) {
   }
   for (const auto& [name, v] : values->items()) {
     RunValue x;
-    const std::string where = "values." + name + ".";
+    // The name is the file's: shown escaped, so a message stays one line of plain text.
+    const std::string where = "values." + swarm::printable(name) + ".";
     if (!v.is_object()) {
-      e = "values." + name + ": not an object";
+      e = "values." + swarm::printable(name) + ": not an object";
       return out;
     }
     if (!read_number(v, "value", x.value, e, where)) return out;
@@ -210,6 +251,15 @@ RecordRead parse_record(const std::string& text) {
   if (r.P.size() != r.t.size() || r.T.size() != r.t.size() || r.R.size() != r.t.size() ||
       r.stage_P.size() != r.stage_V.size() || r.stage_T.size() != r.stage_V.size()) {
     e = "series, stages: arrays of different lengths";
+    return out;
+  }
+  const auto digest = j.find("digest");
+  if (digest == j.end() || !digest->is_string()) {
+    e = "digest: missing or not text";
+    return out;
+  }
+  if (*digest != record_digest(r)) {
+    e = "digest: does not match the record's contents (edited by hand or damaged)";
     return out;
   }
   out.record = std::move(r);

@@ -3,7 +3,10 @@
 // `swarmlab ensemble`): who it is (index, seed, preset hash, program version), the numbers the
 // merge compares across runs, each with its within-run error where it has one, and the wall's
 // P(t), T(t) and the stages for the merge's bands. Small and of one size whatever the run's
-// length, so that a merge of thousands of runs reads little.
+// length, so that a merge of thousands of runs reads little. Sealed by a SHA-256 digest of all
+// of this (record_digest): a record edited by hand or damaged is refused like a cut one. The
+// digest catches a change, it does not prove who wrote the record (anyone with swarmlab or
+// the rule below can seal a record).
 
 #include <cstdint>
 #include <map>
@@ -16,7 +19,7 @@
 namespace swarmlab::ensemble {
 
 inline constexpr const char* kRunFormat = "swarmlab ensemble run";
-inline constexpr int kRunFormatVersion = 1;
+inline constexpr int kRunFormatVersion = 2;  ///< 2: the digest
 /// The P(t), T(t) series hold at most this many points, each the wall average of a stretch
 /// of consecutive samples (exact: impulses and hits add up).
 inline constexpr std::size_t kSeriesPoints = 200;
@@ -54,6 +57,23 @@ struct RunRecord {
 /// The record of a finished (or failed) run.
 RunRecord record_of(const RunIdentity& id, swarm::Run& run);
 std::string record_json(const RunRecord& r);
+
+/// The canonical text the digest is taken over: independent of how the JSON is laid out, so
+/// only a change of a value changes it. One line per item, each ending in "\n", in this order:
+///   swarmlab ensemble run 2
+///   swarmlab TEXT / preset_hash TEXT / index INT / seed INT / perturbation NUM /
+///   failure TEXT / equilibration_start NUM
+///   value TEXT NUM NUM-or--   (each of "values": name, value, se; names in byte order)
+///   series.t LIST / series.P LIST / series.T LIST / series.R LIST /
+///   stages.V LIST / stages.P LIST / stages.T LIST
+/// where TEXT is the byte count, ':' and the bytes (so any text is unambiguous), INT is
+/// decimal, NUM is C's printf("%.17g") of the double (which reads back to the same double)
+/// or "null" for a number that is not finite (JSON's null), and LIST is the count followed by
+/// " NUM" per element. Items on one line are separated by one space.
+std::string canonical_text(const RunRecord& r);
+/// "sha256:" and the SHA-256 (64 lowercase hex digits) of canonical_text(r): the record's
+/// "digest".
+std::string record_digest(const RunRecord& r);
 
 struct RecordRead {
   std::optional<RunRecord> record;

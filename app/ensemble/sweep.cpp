@@ -3,8 +3,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "ensemble/ensemble_plan.h"
 #include "files/text_file.h"
-
+#include "swarm/preset/printable_text.h"
 
 namespace swarmlab::ensemble {
 namespace {
@@ -31,6 +32,19 @@ std::string set_key(json& preset, const std::string& key, const json& value) {
   return {};
 }
 
+/// "" or a message naming the first key or text value of a point that holds a control
+/// character: a point's values go into plan.json, runs.csv and the terminal's table.
+std::string control_character_error(const json& values) {
+  for (const auto& [key, v] : values.items()) {
+    if (const std::string bad = control_character_in(key); !bad.empty())
+      return "\"" + swarm::printable(key) + "\": a key that holds " + bad;
+    if (v.is_string())
+      if (const std::string bad = control_character_in(v.get<std::string>()); !bad.empty())
+        return swarm::printable(key) + ": a value that holds " + bad;
+  }
+  return {};
+}
+
 }  // namespace
 
 bool is_sweep(const std::string& text) {
@@ -52,6 +66,10 @@ SweepRead read_sweep(const std::string& text, const std::string& sweep_path) {
     }
   if (!j["preset"].is_string()) {
     out.error = "preset: must be the base preset's file name";
+    return out;
+  }
+  if (const std::string bad = control_character_in(j["preset"].get<std::string>()); !bad.empty()) {
+    out.error = "preset: the base preset's file name holds " + bad;
     return out;
   }
   if (j.contains("grid") == j.contains("points")) {
@@ -123,6 +141,10 @@ SweepRead read_sweep(const std::string& text, const std::string& sweep_path) {
     return out;
   }
   for (const json& values : points) {
+    if (const std::string bad = control_character_error(values); !bad.empty()) {
+      out.error = bad;
+      return out;
+    }
     json preset = base;
     for (const auto& [key, v] : values.items())
       if (std::string err = set_key(preset, key, v); !err.empty()) {

@@ -7,9 +7,10 @@
 
 namespace swarmlab::report {
 
-/// One row per drawn point: panel,series,x,y, where panel counts from 0 at the top, series is
-/// the legend name (or, for an unnamed series, the panel's y axis) and the header names x. Eight
-/// significant digits: what the figure shows, in files small enough to commit.
+/// One row per drawn point: panel,series,x,y (every field quoted: report/csv_field.h), where
+/// panel counts from 0 at the top, series is the legend name (or, for an unnamed series, the
+/// panel's y axis) and the header names x. Eight significant digits: what the figure shows, in
+/// files small enough to commit.
 std::string csv_of(const Figure& figure);
 
 }  // namespace swarmlab::report

@@ -1,6 +1,7 @@
 #pragma once
 // A run's samples and stages as CSV: the one writer behind `swarmlab run --csv` and the app's
-// Export CSV, so that a file from either has the same columns.
+// Export CSV, so that a file from either has the same columns. Every field quoted
+// (report/csv_field.h): "t","P","T",... then one row of numbers per sample.
 
 #include <string>
 #include <vector>
@@ -9,10 +10,10 @@
 
 namespace swarmlab::report {
 
-/// The samples' header line (no newline): t,P,T,KE,PE,E,hits,R, then the energy books
+/// The samples' column names, in order: t,P,T,KE,PE,E,hits,R, then the energy books
 /// (work, heat, drag_loss since t = 0), the CM's height and the swarm's rms size.
 inline constexpr const char* kSamplesCsvHeader = "t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size";
-/// The stages' header line (no newline): the keys of RESULT.json's "stages", in its order.
+/// The stages' column names, in order: the keys of RESULT.json's "stages", in its order.
 inline constexpr const char* kStagesCsvHeader = "R,V,P,T,E,hits";
 
 /// One row per sample, full precision (17 significant digits) so the file re-reads exactly.

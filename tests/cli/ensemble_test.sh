@@ -23,7 +23,7 @@ for name in ("P", "T"):
     assert q["within_se"] > 0 and q["spread_ratio"] > 0 and q["runs_for_half_width"]["runs"] >= 2
 assert len(r["bands"]["time"]["t"]) == len(r["bands"]["time"]["P"]["mean"]) > 10
 PY
-  [ "$(wc -l <"$work/here/runs.csv")" -eq 7 ] && head -1 "$work/here/runs.csv" | grep -q '^index,seed,P,T,' && ok || bad "runs.csv"
+  [ "$(wc -l <"$work/here/runs.csv")" -eq 7 ] && head -1 "$work/here/runs.csv" | grep -q '^"index","seed","P","T",' && ok || bad "runs.csv"
 else
   bad "ensemble failed"
 fi
@@ -116,10 +116,9 @@ rm -f "$work/local/report.json"
 refused mixed "runs/1.json: a run of another preset" "$bin" merge "$work/local"
 [ ! -e "$work/local/report.json" ] && ok || bad "mixed: a report was written"
 # A run whose seed is not the plan's (an edited manifest line) is named, not merged.
-python3 - "$work/here/runs/4.json" <<'PY'
-import json, sys
-r = json.load(open(sys.argv[1])); r["seed"] += 1; json.dump(r, open(sys.argv[1], "w"))
-PY
+hash=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['points'][0]['preset_hash'])" "$work/here/plan.json")
+"$bin" run "$work/here/preset.json" --seed 12345 --run-index 4 --preset-hash "$hash" \
+  --record "$work/here/runs/4.json" --quiet || bad "a run with another seed"
 refused wrong-seed "runs/4.json: started from seed" "$bin" merge "$work/here"
 mkdir -p "$work/empty"
 refused empty "plan.json: missing: not an ensemble folder" "$bin" merge "$work/empty"
@@ -169,5 +168,208 @@ printf '{"preset": "gas.json", "grid": {"particles.countt": [100, 300]}, "seeds"
 refused sweep-unknown-key "particles.countt: not a key of the base preset" "$bin" ensemble "$work/sweep-bad.json" --out "$work/sb"
 printf '{"preset": "gas.json", "points": [{"J": 0}, {"particles.count": -5}], "seeds": 2}' >"$work/sweep-bad2.json"
 refused sweep-bad-value 'point {"particles.count":-5}: particles.count' "$bin" plan "$work/sweep-bad2.json" --out "$work/sb2"
+
+# --- Hostile input (issue 36) ---
+
+# seal.py RECORD...: gives each run record the digest of its canonical text as
+# app/ensemble/run_record.h documents it, written here from that description alone.
+cat >"$work/seal.py" <<'PY'
+import hashlib, json, sys
+def num(x):
+    return "null" if x is None or x != x or x in (float("inf"), float("-inf")) else "%.17g" % x
+def text(s):
+    b = s.encode()
+    return b"%d:" % len(b) + b
+def canonical(r):
+    out = [b"swarmlab ensemble run 2"]
+    out.append(b"swarmlab " + text(r["swarmlab"]))
+    out.append(b"preset_hash " + text(r["preset_hash"]))
+    out.append(b"index %d" % r["index"])
+    out.append(b"seed %d" % r["seed"])
+    out.append(b"perturbation " + num(r["perturbation"]).encode())
+    out.append(b"failure " + text(r["failure"]))
+    out.append(b"equilibration_start " + num(r["equilibration_start"]).encode())
+    for name in sorted(r["values"], key=lambda n: n.encode()):
+        v = r["values"][name]
+        se = num(v["se"]) if "se" in v else "-"
+        out.append(b"value " + text(name) + (" %s %s" % (num(v["value"]), se)).encode())
+    for group, keys in (("series", "tPTR"), ("stages", "VPT")):
+        for k in keys:
+            xs = r[group][k]
+            out.append(("%s.%s %d" % (group, k, len(xs)) + "".join(" " + num(x) for x in xs)).encode())
+    return b"\n".join(out) + b"\n"
+for path in sys.argv[1:]:
+    r = json.load(open(path))
+    r["digest"] = "sha256:" + hashlib.sha256(canonical(r)).hexdigest()
+    json.dump(r, open(path, "w"))
+PY
+"$bin" ensemble "$work/gas.json" --seeds 6 --seed 11 --out "$work/sealed" --jobs 2 --quiet || bad "sealed ensemble"
+# The documented digest is the one swarmlab writes: resealing changes no byte of meaning.
+cp -r "$work/sealed" "$work/resealed" && python3 "$work/seal.py" "$work"/resealed/runs/*.json &&
+  "$bin" merge "$work/resealed" --quiet && python3 -c "
+import json,sys; r=json.load(open('$work/resealed/report.json')); sys.exit(r['runs'] != 6 or r['corrupted'] != [])" &&
+  ok || bad "the digest described in run_record.h is not the one swarmlab writes"
+
+# Point 7: a record edited by hand (P times 10, valid JSON) is named and left out.
+cp -r "$work/sealed" "$work/edited"
+python3 - "$work/edited/runs/2.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1])); r["values"]["P"]["value"] *= 10; json.dump(r, open(sys.argv[1], "w"))
+PY
+"$bin" merge "$work/edited" --quiet && python3 - "$work/edited/report.json" <<'PY' && ok || bad "an edited record was merged"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["runs"] == 5 and [c["index"] for c in r["corrupted"]] == [2], r["corrupted"]
+assert r["corrupted"][0]["error"].startswith("digest: does not match"), r["corrupted"]
+PY
+
+# Point 8: six runs with P = 1.7e308 (each a valid, sealed record) overflow the sum: an error
+# naming P, a non-zero exit and no report, never "mean": null.
+cp -r "$work/sealed" "$work/huge"
+python3 - "$work"/huge/runs/*.json <<'PY'
+import json, sys
+for p in sys.argv[1:]:
+    r = json.load(open(p)); r["values"]["P"]["value"] = 1.7e308; json.dump(r, open(p, "w"))
+PY
+python3 "$work/seal.py" "$work"/huge/runs/*.json
+rm -f "$work/huge/report.json" "$work/huge/runs.csv"
+refused overflow "P: the mean, spread or interval of 6 runs' values is beyond the range of a double" \
+  "$bin" merge "$work/huge"
+[ ! -e "$work/huge/report.json" ] && [ ! -e "$work/huge/runs.csv" ] && ok || bad "overflow: a report was written"
+
+# Point 6: spreadsheet-hostile names in a run record's values and in plan.json's values go
+# into runs.csv as quoted text with a leading quote mark; every field reads back whole.
+hostile='=HYPERLINK("http://x"),"a
+b'
+cp -r "$work/sealed" "$work/csv"
+HOSTILE=$hostile python3 - "$work/csv/plan.json" "$work"/csv/runs/*.json <<'PY'
+import json, os, sys
+name = os.environ["HOSTILE"]
+plan = json.load(open(sys.argv[1]))
+plan["points"][0]["values"] = {"+" + name[1:]: "@SUM(1+1)", "J": -1.5}
+json.dump(plan, open(sys.argv[1], "w"))
+for p in sys.argv[2:]:
+    r = json.load(open(p)); r["values"][name] = {"value": -2.5}; json.dump(r, open(p, "w"))
+PY
+python3 "$work/seal.py" "$work"/csv/runs/*.json
+"$bin" merge "$work/csv" --quiet || bad "merge of hostile names"
+HOSTILE=$hostile python3 - "$work/csv/runs.csv" <<'PY' && ok || bad "runs.csv: a hostile name broke the CSV or reached a cell as a formula"
+import csv, os, sys
+name = os.environ["HOSTILE"]
+text = open(sys.argv[1], newline="").read()
+assert text.startswith('"index","seed",'), text[:40]  # RFC 4180 quotes, every field
+rows = list(csv.reader(open(sys.argv[1], newline="")))
+assert len(rows) == 7, rows
+# The plan's keys (in byte order), then the records' value names: text starting as a formula
+# does is shown as text, behind a quote mark.
+assert rows[0][:6] == ["index", "seed", "'+" + name[1:], "J", "'" + name, "P"], rows[0]
+for row in rows[1:]:
+    assert len(row) == len(rows[0]), row
+    assert row[2:5] == ["'@SUM(1+1)", "-1.5", "-2.5"], row  # the numbers stay numbers
+    for cell in row:
+        assert cell[:1] not in ("=", "+", "@", "\t", "\r"), cell
+        assert cell[:1] != "-" or float(cell) < 0, cell
+PY
+
+# Point 4: hostile names in plan's folder and program. Quotes, $( ), backticks, ; and spaces
+# are allowed and quoted: GNU parallel and bash (the Slurm script) run the runs and nothing
+# else (no marker file appears). A newline, a carriage return, NUL's neighbours and C1 controls
+# are refused, naming the flag, before anything is written.
+weird='ens $(touch m1) `touch m2`; touch m3 & '"'q' \"dq\" | touch m4"
+mkdir -p "$work/sw \$(touch m5) \`touch m6\`"
+ln -s "$bin" "$work/sw \$(touch m5) \`touch m6\`/swarmlab"
+prog="$work/sw \$(touch m5) \`touch m6\`/swarmlab"
+(cd "$work" && "$bin" plan gas.json --seeds 2 --seed 11 --out "$weird" --swarmlab "$prog" --slurm --quiet) &&
+  ok || bad "plan with quotes, \$( ), backticks and ; in the names"
+if command -v parallel >/dev/null; then
+  (cd "$work" && parallel --will-cite <"$work/$weird/manifest.txt") && ok || bad "parallel on the hostile manifest"
+  [ -s "$work/$weird/runs/0.json" ] && [ -s "$work/$weird/runs/1.json" ] && ok || bad "parallel ran no run"
+fi
+rm -f "$work/$weird"/runs/*.json
+for i in 0 1; do (cd "$work" && SLURM_ARRAY_TASK_ID=$i bash "$work/$weird/array.sbatch") || bad "hostile slurm task $i"; done
+[ -s "$work/$weird/runs/1.json" ] && ok || bad "the Slurm script ran no run"
+grep -q '^#SBATCH --output=".*/logs/"%a.out$' "$work/$weird/array.sbatch" && ok || bad "#SBATCH --output not quoted for Slurm"
+# The name holds a ': quoted for the shell it never appears whole.
+grep -v '^#SBATCH' "$work/$weird/array.sbatch" | grep -qF "$weird" && bad "the folder stands unquoted in array.sbatch" || ok
+for m in m1 m2 m3 m4 m5 m6; do [ ! -e "$work/$m" ] && [ ! -e "$m" ] && ok || bad "a name ran a command: $m exists"; done
+nl='
+'
+names=(newline carriage-return tab escape del c1 latin1)
+texts=("a${nl}touch m7" "a$(printf '\r')b" "a$(printf '\t')b" "a$(printf '\033')[31m" "a$(printf '\177')b"
+       "a$(printf '\302\205')b" "a$(printf '\205')b")
+rules=("a newline (byte" "a carriage return (byte" "a control character (byte" "a control character (byte"
+       "a control character (byte" "a C1 control character (byte" "a byte that is not UTF-8 (byte")
+for i in "${!names[@]}"; do
+  what=${names[$i]} text=${texts[$i]}
+  refused "out-$what" "--out: the folder's path" "$bin" plan "$work/gas.json" --seeds 2 --out "$work/$text"
+  grep -qF "holds ${rules[$i]}" "$work/stderr" && ok || bad "out-$what: $(cat "$work/stderr")"
+  [ ! -e "$work/$text" ] && ok || bad "$what: plan made the folder before refusing"
+  refused "swarmlab-$what" "--swarmlab: the program to call" "$bin" plan "$work/gas.json" --seeds 2 \
+    --out "$work/cc-$what" --swarmlab "/usr/bin/$text"
+  [ ! -e "$work/cc-$what" ] && ok || bad "$what: plan wrote a folder for a refused --swarmlab"
+done
+cp "$work/gas.json" "$work/gas${nl}2.json"
+refused newline-preset "PRESET: the preset's path" "$bin" plan "$work/gas${nl}2.json" --seeds 2 --out "$work/np"
+printf '{"preset": "gas.json", "points": [{"name": "a\\nb"}], "seeds": 2}' >"$work/sweep-nl.json"
+refused newline-sweep-value 'name: a value that holds a newline' "$bin" plan "$work/sweep-nl.json" --out "$work/snl"
+[ ! -e "$work/np" ] && [ ! -e "$work/snl" ] && ok || bad "a refused plan left a folder"
+
+# Point 5: special files are refused at once, each with a message naming the rule; `timeout`
+# turns a hang back into a failure.
+mkfifo "$work/fifo.json"
+ln -s /dev/zero "$work/zero.json"
+truncate -s 17M "$work/big17.json"
+within() {  # NAME MESSAGE COMMAND...: refused within 10 s with MESSAGE
+  local name=$1 message=$2
+  shift 2
+  rm -f "$work/stderr"
+  timeout 10 "$@" >/dev/null 2>"$work/stderr"
+  local status=$?
+  [ $status -eq 124 ] && { bad "$name: still running after 10 s"; return; }
+  [ $status -ne 0 ] && grep -qF -- "$message" "$work/stderr" && ok || bad "$name: exit $status, $(cat "$work/stderr")"
+}
+within validate-fifo "fifo.json: not a regular file (a FIFO)" "$bin" validate "$work/fifo.json"
+within validate-zero "zero.json: not a regular file (a character device)" "$bin" validate "$work/zero.json"
+within validate-big "big17.json: larger than 16 MB, the most this file may hold" "$bin" validate "$work/big17.json"
+within plan-fifo "fifo.json: not a regular file (a FIFO)" "$bin" plan "$work/fifo.json" --seeds 2 --out "$work/pf"
+within plan-zero "zero.json: not a regular file (a character device)" "$bin" plan "$work/zero.json" --seeds 2 --out "$work/pz"
+within plan-big "big17.json: larger than 16 MB" "$bin" plan "$work/big17.json" --seeds 2 --out "$work/pb"
+cp -r "$work/sealed" "$work/special"
+rm -f "$work/special/runs/2.json" "$work/special/runs/3.json" "$work/special/runs/4.json"
+mkfifo "$work/special/runs/2.json"
+ln -s /dev/zero "$work/special/runs/3.json"
+truncate -s 17M "$work/special/runs/4.json"
+if timeout 10 "$bin" merge "$work/special" --quiet 2>"$work/stderr"; then
+  python3 - "$work/special/report.json" <<'PY' && ok || bad "merge: special files not named as corrupted"
+import json, sys
+r = json.load(open(sys.argv[1]))
+c = {x["index"]: x["error"] for x in r["corrupted"]}
+assert r["runs"] == 3 and sorted(c) == [2, 3, 4], r["corrupted"]
+assert c[2].startswith("not a regular file (a FIFO)") and "character device" in c[3] and "16 MB" in c[4], c
+PY
+else
+  bad "merge with a FIFO, /dev/zero and a 17 MB file among the runs: exit $?, $(cat "$work/stderr")"
+fi
+cp -r "$work/sealed" "$work/fifo-plan" && rm "$work/fifo-plan/plan.json" && mkfifo "$work/fifo-plan/plan.json"
+within merge-fifo-plan "plan.json: not a regular file (a FIFO)" "$bin" merge "$work/fifo-plan"
+# A plan.json that claims 2,000 points x 1,000,000 seeds is refused at once; one that claims
+# 1,000,000 runs of which two exist merges in about the time of two.
+python3 - "$work/sealed/plan.json" "$work/claims" <<'PY'
+import json, os, shutil, sys
+plan = json.load(open(sys.argv[1]))
+os.makedirs(sys.argv[2] + "/runs")
+big = dict(plan, points=plan["points"] * 2000, seeds=1000000)
+json.dump(big, open(sys.argv[2] + "/plan.json", "w"))
+PY
+within merge-claims "points, seeds: 2000 points x 1000000 seeds = 2e+09 runs, more than the 1,000,000" \
+  "$bin" merge "$work/claims"
+mkdir -p "$work/million/runs" && cp "$work/sealed/runs/0.json" "$work/sealed/runs/1.json" "$work/million/runs/"
+python3 -c "
+import json,sys; p=json.load(open('$work/sealed/plan.json')); p['seeds']=1000000; json.dump(p, open('$work/million/plan.json','w'))"
+start=$EPOCHREALTIME
+timeout 20 "$bin" merge "$work/million" --quiet && python3 -c "
+import json,sys; r=json.load(open('$work/million/report.json')); sys.exit(r['runs'] != 2 or len(r['missing']) != 999998)" &&
+  ok || bad "merge of 2 runs of a 1,000,000-run plan"
+echo "merge of 2 runs of a 1,000,000-run plan: $(python3 -c "print(round($EPOCHREALTIME - $start, 2))") s"
 
 finish

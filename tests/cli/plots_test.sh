@@ -15,8 +15,10 @@ import sys, xml.etree.ElementTree as ET
 root = ET.parse(sys.argv[1]).getroot()
 assert root.tag.endswith("svg"), root.tag
 assert any(e.tag.endswith("polyline") or e.tag.endswith("circle") for e in root.iter())
-rows = open(sys.argv[2]).read().splitlines()
-assert rows[0].startswith("panel,series,") and rows[0].endswith(",y") and len(rows) > 2, rows[:2]
+import csv
+rows = list(csv.reader(open(sys.argv[2], newline="")))
+assert rows[0][:2] == ["panel", "series"] and rows[0][-1] == "y" and len(rows) > 2, rows[:2]
+assert all(len(r) == 4 for r in rows[1:]) and [float(r[2]) + float(r[3]) for r in rows[1:]], rows[1]
 PY
   done
 }

@@ -2,6 +2,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <nlohmann/json.hpp>
+
 #include "swarm/preset/initial_conditions.h"
 
 using namespace swarmlab::ensemble;
@@ -57,9 +60,57 @@ TEST_CASE("run record: a cut or altered file is refused, naming what is wrong") 
   CHECK(parse_record(text.substr(0, text.size() / 2)).error.find("not a complete JSON object") == 0);
   CHECK(parse_record("{\"format\": \"something else\"}").error.find("format:") == 0);
   std::string other = text;
-  other.replace(other.find("\"format_version\":1"), 18, "\"format_version\":7");
+  other.replace(other.find("\"format_version\":2"), 18, "\"format_version\":7");
   CHECK(parse_record(other).error.find("format_version: 7") == 0);
   std::string bad_seed = text;
   bad_seed.replace(bad_seed.find("\"seed\":1"), 8, "\"seed\":-1");
   CHECK(parse_record(bad_seed).error.find("seed:") == 0);
+}
+
+TEST_CASE("run record: the digest is over the documented canonical text") {
+  RunRecord r;
+  r.id = {4, 18446744073709551615ULL, "00ff", "v1", 0.25};
+  r.failure = "a:b";
+  r.equilibration_start = 0.5;
+  r.values["P"] = {-1.5, 0.125};
+  r.values["T"] = {1.0 / 3, std::nullopt};
+  r.t = {1, 2};
+  r.P = {0.5, 1e300};
+  r.T = {NAN, 2};
+  r.R = {1, 1};
+  // The text run_record.h describes, written out by hand.
+  CHECK(canonical_text(r) ==
+        "swarmlab ensemble run 2\n"
+        "swarmlab 2:v1\n"
+        "preset_hash 4:00ff\n"
+        "index 4\n"
+        "seed 18446744073709551615\n"
+        "perturbation 0.25\n"
+        "failure 3:a:b\n"
+        "equilibration_start 0.5\n"
+        "value 1:P -1.5 0.125\n"
+        "value 1:T 0.33333333333333331 -\n"
+        "series.t 2 1 2\n"
+        "series.P 2 0.5 1.0000000000000001e+300\n"
+        "series.T 2 null 2\n"
+        "series.R 2 1 1\n"
+        "stages.V 0\n"
+        "stages.P 0\n"
+        "stages.T 0\n");
+  // sha256 of that text, from Python's hashlib.
+  CHECK(record_digest(r) == "sha256:5094912e22e5447fe62cb0d636578f0019e2dde8386612a52973859e6f28556e");
+}
+
+TEST_CASE("run record: an edited value is refused by its digest, a re-laid-out file is not") {
+  swarm::Run run = gas_run(200);
+  const RunRecord r = record_of({0, 1, "00ff", "abc", 0.0}, run);
+  nlohmann::json j = nlohmann::json::parse(record_json(r));
+  // Pretty-printed: the same values, so the same digest.
+  CHECK(parse_record(j.dump(2)).record.has_value());
+  // P times 10, in valid JSON: what a hand edit does.
+  j["values"]["P"]["value"] = j["values"]["P"]["value"].get<double>() * 10;
+  CHECK(parse_record(j.dump()).error ==
+        "digest: does not match the record's contents (edited by hand or damaged)");
+  j.erase("digest");
+  CHECK(parse_record(j.dump()).error == "digest: missing or not text");
 }

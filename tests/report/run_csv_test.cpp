@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -18,10 +19,15 @@ std::vector<std::string> lines_of(const std::string& text) {
   return out;
 }
 
+/// The numbers of a row of quoted numeric fields ("0.5","-1.25"); NAN for a field that is not
+/// one quoted number.
 std::vector<double> numbers_of(const std::string& line) {
   std::vector<double> out;
   std::istringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) out.push_back(std::strtod(field.c_str(), nullptr));
+  for (std::string field; std::getline(in, field, ',');) {
+    const bool quoted = field.size() >= 2 && field.front() == '"' && field.back() == '"';
+    out.push_back(quoted ? std::strtod(field.substr(1, field.size() - 2).c_str(), nullptr) : NAN);
+  }
   return out;
 }
 
@@ -34,7 +40,8 @@ TEST_CASE("the samples CSV has the CLI's columns and re-reads every value exactl
   const std::vector<std::string> lines = lines_of(report::samples_csv(samples));
   REQUIRE(lines.size() == 3);
   // The header tests/cli/cli_test.sh pins for `swarmlab run --csv`.
-  CHECK(lines[0] == "t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size");
+  CHECK(lines[0] ==
+        R"("t","P","T","KE","PE","E","hits","R","work","heat","drag_loss","cm_height","size")");
   for (int i = 0; i < 2; ++i) {
     const swarm::Sample& s = samples[std::size_t(i)];
     const std::vector<double> v = numbers_of(lines[std::size_t(i) + 1]);
@@ -60,7 +67,7 @@ TEST_CASE("the stages CSV has RESULT.json's stage keys in order") {
   stages[0] = {2.0, 33.510321638291124, 0.1 / 3, 1.0 / 7, -0.5, 41};
   const std::vector<std::string> lines = lines_of(report::stages_csv(stages));
   REQUIRE(lines.size() == 2);
-  CHECK(lines[0] == "R,V,P,T,E,hits");
+  CHECK(lines[0] == R"("R","V","P","T","E","hits")");
   const std::vector<double> v = numbers_of(lines[1]);
   REQUIRE(v.size() == 6);
   CHECK(v[0] == 2.0);

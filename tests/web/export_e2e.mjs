@@ -21,6 +21,9 @@ function cliCsvHeader(presetJson) {
   return readFileSync(join(dir, 'p.csv'), 'utf8').split('\n')[0];
 }
 
+// The fields of a CSV row of numbers, each in quotes as every field is (app/report/csv_field.h).
+const fields = (line) => line.split(',').map((f) => f.replace(/^"(.*)"$/, '$1'));
+
 // Whether the page's beforeunload handler would ask (it cancels the event only with edits).
 const beforeUnloadArmed = (page) => page.evaluate(() => {
   const e = new Event('beforeunload', { cancelable: true });
@@ -69,7 +72,7 @@ async function main(url) {
   check('the CSV header equals `swarmlab run --csv` on the same preset',
         header !== null && lines[0] === header, `page "${lines[0]}", CLI "${header}"`);
   check('every CSV row has the header\'s columns, numbers only', lines.length >= 2 &&
-        lines.slice(1).every((l) => l.split(',').length === lines[0].split(',').length && l.split(',').every((f) => f !== '' && isFinite(Number(f)))),
+        lines.slice(1).every((l) => l.split(',').length === lines[0].split(',').length && fields(l).every((f) => f !== '' && isFinite(Number(f)))),
         `${lines.length - 1} rows`);
 
   // 5. After a seek back the samples end at the time shown: the file says which range it holds,
@@ -80,13 +83,13 @@ async function main(url) {
     page.waitForEvent('download', { timeout: 15_000 }).catch(() => null),
     page.evaluate(() => window.swarmlab.exportCsv())]);
   const backRows = back ? readFileSync(await back.path(), 'utf8').split('\n').filter(Boolean) : [];
-  const lastT = backRows.length > 1 ? Number(backRows.at(-1).split(',')[0]) : NaN;
+  const lastT = backRows.length > 1 ? Number(fields(backRows.at(-1))[0]) : NaN;
   check('after a seek back the CSV\'s name says it ends at the time shown',
         /-samples-t0-to-t[0-9.e+-]+\.csv$/.test(backName) && Math.abs(Number(/-to-t(.*)\.csv$/.exec(backName)[1]) - shown) <= 1e-3 * Math.max(1, shown),
         `reached ${reached}, shown ${shown}, file "${backName}"`);
   // Samples come every few steps: the last is at most one sampling interval before it (the
   // interval read off the rows themselves, so how far the run had got does not matter).
-  const times = lines.slice(1).map((l) => Number(l.split(',')[0]));
+  const times = lines.slice(1).map((l) => Number(fields(l)[0]));
   const interval = Math.max(...times.slice(1).map((t, i) => t - times[i]));
   check('and its rows end at that time, not at the time reached',
         lastT <= shown * (1 + 1e-9) && shown - lastT <= interval * (1 + 1e-9),
