@@ -104,7 +104,7 @@ ClaimRuns runs_of(const json& j, const std::string& path, const ClaimRuns& base,
 
 ClaimRelation relation_of(const json& j, const std::string& path) {
   const char* rule =
-      "must be \"greater\", \"less\", \"equal\", \"differs\" or {\"ratio\": r} with r >= 0";
+      "must be \"greater\", \"less\", \"equal\", \"differs\" or {\"ratio\": r} with r in [0, 1e6]";
   ClaimRelation r;
   if (j.is_string()) {
     const std::string s = j.get<std::string>();
@@ -118,7 +118,7 @@ ClaimRelation relation_of(const json& j, const std::string& path) {
   require(j.is_object() && j.size() == 1 && j.contains("ratio"), path, rule);
   r.kind = ClaimRelation::Kind::ratio;
   r.ratio = number(j.at("ratio"), path + ".ratio");
-  require(r.ratio >= 0, path + ".ratio", "must be >= 0");
+  require(r.ratio >= 0 && r.ratio <= 1e6, path + ".ratio", "must be in [0, 1e6]");
   return r;
 }
 

@@ -83,9 +83,9 @@ TEST_CASE("a bad claim is refused with the field and the rule") {
         "steps[1].claims[0].options: must give a relation for at least one option");
   CHECK(with("options", ojson::array({"bigger", nullptr, nullptr})).find(
             "steps[1].claims[0].options[0]: must be \"greater\", \"less\", \"equal\", \"differs\" or "
-            "{\"ratio\": r} with r >= 0 (not \"bigger\")") == 0);
+            "{\"ratio\": r} with r in [0, 1e6] (not \"bigger\")") == 0);
   CHECK(with("options", ojson::array({ojson{{"ratio", -1}}, nullptr, nullptr})) ==
-        "steps[1].claims[0].options[0].ratio: must be >= 0");
+        "steps[1].claims[0].options[0].ratio: must be in [0, 1e6]");
   CHECK(with("seeds", 1) ==
         "steps[1].claims[0].seeds: the runs draw their particles from a seed: give at least 2, so "
         "that the claim holds for the gas and not for one draw");
