@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "swarm/measure/speed_distribution.h"
+
 namespace swarmlab {
 namespace {
 
@@ -14,6 +16,18 @@ json fit_json(const swarm::PowerLawFit& f) {
 }
 
 json vec(const swarm::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+
+/// The final speeds against the Maxwellian: T_kinetic = (2/3) KE / N in the CM frame, and
+/// the p-value of the Kolmogorov-Smirnov test of the speeds against the Maxwellian at that T
+/// (README, "What T means": the wall's T is the kinetic T only for a Maxwellian gas).
+json speeds_json(const swarm::System& final_state) {
+  const swarm::SpeedCheck c = swarm::check_speeds(final_state);
+  return {{"T_kinetic", c.T},
+          {"maxwellian_p", c.maxwellian_p},
+          {"maxwellian_test",
+           "Kolmogorov-Smirnov of the final speeds against the Maxwellian at T_kinetic "
+           "(T estimated from the same speeds: conservative)"}};
+}
 
 json summary_json(const swarm::RunSummary& s) {
   return {{"M", s.M},
@@ -37,6 +51,7 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
   json j;
   j["preset"] = json::parse(swarm::preset_to_json(preset));
   j["summary"] = summary_json(run.summary());
+  j["summary"].update(speeds_json(run.engine().system()));
   json samples = json::array();
   for (const swarm::Sample& x : run.samples())
     samples.push_back({{"t", x.t},

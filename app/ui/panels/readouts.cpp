@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "i18n/translator.h"
+#include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/wall.h"
@@ -252,6 +253,13 @@ void draw_readouts(AppState& state) {
     std::snprintf(value, sizeof value, "%.4g   V = %.4g", *R, swarm::sphere_volume(*R));
     row("R", value, tr("Container radius and volume V = 4/3 \u03c0 R\u00b3."));
     wall_rows(state.instruments.wall);
+    std::snprintf(value, sizeof value, "%.4g", swarm::kinetic_temperature(s));
+    row(tr("T kinetic"), value,
+        tr("T kinetic = (2/3) KE / N in the centre of mass's frame (k_B = 1), now. The wall's "
+           "T equals it only while the speeds follow the Maxwell distribution: with J = 0 and "
+           "a still wall every particle keeps its speed, so a start that is not Maxwellian "
+           "never becomes one, and the two differ. A hot wall or hard spheres make the speeds "
+           "Maxwellian (Projects tab: the speeds against the Maxwellian)."));
     std::snprintf(value, sizeof value, "%.4g", hit_rate(*state.run, state.plots.average_window));
     row(tr("hits/time"), value,
         tr("Wall hits per unit of simulated time, over the plots' averaging "

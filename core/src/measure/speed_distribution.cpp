@@ -43,6 +43,25 @@ double maxwell_ks_distance(std::vector<double> scaled) {
   return D;
 }
 
+double kolmogorov_tail(double lambda) {
+  // Below 0.2 the series converges slowly and Q is 1 to 1e-9.
+  if (lambda < 0.2) return 1;
+  double sum = 0, sign = 1;
+  for (int k = 1; k <= 100; ++k) {
+    const double term = std::exp(-2.0 * k * k * lambda * lambda);
+    sum += sign * term;
+    if (term < 1e-16 * sum) break;
+    sign = -sign;
+  }
+  return std::clamp(2 * sum, 0.0, 1.0);
+}
+
+double ks_p_value(double D, std::size_t n) {
+  if (n == 0) return 1;
+  const double root = std::sqrt(double(n));
+  return kolmogorov_tail((root + 0.12 + 0.11 / root) * D);
+}
+
 SpeedHistogram speed_histogram(const std::vector<double>& scaled, int bins, double x_max) {
   SpeedHistogram h;
   h.x_max = x_max;
@@ -65,6 +84,7 @@ SpeedCheck check_speeds(const System& s, int bins) {
   const std::vector<double> scaled = scaled_speeds(s, c.T);
   c.histogram = speed_histogram(scaled, bins);
   c.ks_distance = maxwell_ks_distance(scaled);
+  c.maxwellian_p = ks_p_value(c.ks_distance, c.n);
   return c;
 }
 

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include "swarm/preset/initial_conditions.h"
 
@@ -41,4 +42,39 @@ TEST_CASE("a Maxwellian swarm passes the KS test, a uniform-ball one does not") 
   const System ball = generate_swarm(spec);
   const SpeedCheck u = check_speeds(ball);
   CHECK(std::sqrt(double(u.n)) * u.ks_distance > 5);
+  CHECK(c.maxwellian_p > 0.01);
+  CHECK(u.maxwellian_p < 1e-9);
+}
+
+TEST_CASE("kolmogorov_tail: the Kolmogorov distribution's tabulated quantiles") {
+  // Smirnov's table (Massey 1951, n -> infinity): 1.22 at 10 %, 1.36 at 5 %, 1.63 at 1 %.
+  CHECK(kolmogorov_tail(1.2238) == doctest::Approx(0.10).epsilon(0.002));
+  CHECK(kolmogorov_tail(1.3581) == doctest::Approx(0.05).epsilon(0.002));
+  CHECK(kolmogorov_tail(1.6276) == doctest::Approx(0.01).epsilon(0.002));
+  CHECK(kolmogorov_tail(0.1) == 1);
+  CHECK(kolmogorov_tail(0.5) == doctest::Approx(0.9639).epsilon(1e-3));  // 1 - K(0.5) = 0.96394
+}
+
+TEST_CASE("ks_p_value: a Maxwellian gas at a known T is refused at 5 % in 5 % of samples") {
+  // 400 independent gases of 200 particles at T = 1; the speeds scaled by the true T, so
+  // that the test is the plain one-sample KS test, whose p is uniform. Binomial(400, 0.05):
+  // 20 +- 4.4 refusals; the band is 3.5 standard deviations.
+  int refused = 0, refused_estimated = 0;
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    SwarmSpec spec;
+    spec.count = 200;
+    spec.velocities = SwarmSpec::Velocities::maxwell;
+    spec.temperature = 1.0;
+    spec.cm_at_rest = false;
+    spec.seed = seed;
+    const System gas = generate_swarm(spec);
+    refused += ks_p_value(maxwell_ks_distance(scaled_speeds(gas, 1.0)), 200) < 0.05;
+    refused_estimated += check_speeds(gas).maxwellian_p < 0.05;
+  }
+  CAPTURE(refused);
+  CAPTURE(refused_estimated);
+  CHECK(refused >= 5);
+  CHECK(refused <= 36);
+  // With T estimated from the same speeds the test is conservative: fewer refusals.
+  CHECK(refused_estimated <= refused);
 }

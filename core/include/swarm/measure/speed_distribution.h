@@ -26,6 +26,16 @@ std::vector<double> scaled_speeds(const System& s, double T);
 /// Maxwellian, sqrt(n) D exceeds 1.36 with probability 5 %, 1.63 with probability 1 %.
 double maxwell_ks_distance(std::vector<double> scaled);
 
+/// The Kolmogorov distribution's tail, Q(lambda) = 2 sum_k (-1)^(k-1) exp(-2 k^2 lambda^2):
+/// the probability that sqrt(n) D exceeds lambda for n draws from the tested distribution, as
+/// n grows (Q(1.358) = 0.05, Q(1.628) = 0.01).
+double kolmogorov_tail(double lambda);
+/// The p-value of the KS distance D of n draws, with Stephens' finite-n correction
+/// lambda = (sqrt(n) + 0.12 + 0.11 / sqrt(n)) D. Against a Maxwellian whose T was estimated
+/// from the same speeds (check_speeds) the test is conservative: the estimate pulls the
+/// Maxwellian towards the data, so a Maxwellian gas is refused less often than p says.
+double ks_p_value(double D, std::size_t n);
+
 /// A histogram of scaled speeds in `bins` equal bins over [0, x_max], as probability density
 /// (integrates to the fraction of speeds below x_max), beside the Maxwell density at each
 /// bin's centre: the plot "speeds against the Maxwellian".
@@ -42,6 +52,9 @@ struct SpeedCheck {
   double T = 0;
   std::size_t n = 0;
   double ks_distance = 0;  ///< sqrt(n) ks_distance < 1.63: Maxwellian at the 1 % level
+  /// ks_p_value of ks_distance: below 0.01, the speeds are not Maxwellian at the 1 % level
+  /// (and the wall's T is then not the kinetic T: README, "What T means").
+  double maxwellian_p = 1;
   SpeedHistogram histogram;
 };
 SpeedCheck check_speeds(const System& s, int bins = 40);
