@@ -3,6 +3,7 @@
 
 #include <emscripten.h>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -104,14 +105,24 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_download() {
   return download_name.c_str();
 }
 
-/// Selects particle `index` (< 0: none), as a click on it does. Returns -1 on success, and
-/// the number of particles, for the message, when there is no such particle.
+/// The number of particles, the range of every particle index the page passes.
+EMSCRIPTEN_KEEPALIVE double swarmlab_particle_count() {
+  swarmlab::App* app = swarmlab::web_app();
+  return app ? double(app->state().run->system().particles.size()) : 0.0;
+}
+
+/// Selects particle `index` (-1: none), as a click on it does. Returns -1 on success, and the
+/// number of particles when there is no such particle. The index is compared as a double
+/// before it becomes a size_t (32 bits in wasm), so 2^32 + 2 cannot wrap to particle 2.
 EMSCRIPTEN_KEEPALIVE double swarmlab_select(double index) {
   swarmlab::App* app = swarmlab::web_app();
   if (!app) return 0;
-  const auto chosen = index < 0 ? std::nullopt : std::optional<std::size_t>(std::size_t(index));
-  if (app->state().select_particle(chosen)) return -1;
-  return double(app->state().run->system().particles.size());
+  const double count = swarmlab_particle_count();
+  if (index == -1) app->state().select_particle(std::nullopt);
+  else if (index >= 0 && index < count && index == std::floor(index))
+    app->state().select_particle(std::size_t(index));
+  else return count;
+  return -1;
 }
 
 /// The stopwatch's buttons: 0 start, 1 stop, 2 lap, 3 reset, at the simulated clock's reading.

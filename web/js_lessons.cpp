@@ -5,6 +5,7 @@
 #include <emscripten.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -158,13 +159,18 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_answer(double value) {
     out = {{"error", "no lesson is open"}};
   } else if (!step->task) {
     out = {{"error", "this step has no task"}};
+  } else if (step->task->kind != swarmlab::LessonTask::Kind::measure &&
+             !(value >= 0 && value < double(step->task->options.size()) && value == std::floor(value))) {
+    // Checked as a double: a size_t (32 bits in wasm) would take 2^32 + 1 as option 1.
+    char text[160];
+    std::snprintf(text, sizeof text, "value must be an option's index, an integer from 0 to %zu, not %.17g",
+                  step->task->options.size() - 1, value);
+    out = {{"error", text}};
   } else {
     swarmlab::AppState& s = app->state();
-    const swarmlab::Marking m =
-        step->task->kind == swarmlab::LessonTask::Kind::measure
-            ? s.lessons.answer_number(*s.run, value)
-            : swarmlab::answer_lesson_option(
-                  s, value >= 0 && std::isfinite(value) ? std::size_t(value) : std::size_t(-1));
+    const swarmlab::Marking m = step->task->kind == swarmlab::LessonTask::Kind::measure
+                                    ? s.lessons.answer_number(*s.run, value)
+                                    : swarmlab::answer_lesson_option(s, std::size_t(value));
     out = {{"correct", m.correct ? json(*m.correct) : json(nullptr)}, {"feedback", m.feedback}};
   }
   answer_text = out.dump();

@@ -5,6 +5,7 @@
 #include <emscripten.h>
 
 #include <nlohmann/json.hpp>
+#include <cstdint>
 #include <string>
 
 #include "i18n/language.h"
@@ -28,6 +29,13 @@ bool number_in(const json& v, double lo, double hi) {
   return v.is_number() && v.get<double>() >= lo && v.get<double>() <= hi;
 }
 
+/// Whether v is an integer from 0 to n - 1, compared before any conversion (JSON's integers
+/// are 64 bits, signed or not; a size_t in wasm is 32).
+bool index_below(const json& v, std::size_t n) {
+  if (v.is_number_unsigned()) return v.get<std::uint64_t>() < n;
+  return v.is_number_integer() && v.get<std::int64_t>() >= 0 && std::uint64_t(v.get<std::int64_t>()) < n;
+}
+
 const Key kKeys[] = {
     {"playing", "must be true or false", [](const AppState&, const json& v) { return v.is_boolean(); },
      [](AppState& s, const json& v) { s.playing = v.get<bool>(); }},
@@ -47,12 +55,11 @@ const Key kKeys[] = {
      [](AppState& s, const json& v) { s.layout.pending_ui_scale = v.get<float>(); }},
     {"selected", "must be a particle index (an integer from 0 to N - 1) or null",
      [](const AppState& s, const json& v) {
-       return v.is_null() || (v.is_number_integer() && v.get<long long>() >= 0 &&
-                              v.get<long long>() < (long long)(s.run->system().particles.size()));
+       return v.is_null() || index_below(v, s.run->system().particles.size());
      },
      [](AppState& s, const json& v) {
        if (v.is_null()) s.selected.reset();
-       else s.selected = v.get<std::size_t>();
+       else s.selected = std::size_t(v.get<std::uint64_t>());
        s.update_followed();
      }},
     // The projector and the classroom (app/ui/classroom/presentation.h). Presentation comes after the

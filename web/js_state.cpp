@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -155,12 +156,14 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_state() {
 
 /// Where particle i was drawn this frame: "x y" in CSS pixels of the canvas, "" when it is
 /// behind the camera or outside the 3D view, "bad N" when there is no particle i (N particles).
-EMSCRIPTEN_KEEPALIVE const char* swarmlab_screen_position(int i) {
+/// i comes as a double and is checked before it becomes an index: an int parameter would take
+/// JavaScript's 2^32 + 1 as 1.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_screen_position(double i) {
   swarmlab::App* app = swarmlab::web_app();
   if (!app) return "bad 0";
   const swarmlab::AppState& s = app->state();
   const auto& particles = s.run->system().particles;
-  if (i < 0 || std::size_t(i) >= particles.size()) {
+  if (!(i >= 0 && i < double(particles.size()) && i == std::floor(i))) {
     position_text = "bad " + std::to_string(particles.size());
     return position_text.c_str();
   }

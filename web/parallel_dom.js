@@ -16,8 +16,15 @@
   var groups = new Map();     // key -> <div role="tablist|listbox|menubar|menu">
   var lastText = '';
   var editingShown = 0;       // the field being typed into on the canvas, shown as an <input>
+  var kMaxFieldChars = 1024;  // what a mirrored field takes (a number, a cell, an answer)
 
-  function call(name, types, args) { Module.ccall(name, null, types, args); }
+  // An item's id becomes a C unsigned: checked as one first (2^32 + 5 would press item 5).
+  function call(name, types, args) {
+    var id = args[0];
+    if (!Number.isSafeInteger(id) || id < 0 || id > 0xffffffff)
+      throw new Error('parallel DOM: ' + name + ': the item id must be an integer from 0 to 4294967295, not ' + String(id));
+    Module.ccall(name, null, types, args);
+  }
   function activate(id) { call('swarmlab_dom_activate', ['number'], [id]); }
   // Whether the page's last input was a key (Tab, a screen reader's keys) rather than a finger
   // or a mouse: only then does a focus show ImGui's focus ring, and does the focus of an item
@@ -71,6 +78,8 @@
     if (isField(item.role)) {
       el = document.createElement('input');
       el.type = 'text';
+      // Typed text crosses on the wasm stack (ccall); ImGui's fields hold far less anyway.
+      el.maxLength = kMaxFieldChars;
       el.autocomplete = 'off';
       el.spellcheck = false;
       // ImGui's slider, mirrored as a field its number is typed into: a spinbutton (the role

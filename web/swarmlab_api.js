@@ -79,13 +79,30 @@
       throw new Error('swarmlab: the app has not started yet (await swarmlab.ready)');
   }
 
+  // A value as an error message quotes it (a BigInt or a cycle has no JSON).
+  function quoted(value) {
+    if (typeof value === 'number' || value === undefined) return String(value);
+    try { return JSON.stringify(value); } catch (e) { return String(value); }
+  }
+
+  // An index from the caller, checked before it becomes a C int or size_t, where 2^32 + 1
+  // would wrap to 1 and 2^53 to 0: a safe integer (exact in a double) from 0 to count - 1.
+  // Throws Error naming the call's argument, the value and the range.
+  function checkedIndex(call, name, value, count, what) {
+    if (!Number.isSafeInteger(value) || value < 0 || value >= count)
+      throw new Error(call + ': ' + name + ' must be ' + what + ', an integer from 0 to ' + (count - 1) +
+                      ' (' + count + ' of them), not ' + quoted(value));
+    return value;
+  }
+  function particleCount() { return Module.ccall('swarmlab_particle_count', 'number', [], []); }
+
   // The frame loop idles while nothing changes (app/ui/frame_demand.h): every call into the app
   // wakes it, except these questions, which only read (a page may ask them every frame).
   var questions = ['swarmlab_preset', 'swarmlab_time', 'swarmlab_state', 'swarmlab_positions',
                    'swarmlab_seek_poll', 'swarmlab_button_rect', 'swarmlab_screen_position',
                    'swarmlab_lessons', 'swarmlab_lesson_state', 'swarmlab_lesson_fragment',
                    'swarmlab_welcome_shown', 'swarmlab_shipped', 'swarmlab_dom_items',
-                   'swarmlab_wake'];
+                   'swarmlab_particle_count', 'swarmlab_wake'];
   var ccall = Module.ccall;
   Module.ccall = function (name) {
     var result = ccall.apply(null, arguments);
@@ -387,10 +404,9 @@
     // and set({playing, speed, layout, ui_scale, selected, ...}) (web/js_set.cpp's table).
     screenPosition: function (i) {
       check();
-      if (!Number.isInteger(i)) throw new Error('swarmlab.screenPosition(i): i must be an integer, not ' + JSON.stringify(i));
+      checkedIndex('swarmlab.screenPosition(i)', 'i', i, particleCount(), 'a particle index');
       var p = Module.ccall('swarmlab_screen_position', 'string', ['number'], [i]);
-      if (p.indexOf('bad') === 0)
-        throw new Error('swarmlab.screenPosition(i): i must be a particle index from 0 to ' + (Number(p.slice(4)) - 1) + ', not ' + i);
+      if (p.indexOf('bad') === 0) checkedIndex('swarmlab.screenPosition(i)', 'i', i, Number(p.slice(4)), 'a particle index');
       if (!p) return null;
       var xy = p.split(' ').map(Number);
       return { x: xy[0], y: xy[1] };
@@ -407,14 +423,9 @@
     },
     select: function (i) {
       check();
-      if (i !== null && !(Number.isInteger(i) && i >= 0)) {
-        throw new Error('swarmlab.select(): ' + JSON.stringify(i) + ' is not a particle index (an integer >= 0, or null)');
-      }
-      var count = Module.ccall('swarmlab_select', 'number', ['number'], [i === null ? -1 : i]);
-      if (count >= 0) {
-        throw new Error('swarmlab.select(): particle ' + i + ' is out of range (the system has ' + count +
-                        ' particles: 0 to ' + (count - 1) + ')');
-      }
+      if (i !== null) checkedIndex('swarmlab.select(i)', 'i', i, particleCount(), 'null or a particle index');
+      var refused = Module.ccall('swarmlab_select', 'number', ['number'], [i === null ? -1 : i]);
+      if (refused >= 0) checkedIndex('swarmlab.select(i)', 'i', i, refused, 'null or a particle index');
       return i;
     },
     stopwatch: function (action) {
@@ -442,8 +453,10 @@
     lessonState: function () { check(); return lessonStateNow(); },
     lessonAnswer: function (value) {
       check();
-      var result = JSON.parse(Module.ccall('swarmlab_lesson_answer', 'string', ['number'], [Number(value)]));
-      if (result.error) throw new Error('swarmlab.lessonAnswer(): ' + result.error);
+      if (typeof value !== 'number' || !isFinite(value))
+        throw new Error('swarmlab.lessonAnswer(value): value must be a finite number (a measurement, or an option\'s index), not ' + quoted(value));
+      var result = JSON.parse(Module.ccall('swarmlab_lesson_answer', 'string', ['number'], [value]));
+      if (result.error) throw new Error('swarmlab.lessonAnswer(value): ' + result.error);
       return result;
     },
     lessonNext: function () { check(); return JSON.parse(Module.ccall('swarmlab_lesson_move', 'string', ['number'], [1])); },

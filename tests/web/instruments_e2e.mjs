@@ -2,7 +2,9 @@
 // particle, whose measured period must come within 0.5% of 2 pi / sqrt(J M) computed here
 // from the preset's masses and J, for a light and a heavy mass alike; the stopwatch runs on the
 // simulated clock and stops; P and T are numbers in a container preset and null without one;
-// select() refuses an index out of range with an Error naming it. Run by tests/web/run.sh.
+// select() refuses an index out of range with an Error naming it, and so do screenPosition()
+// and lessonAnswer() an option's index, also one that a C size_t or int would wrap
+// (2^32 + 2 to 2) or a double not hold exactly (2^53). Run by tests/web/run.sh.
 import * as harness from './harness.mjs';
 
 const { check, shipped, openApp, launchBrowser, runSuite, pageErrors, consoleErrors,
@@ -14,11 +16,12 @@ const appState = (page) => api(page, () => window.swarmlab.state());
 // Waits until pick(state(), arg) is neither null nor undefined (what the run should come to),
 // or timeoutMs pass; returns it or null. pick runs in the page: what it needs comes in arg.
 async function waitFor(page, pick, timeoutMs, arg = null) {
-  const expr = `(${pick})(window.swarmlab.state(), ${JSON.stringify(arg)})`;
+  // A function made here: the page's CSP refuses the eval a predicate given as text needs.
+  const picked = new Function('arg', `const v = (${pick})(window.swarmlab.state(), arg); return v === undefined ? null : v;`);
   try {
-    await page.waitForFunction(`(() => { const v = ${expr}; return v !== null && v !== undefined; })()`, null, { timeout: timeoutMs });
+    await page.waitForFunction(new Function('arg', `return (${picked})(arg) !== null;`), arg, { timeout: timeoutMs });
   } catch { return null; }
-  return page.evaluate(expr);
+  return page.evaluate(picked, arg);
 }
 
 async function main(url) {
@@ -70,10 +73,26 @@ async function main(url) {
   check('stopwatch() refuses an unknown action', /"go"/.test(badAction || ''), badAction || 'no error');
 
   // select(): out of range and not an index are refused, naming the value; null deselects.
-  const bad = await api(page, () => { try { window.swarmlab.select(4); return null; } catch (e) { return e.message; } });
-  check('select(4) of 4 particles throws, naming 4 and the range', /particle 4 is out of range/.test(bad || '') && /0 to 3/.test(bad || ''), bad || 'no error');
-  const notIndex = await api(page, () => { try { window.swarmlab.select(-1); return null; } catch (e) { return e.message; } });
-  check('select(-1) throws, naming -1', /-1/.test(notIndex || ''), notIndex || 'no error');
+  // Indices past 2^32 would wrap in the app's 32-bit size_t and int (issue 36): refused alike,
+  // and nothing is selected by them.
+  const refusal = (call, i) => api(page, ([call, i]) => {
+    try { window.swarmlab[call](i); return null; } catch (e) { return e.message; }
+  }, [call, i]);
+  const selectedBefore = (await appState(page)).selected;
+  for (const i of [4, -1, 2 ** 32, 4294967298, 2 ** 53, 2 ** 53 + 2, 1.5]) {
+    const said = await refusal('select', i);
+    check(`select(${i}) of 4 particles throws, naming i, the value and the range`,
+          (said || '').startsWith('swarmlab.select(i): i must be null or a particle index, an integer from 0 to 3 (4 of them), not ' + i),
+          said || 'no error');
+  }
+  const kept = await appState(page);
+  check('no refused select() changed the selection', kept.selected === selectedBefore, `${selectedBefore} -> ${kept.selected}`);
+  for (const i of [4, 2 ** 32 + 1, 2 ** 53]) {
+    const said = await refusal('screenPosition', i);
+    check(`screenPosition(${i}) of 4 particles throws, naming i, the value and the range`,
+          (said || '').startsWith('swarmlab.screenPosition(i): i must be a particle index, an integer from 0 to 3 (4 of them), not ' + i),
+          said || 'no error');
+  }
   await api(page, () => window.swarmlab.select(null));
   const none = await appState(page);
   check('select(null) deselects, and measured_period is null again', none.selected === null && none.measured_period === null,
@@ -84,6 +103,15 @@ async function main(url) {
   const P = await waitFor(page, (x) => (typeof x.P === 'number' && typeof x.T === 'number' ? x : null), 60_000);
   check('P and T are numbers in a container preset', P !== null && P.P > 0 && P.T > 0,
         P ? `P = ${P.P}, T = ${P.T}` : 'still null');
+
+  // lessonAnswer() with an option's index: 2^32 + 1 is not option 1 (a choice of three).
+  await api(page, () => window.swarmlab.openLesson('springs-to-cm'));
+  const task = await api(page, () => window.swarmlab.lessonState().task);
+  const wrapped = await refusal('lessonAnswer', 2 ** 32 + 1);
+  const unanswered = await api(page, () => window.swarmlab.lessonState().task.answered);
+  check('lessonAnswer(2^32 + 1) on a choice throws, naming value and the options\' range, and answers nothing',
+        task.kind === 'choice' && wrapped === `swarmlab.lessonAnswer(value): value must be an option's index, an integer from 0 to ${task.options.length - 1}, not 4294967297` &&
+        unanswered === null, `${task.kind} of ${task.options.length}: ${wrapped}; answered ${JSON.stringify(unanswered)}`);
 
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
