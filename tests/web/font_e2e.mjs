@@ -108,6 +108,9 @@ async function brokenFont(url, name, answer, full, by) {
   check(`${name}: every panel in the parallel DOM has a name`,
         dom.panels.length >= 3 && dom.panels.every((p) => p.trim() && !/\?/.test(p)), dom.panels.join(' | '));
 
+  await page.screenshot({ path: join(harness.outDir, `${label}.png`) });
+  console.log(`      screenshot -> build/web-test/${label}.png`);
+
   // The network is back: the retry, pressed as a person presses it, brings the font.
   serve = realFont;
   const pressed = said && (by === 'keyboard' ? await pressByKeyboard(page, retry) : await retry.click().then(() => true));
