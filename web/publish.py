@@ -13,7 +13,10 @@ revalidated at every visit, and they name the hashed files:
   name; in the page, @SWARMLAB_FILES@ is the map of every hashed NAME to its published name
   (window.swarmlabFiles: the wasm and the fonts fetched on demand find theirs there) and
   @SWARMLAB_WASM_BYTES@ the wasm's size (the download's progress: a compressed response's
-  Content-Length is not the size of what it holds);
+  Content-Length is not the size of what it holds), and @SWARMLAB_INLINE_SCRIPTS@ the hashes
+  of its inline scripts once filled in, for its Content-Security-Policy;
+- examples/course.html is copied as it is, once its Content-Security-Policy is seen to name its
+  inline script's hash (a page edited without the new hash would run no script);
 - in web/service_worker.js, @SWARMLAB_WEB_VERSION@ is a hash of everything published,
   @SWARMLAB_WEB_FILES@ what the worker stores at install and @SWARMLAB_WEB_ON_DEMAND@ what the
   page fetches only when needed.
@@ -22,6 +25,7 @@ which the server sends to browsers that accept them. A hashed file already publi
 neither copied nor compressed again. What an earlier publication wrote and this one does not
 (an older build's hashed files, the unhashed names of earlier builds) is removed.
 """
+import base64
 import hashlib
 import json
 import os
@@ -93,6 +97,13 @@ def compress(path, changed):
     return [path + ext for ext in commands]
 
 
+def inline_script_hashes(text):
+    """The CSP sources ('sha256-...') of a page's inline scripts, each as the browser hashes it."""
+    scripts = re.findall(r'^<script>(.*?)</script>', text, re.S | re.M)
+    return ' '.join("'sha256-%s'" % base64.b64encode(hashlib.sha256(s.encode()).digest()).decode()
+                    for s in scripts)
+
+
 def fill(name, text, tokens):
     def one(match):
         key = match.group(1)
@@ -125,12 +136,18 @@ def main(argv):
     tokens['manifest.webmanifest'] = 'manifest.webmanifest'
     tokens['SWARMLAB_FILES'] = json.dumps(published, sort_keys=True)
     tokens['SWARMLAB_WASM_BYTES'] = str(len(contents[published['swarmlab.wasm']]))
+    tokens['SWARMLAB_INLINE_SCRIPTS'] = '@SWARMLAB_INLINE_SCRIPTS@'  # once the rest is in
     for name, source in (('index.html', sources['index.html']),
                          ('manifest.webmanifest', sources['manifest.webmanifest'])):
         with open(source, encoding='utf-8') as f:
-            contents[name] = fill(name, f.read(), tokens).encode()
+            text = fill(name, f.read(), tokens)
+        contents[name] = text.replace('@SWARMLAB_INLINE_SCRIPTS@', inline_script_hashes(text)).encode()
     with open(sources['examples/course.html'], 'rb') as f:
         contents['examples/course.html'] = f.read()
+    course = contents['examples/course.html'].decode()
+    if "script-src %s;" % inline_script_hashes(course) not in course:
+        fail('examples/course.html: its Content-Security-Policy does not say script-src %s; '
+             '(the hash of its inline script)' % inline_script_hashes(course))
 
     # The worker's version: every published name and content, and the worker's own code.
     with open(sources['service_worker.js'], encoding='utf-8') as f:

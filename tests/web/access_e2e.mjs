@@ -18,8 +18,9 @@ async function main(url) {
   const appState = () => api(() => window.swarmlab.state());
   const spoken = () => api(() => document.getElementById('announcer').textContent);
   // Waits until fn(state(), arg) holds in the page (what an action should change), or 15 s pass;
-  // returns whether it held. fn runs in the page: what it needs from here comes in arg.
-  const until = (fn, arg = null) => page.waitForFunction(`(${fn})(window.swarmlab.state(), ${JSON.stringify(arg)})`, null,
+  // returns whether it held. fn runs in the page: what it needs from here comes in arg. (A
+  // function made here: the page's CSP refuses the eval a predicate given as text needs.)
+  const until = (fn, arg = null) => page.waitForFunction(new Function('arg', `return (${fn})(window.swarmlab.state(), arg);`), arg,
                                                          { timeout: 15_000 }).then(() => true, () => false);
   const untilPage = (fn, arg = null) => page.waitForFunction(fn, arg, { timeout: 15_000 }).then(() => true, () => false);
   // A key or chord as a person presses it (the app takes a press between two frames as one),

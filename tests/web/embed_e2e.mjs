@@ -2,13 +2,20 @@
 // on one port (harness.mjs), the example course page from a second (a small node server here:
 // another origin), and it embeds the app from the first with its own origin on the allow-list
 // (?embed&origins=...). Checked:
+//   a link to the course page with a hostile ?app= (javascript: in several spellings, data:,
+//   blob:, file:, vbscript:, a user and password, a tab or a newline, an address that does not parse) runs
+//   nothing (no dialog to the suite's end, no mark on the page), sets no frame address and
+//   says on the page what it refused; its Content-Security-Policy refuses an injected inline
+//   script, a javascript: frame and a data: frame;
 //   the app in the frame says it is ready to the course page; it shows no menu bar (no menu
 //   item in its parallel DOM, state().menus empty) and no welcome, and gets them back with
 //   set({embed: false}) through the bridge (so the check can see a menu bar);
 //   the course page's buttons load a preset, read P and T via state and open a lesson, and the
 //   app shows each (its own state, read by the test);
 //   bad messages get an error reply naming what is wrong: an unknown call, wrong arguments,
-//   a bad key or preset, another version, a bad id, a 6-million-character payload, a cycle;
+//   a bad key or preset, another version, a bad id, a 6-million-character payload, a cycle,
+//   indices that a 32-bit int would wrap (select(2^32 + 2), screenPosition(2^32 + 1)) or that
+//   are no safe integer (select(2^53)), which select nothing;
 //   the app keeps drawing;
 //   a page on a third port embedding the same address (only the course page's origin listed)
 //   gets no reply to its calls nor the ready message, and its calls change nothing.
@@ -56,27 +63,29 @@ async function appFrame(page, appUrl, timeoutMs = 40_000) {
   return null;
 }
 
+// Posts a message from the course page to its frame; resolves to the reply with the same id
+// (or null after timeoutMs). Runs in the page.
+function postAndWait(message, timeoutMs) {
+  const frame = document.getElementById('swarmlab');
+  return new Promise((resolve) => {
+    const timer = setTimeout(() => { removeEventListener('message', on); resolve(null); }, timeoutMs);
+    function on(e) {
+      if (e.source !== frame.contentWindow || !e.data || e.data.swarmlab !== 1 || e.data.event) return;
+      const want = message && typeof message.id !== 'object' ? message.id : null;
+      if (e.data.id !== want) return;
+      clearTimeout(timer);
+      removeEventListener('message', on);
+      resolve(e.data);
+    }
+    addEventListener('message', on);
+    frame.contentWindow.postMessage(message, APP_ORIGIN);
+  });
+}
 // A raw message from the course page to its frame, and the reply with the same id (or null
 // after timeoutMs). `build` runs in the page and returns the message (so it can hold what JSON
-// cannot: a cycle).
+// cannot: a cycle); it goes in as the evaluated text itself, since the page's CSP allows no eval.
 async function rpc(page, build, arg, timeoutMs = 20_000) {
-  return page.evaluate(async ([buildText, arg, timeoutMs]) => {
-    const message = (0, eval)(buildText)(arg);
-    const frame = document.getElementById('swarmlab');
-    return new Promise((resolve) => {
-      const timer = setTimeout(() => { removeEventListener('message', on); resolve(null); }, timeoutMs);
-      function on(e) {
-        if (e.source !== frame.contentWindow || !e.data || e.data.swarmlab !== 1 || e.data.event) return;
-        const want = message && typeof message.id !== 'object' ? message.id : null;
-        if (e.data.id !== want) return;
-        clearTimeout(timer);
-        removeEventListener('message', on);
-        resolve(e.data);
-      }
-      addEventListener('message', on);
-      frame.contentWindow.postMessage(message, APP_ORIGIN);
-    });
-  }, [String(build), arg, timeoutMs]);
+  return page.evaluate(`(${postAndWait})((${build})(${JSON.stringify(arg)}), ${timeoutMs})`);
 }
 const call = (page, id, name, args) => rpc(page, ([id, name, args]) => ({ swarmlab: 1, id, call: name, args }), [id, name, args]);
 
@@ -122,10 +131,65 @@ async function main(url) {
     const context = await launchBrowser({ width: 1366, height: 768 });
     const blank = context.pages()[0];
 
+    // 0. A link to the course page with a hostile ?app= (issue 36): nothing runs, the frame
+    // stays empty, and the page says which address it refused and why. Its payloads would show
+    // a dialog and mark the page (top.pwned); the dialogs are counted to the suite's end.
+    const hostile = await context.newPage();
+    if (blank) await blank.close();
+    const dialogs = [];
+    hostile.on('dialog', (d) => { dialogs.push(d.message()); d.dismiss().catch(() => {}); });
+    const appPort = new URL(appUrl).port;
+    const payloads = [
+      ['javascript:alert(document.domain)//', /a javascript: address, and only http: and https: addresses are opened/],
+      ['JaVaScRiPt:top.pwned=1;alert(1)', /a javascript: address/],
+      [' javascript:top.pwned=1;alert(2)', /a javascript: address/],
+      ['java\tscript:top.pwned=1;alert(3)', /a control character/],
+      ['data:text/html,<script>top.pwned=1;alert(4)</script>', /a data: address/],
+      ['blob:' + course.origin + '/0c6c1a4b-2b0e-4a4e-9a11-1c2d3e4f5a6b', /a blob: address/],
+      ['file:///etc/passwd', /a file: address/],
+      ['vbscript:msgbox(5)', /a vbscript: address/],
+      [`http://student:secret@127.0.0.1:${appPort}/`, /a user name or password/],
+      [`${appUrl}\n`, /a control character/],
+      ['http://[not an address', /not a web address/],
+    ];
+    for (const [address, why] of payloads) {
+      await hostile.goto(`${course.origin}/course.html?app=${encodeURIComponent(address)}`, { waitUntil: 'load' });
+      const line = await hostile.waitForFunction(() => /does not open the app address/.test(document.getElementById('readout').textContent), null, { timeout: 10_000 })
+        .then(() => hostile.textContent('#readout'), () => hostile.textContent('#readout'));
+      const seen = await hostile.evaluate(() => ({ src: document.getElementById('swarmlab').getAttribute('src'), pwned: window.pwned === 1 }));
+      const frames = hostile.frames().map((f) => f.url());
+      check(`?app=${JSON.stringify(address).slice(0, 60)}: refused on the page, no frame address, nothing run`,
+            why.test(line) && line.includes(JSON.stringify(address).slice(1, 20)) && await hostile.isVisible('#readout') &&
+            seen.src === null && !seen.pwned && frames.length === 2 && frames[1] === 'about:blank',
+            `"${line}"; src ${seen.src}; frames ${frames.join(' ')}; pwned ${seen.pwned}`);
+    }
+    // The Content-Security-Policy holds should a check ever let something through: no script
+    // added to the page, no javascript: frame, no frame of another scheme; the browser reports
+    // each refusal.
+    const csp = await hostile.evaluate(() => new Promise((resolve) => {
+      const refused = [];
+      const done = () => resolve({ pwned: window.pwned === 1, injected: window.injected === true, refused });
+      document.addEventListener('securitypolicyviolation', (e) => {
+        refused.push(e.effectiveDirective);
+        if (refused.filter((d) => d === 'script-src-elem').length === 2 && refused.includes('frame-src')) done();
+      });
+      const script = document.createElement('script');
+      script.textContent = 'window.injected = true;';
+      document.body.appendChild(script);
+      const extra = document.createElement('iframe');
+      extra.src = 'javascript:parent.pwned=1;alert(6)';
+      document.body.appendChild(extra);
+      document.getElementById('swarmlab').src = 'data:text/html,<p>framed</p>';
+      setTimeout(done, 10_000);
+    }));
+    check('the course page\'s CSP refuses an injected inline script, a javascript: frame and a data: frame',
+          !csp.pwned && !csp.injected && csp.refused.filter((d) => d === 'script-src-elem').length === 2 && csp.refused.includes('frame-src'),
+          JSON.stringify(csp));
+    await hostile.close();
+
     // 1. The course page on origin B embeds the app on origin A.
     const page = await context.newPage();
     watch(page, 'course');
-    if (blank) await blank.close();
     const t0 = Date.now();
     console.log(`      servers and browser up in ${((Date.now() - tStart) / 1000).toFixed(1)} s`);
     await page.goto(`${course.origin}/course.html?app=${encodeURIComponent(appUrl)}`, { waitUntil: 'load' });
@@ -139,6 +203,13 @@ async function main(url) {
     const src = await page.getAttribute('#swarmlab', 'src');
     check('the frame\'s address asks for ?embed with the course page\'s origin on the list',
           src.includes('?embed&origins=') && decodeURIComponent(src).includes(course.origin), src);
+
+    // The app runs under its own Content-Security-Policy, its inline script named by hash (a
+    // policy that refused anything the app does would show as a console error, checked below).
+    const appPolicy = await frame.evaluate(() => (document.querySelector('meta[http-equiv="Content-Security-Policy"]') || {}).content || '');
+    const scriptSources = (/(?:^|; )script-src ([^;]*)/.exec(appPolicy) || [])[1];
+    check('the app in the frame runs under its CSP: scripts only its own files, its inline script by hash and its wasm',
+          /^'self' 'wasm-unsafe-eval' 'sha256-[A-Za-z0-9+/]{43}='$/.test(scriptSources || ''), appPolicy);
 
     // 2. No menu bar, no welcome (this browser never saw the app: a first visit).
     await frame.waitForFunction(() => document.querySelectorAll('#parallel-dom .pdom-item').length >= 10, null, { timeout: 20_000 }).catch(() => {});
@@ -203,6 +274,13 @@ async function main(url) {
       ['a 6-million-character payload', () => ({ swarmlab: 1, id: 'e9', call: 'load', args: ['x'.repeat(6_000_000)] }), /over \d+ characters of JSON, the limit/],
       ['a payload that is not JSON (a cycle)', () => { const a = []; a.push(a); return { swarmlab: 1, id: 'e10', call: 'load', args: [a] }; }, /not JSON data/],
       ['a lesson that does not exist', () => ({ swarmlab: 1, id: 'e11', call: 'openLesson', args: ['no-such-lesson'] }), /no-such-lesson/],
+      // Indices that a 32-bit size_t or int would wrap (2^32 + 2 to 2), or a double not hold (2^53).
+      ['select(2^32 + 2): out of range, not particle 2', () => ({ swarmlab: 1, id: 'e12', call: 'select', args: [4294967298] }),
+       /^swarmlab\.select\(i\): i must be null or a particle index, an integer from 0 to \d+ \(\d+ of them\), not 4294967298$/],
+      ['select(2^53): not a safe integer', () => ({ swarmlab: 1, id: 'e13', call: 'select', args: [2 ** 53] }),
+       /^select: argument 1 must be an integer from 0 to 2\^53 - 1 or null, not 9007199254740992$/],
+      ['screenPosition(2^32 + 1): out of range, not particle 1', () => ({ swarmlab: 1, id: 'e14', call: 'screenPosition', args: [2 ** 32 + 1] }),
+       /^swarmlab\.screenPosition\(i\): i must be a particle index, an integer from 0 to \d+ \(\d+ of them\), not 4294967297$/],
     ];
     for (const [what, build, want] of errors) {
       const started = Date.now();
@@ -211,6 +289,7 @@ async function main(url) {
             r ? `${Date.now() - started} ms: "${String(r.error).slice(0, 140)}"` : 'no reply');
     }
     const s2 = await frameState(frame);
+    check('the refused indices selected nothing', s2.selected === sLesson.selected, `${sLesson.selected} -> ${s2.selected}`);
     check('after the bad messages the app still runs the lesson\'s scene and the lesson', s2.name === sLesson.name &&
           (await frame.evaluate(() => window.swarmlab.lessonState().id)) === 'gas-at-the-wall', `"${s2.name}"`);
     check('the app keeps drawing after the bad messages', await framesAdvance(frame));
@@ -285,6 +364,7 @@ async function main(url) {
     check('on a phone the embedded app has no menu bar either', compact.menus.length === 0 && (await menuItems(frame)).length === 0,
           `layout ${compact.layout ?? ''}`);
 
+    check('no dialog appeared on any course page (hostile ?app= included)', dialogs.length === 0, dialogs.join(' | '));
     check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
     check('no console errors', consoleErrors.length === 0, consoleErrors.slice(0, 5).join(' | '));
     console.log(`      the suite's browser part took ${((Date.now() - t0) / 1000).toFixed(1)} s`);

@@ -38,7 +38,8 @@ export function pseudo(english) {
 const appState = (page) => page.evaluate(() => window.swarmlab.state());
 async function until(page, fn, arg = null) {
   try {
-    await page.waitForFunction(`(${fn})(window.swarmlab.state(), ${JSON.stringify(arg)})`, null,
+    // A function made here: the page's CSP refuses the eval a predicate given as text needs.
+    await page.waitForFunction(new Function('arg', `return (${fn})(window.swarmlab.state(), arg);`), arg,
                                { timeout: 20_000, polling: 'raf' });
   } catch { /* the check after it reports what was seen */ }
   return appState(page);

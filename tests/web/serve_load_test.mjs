@@ -7,7 +7,8 @@
 // to another computer: browsers ask for br on https only) and nothing (the files as built).
 // Checks that every client finishes, that each file arrives as the copy its client asked for
 // (Content-Encoding, Vary) and decodes to the file built, the cache headers (hashed names kept
-// forever, the rest revalidated: a 304 for an unchanged index.html), the wasm's MIME type;
+// forever, the rest revalidated: a 304 for an unchanged index.html), nosniff and Referrer-Policy
+// on each, the wasm's MIME type;
 // prints the bytes sent and the slowest client's time per round.
 //   node tests/web/serve_load_test.mjs           (after scripts/web.sh --build-only)
 //   node tests/web/serve_load_test.mjs --nginx   the same against Debian's nginx with
@@ -95,6 +96,8 @@ function problem(path, r, accept) {
   if (encoding !== expected) return `${path}: Content-Encoding ${encoding}, not ${expected}`;
   if (compressible && !/Accept-Encoding/i.test(r.headers.vary || '')) return `${path}: Vary ${r.headers.vary}`;
   if (r.headers['cache-control'] !== cache) return `${path}: Cache-Control ${r.headers['cache-control']}`;
+  if (r.headers['x-content-type-options'] !== 'nosniff' || r.headers['referrer-policy'] !== 'same-origin')
+    return `${path}: X-Content-Type-Options ${r.headers['x-content-type-options']}, Referrer-Policy ${r.headers['referrer-policy']}`;
   if (!type.test(r.headers['content-type'] || '')) return `${path}: Content-Type ${r.headers['content-type']}`;
   if (!decode(r.body, encoding).equals(readFileSync(file))) return `${path}: not the file built`;
   return '';

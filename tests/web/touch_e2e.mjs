@@ -49,7 +49,8 @@ function handClock(stepMs = 16) {
 // the page: what it needs from here comes in arg.
 async function until(page, fn, arg = null) {
   try {
-    await page.waitForFunction(`(${fn})(window.swarmlab.state(), ${JSON.stringify(arg)})`, null,
+    // A function made here: the page's CSP refuses the eval a predicate given as text needs.
+    await page.waitForFunction(new Function('arg', `return (${fn})(window.swarmlab.state(), arg);`), arg,
                                { timeout: 20_000, polling: 'raf' });
   } catch { /* the check after it reports what was seen */ }
   return appState(page);
