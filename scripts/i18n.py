@@ -3,9 +3,12 @@
 
   scripts/i18n.py extract   rewrite assets/i18n/en.json from the sources, the shipped presets
                             and lessons: every text the app shows, as key and value
-  scripts/i18n.py check     every table against en.json: each key present, nothing extra, the
-                            same printf conversions and device choices, no text left in English
-                            (except names); exit 1 with one line per problem
+  scripts/i18n.py check [DIR]  every table (of assets/i18n/, or DIR) against en.json: each key
+                            present, nothing extra, the same printf conversions and device
+                            choices, no text left in English (except names), each translation
+                            held to its English field's rules (a lesson title at most 120 bytes,
+                            something visible, no control character but a line break); exit 1
+                            with one line per problem
   scripts/i18n.py missing LANG   the keys LANG lacks or has stale, as a JSON object to translate
   scripts/i18n.py page OUT  write OUT (build/web/page_texts.js): for each table, only the keys
                             the page itself uses (pageText('...') in web/*.js and web/shell.html)
@@ -160,19 +163,47 @@ same_word = {
 }
 
 
+# A lesson's title is at most this long in every language (app/lessons/lesson.cpp).
+max_title_bytes = 120
+
+
+def lesson_titles():
+    return {json.loads(p.read_text()).get("title", "") for p in (root / "assets" / "lessons").glob("*.json")}
+
+
+def control_character(text):
+    """The first control character but a line break (C0, DEL or C1), as U+XXXX, or None."""
+    for c in text:
+        if (ord(c) < 0x20 and c != "\n") or 0x7F <= ord(c) <= 0x9F:
+            return f"U+{ord(c):04X}"
+    return None
+
+
+# Characters that draw nothing (app/lessons/lesson.cpp's draws_nothing): spaces, direction
+# marks and embeddings, zero-width characters, the soft hyphen, invisible operators, tags and
+# the Hangul fillers.
+invisible = re.compile("[\\s\u00ad\u034f\u061c\u115f\u1160\u180e\u200b-\u200f\u202a-\u202e"
+                       "\u2060-\u206f\u3164\ufeff\uffa0\U000e0000-\U000e007f]*")
+
+
+def draws_nothing(text):
+    return invisible.fullmatch(text) is not None
+
+
 def is_name(text, code=None):
     return (not re.search(r"[A-Za-z]{3,}", text) or text.strip() in names
             or text.strip() in same_word.get(code, set()))
 
 
-def check():
-    english = json.loads((tables / "en.json").read_text())
+def check(folder=tables):
+    english = json.loads((folder / "en.json").read_text())
     problems = []
     current = from_sources() | from_assets() | from_page()
     if set(english) != current or any(english[k] != k for k in english):
         problems.append(f"en.json is out of date ({len(current - set(english))} texts new, "
                         f"{len(set(english) - current)} gone): run scripts/i18n.py extract")
-    for path in sorted(tables.glob("*.json")):
+    titles = lesson_titles()
+    for path in sorted(folder.glob("*.json")):
         if path.name == "en.json":
             continue
         table = json.loads(path.read_text())
@@ -184,6 +215,15 @@ def check():
             value = table[key]
             if not isinstance(value, str) or not value.strip():
                 problems.append(f"{code}: empty: {key[:70]!r}")
+            elif draws_nothing(value):
+                problems.append(f"{code}: shows nothing (only spaces or invisible characters such as "
+                                f"U+{ord(value.strip()[0]):04X}): {key[:60]!r}")
+            elif control_character(value) and not control_character(key):
+                problems.append(f"{code}: control character {control_character(value)} (only line breaks "
+                                f"are allowed): {key[:60]!r}")
+            elif key in titles and len(value.encode()) > max_title_bytes:
+                problems.append(f"{code}: a lesson title, at most {max_title_bytes} bytes as in English "
+                                f"(it has {len(value.encode())}): {key[:60]!r}")
             elif placeholders(value) != placeholders(key):
                 problems.append(f"{code}: placeholders differ ({placeholders(key)} in English, "
                                 f"{placeholders(value)} here): {key[:60]!r}")
@@ -194,7 +234,7 @@ def check():
                 problems.append(f"{code}: not in en.json (stale): {key[:70]!r}")
     for p in problems:
         print(p)
-    print(f"i18n check: {len(english)} keys, {len(list(tables.glob('*.json'))) - 1} languages, "
+    print(f"i18n check: {len(english)} keys, {len(list(folder.glob('*.json'))) - 1} languages, "
           f"{len(problems)} problems", file=sys.stderr)
     return 1 if problems else 0
 
@@ -209,7 +249,7 @@ def main():
         print(f"assets/i18n/en.json: {len(texts)} texts", file=sys.stderr)
         return 0
     if command == "check":
-        return check()
+        return check(pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else tables)
     if command == "page" and len(sys.argv) > 2:
         page_tables(sys.argv[2])
         return 0

@@ -105,23 +105,66 @@ class Fields {
   std::string path_;
 };
 
-/// Lesson text: no control characters but line breaks, and every *emphasis* closed within its
-/// paragraph.
+/// The code point of the UTF-8 character at text[i], moving i past it. Text from the JSON parser
+/// is valid UTF-8 (nlohmann refuses anything else).
+char32_t next_code_point(const std::string& text, std::size_t& i) {
+  const unsigned char lead = static_cast<unsigned char>(text[i++]);
+  if (lead < 0x80) return lead;
+  const int extra = lead >= 0xF0 ? 3 : lead >= 0xE0 ? 2 : 1;
+  char32_t c = lead & (0x3F >> extra);
+  for (int k = 0; k < extra && i < text.size(); ++k)
+    c = (c << 6) | (static_cast<unsigned char>(text[i++]) & 0x3F);
+  return c;
+}
+
+/// Spaces of every width, and line breaks.
+bool is_space(char32_t c) {
+  return c == ' ' || c == '\n' || c == 0xA0 || c == 0x1680 || (c >= 0x2000 && c <= 0x200A) ||
+         c == 0x2028 || c == 0x2029 || c == 0x202F || c == 0x205F || c == 0x3000;
+}
+
+/// Characters that draw nothing: spaces, direction marks and embeddings (U+200E/F,
+/// U+202A..E, U+2066..9, U+061C), zero-width characters (U+200B..D, U+2060, U+FEFF), the soft
+/// hyphen, invisible operators, tags and the Hangul fillers. A text of only these shows as a
+/// blank title, button or option.
+bool draws_nothing(char32_t c) {
+  return is_space(c) || c == 0xAD || c == 0x34F || c == 0x61C || c == 0x115F || c == 0x1160 ||
+         c == 0x180E || (c >= 0x200B && c <= 0x200F) || (c >= 0x202A && c <= 0x202E) ||
+         (c >= 0x2060 && c <= 0x206F) || c == 0x3164 || c == 0xFEFF || c == 0xFFA0 ||
+         (c >= 0xE0000 && c <= 0xE007F);
+}
+
+std::string code_name(char32_t c) {
+  char code[12];
+  std::snprintf(code, sizeof code, "U+%04X", unsigned(c));
+  return code;
+}
+
+/// Lesson text: something to see, no control characters but line breaks (C0, DEL and the C1
+/// controls U+0080..U+009F alike), and every *emphasis* closed within its paragraph.
 void check_prose(const std::string& text, const std::string& path) {
   std::size_t stars = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const unsigned char c = static_cast<unsigned char>(text[i]);
-    if (c < 0x20 && c != '\n') {
-      char code[8];
-      std::snprintf(code, sizeof code, "%04X", c);
-      fail(path, std::string("control character U+") + code + " (only line breaks are allowed)");
-    }
+  std::optional<char32_t> invisible;  // the first character that draws nothing but is no space
+  bool visible = false;
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t at = i;
+    const char32_t c = next_code_point(text, i);
+    if ((c < 0x20 && c != '\n') || (c >= 0x7F && c <= 0x9F))
+      fail(path, "control character " + code_name(c) + " (only line breaks are allowed)");
+    if (!draws_nothing(c))
+      visible = true;
+    else if (!is_space(c) && !invisible)
+      invisible = c;
     if (c == '*') ++stars;
-    const bool paragraph_end = i + 1 == text.size() || text.compare(i, 2, "\n\n") == 0;
+    const bool paragraph_end = i == text.size() || text.compare(at, 2, "\n\n") == 0;
     if (paragraph_end && stars % 2 != 0)
       fail(path, "an emphasis is not closed in its paragraph (write *like this*)");
     if (paragraph_end) stars = 0;
   }
+  if (!visible)
+    fail(path, "must show something (it holds only spaces" +
+                   (invisible ? " or invisible characters such as " + code_name(*invisible) : "") +
+                   ")");
   if (const std::string problem = device_words_problem(text); !problem.empty()) fail(path, problem);
 }
 
@@ -322,27 +365,65 @@ LessonStep step_of(const json& j, const std::string& path, const PresetLookup& l
   return s;
 }
 
+/// A text of the lesson a student reads, where it stands ("steps[2].task.options[1]") and how
+/// long it may be there.
+struct LessonText {
+  std::string path;
+  const std::string* text;
+  std::size_t max_bytes;
+};
+
+std::vector<LessonText> lesson_texts(const Lesson& l) {
+  std::vector<LessonText> out = {{"title", &l.title, kMaxTitleBytes},
+                                 {"summary", &l.summary, kMaxTextBytes}};
+  for (std::size_t i = 0; i < l.steps.size(); ++i) {
+    const LessonStep& s = l.steps[i];
+    const std::string step = "steps[" + std::to_string(i) + "]";
+    out.push_back({step + ".text", &s.text, kMaxTextBytes});
+    if (!s.task) continue;
+    const std::string task = step + ".task";
+    out.push_back({task + ".prompt", &s.task->prompt, kMaxTextBytes});
+    for (std::size_t k = 0; k < s.task->options.size(); ++k)
+      out.push_back({task + ".options[" + std::to_string(k) + "]", &s.task->options[k], kMaxTextBytes});
+    for (std::size_t k = 0; k < s.task->feedback.size(); ++k)
+      out.push_back({task + ".feedback[" + std::to_string(k) + "]", &s.task->feedback[k], kMaxTextBytes});
+    if (!s.task->outcome.empty()) out.push_back({task + ".outcome", &s.task->outcome, kMaxTextBytes});
+  }
+  return out;
+}
+
 /// The lesson's own translations: for each language the app speaks (not English), texts of this
-/// lesson to what to show instead, each keeping its text's device choices and emphasis.
+/// lesson to what to show instead, each held to the rules of the field it translates (a title
+/// to a title's length) and keeping its text's device choices and emphasis.
 void read_translations(const Fields& f, Lesson& l) {
   const json& all = f.at("translations");
   require(all.is_object(), "translations",
           "must be an object of language codes (es, de, fr, pt-BR, zh-CN) to tables");
-  const std::vector<std::string> texts = l.texts();
+  const std::vector<LessonText> texts = lesson_texts(l);
   for (const auto& [code, table] : all.items()) {
     const std::string path = "translations." + swarm::printable(code);
     require(find_language(code) && code != "en" && code != pseudo_language().code, path,
             "not a language the app speaks (es, de, fr, pt-BR, zh-CN)");
     require(table.is_object(), path, "must be an object of this lesson's English texts to their translations");
     for (const auto& [english, shown] : table.items()) {
-      const std::string at = path + ".\"" + swarm::printable(english.substr(0, 40)) + "\"";
-      require(std::find(texts.begin(), texts.end(), english) != texts.end(), at,
-              "not a text of this lesson (the key is the English text, exactly)");
+      const std::string key = path + ".\"" + swarm::printable(english.substr(0, 40)) + "\"";
+      // The first field holding this text names it; a text in several fields takes the
+      // strictest limit.
+      const LessonText* field = nullptr;
+      std::size_t max_bytes = kMaxTextBytes;
+      for (const LessonText& t : texts)
+        if (*t.text == english) {
+          if (!field) field = &t;
+          max_bytes = std::min(max_bytes, t.max_bytes);
+        }
+      require(field, key, "not a text of this lesson (the key is the English text, exactly)");
+      const std::string at = key + " (" + field->path + ")";
       require(shown.is_string() && !shown.get<std::string>().empty(), at,
               "must be a non-empty string");
       const std::string text = shown.get<std::string>();
-      require(text.size() <= kMaxTextBytes, at,
-              "must be at most " + std::to_string(kMaxTextBytes) + " bytes long");
+      require(text.size() <= max_bytes, at,
+              "must be at most " + std::to_string(max_bytes) +
+                  " bytes long, as the English is (it has " + std::to_string(text.size()) + ")");
       check_prose(text, at);
       require(device_choices(text) == device_choices(english), at,
               "must keep the English text's {tap|click} choices, with as many alternatives each");
@@ -401,10 +482,8 @@ LessonParse parse_lesson(std::string_view json_text, const PresetLookup& lookup)
   } catch (const Invalid& e) {
     out.error = e.message;
   } catch (const json::parse_error& e) {
-    // The library's own text ("[json.exception.parse_error.101] ...") means nothing to a
-    // teacher: where it broke is enough.
-    out.error = "lesson: not valid JSON (it breaks at byte " + std::to_string(e.byte) +
-                "; a lesson is one JSON object, see docs/lessons.md)";
+    out.error = "lesson: not valid JSON at " + swarm::json_syntax_error(e, json_text) +
+                " (a lesson is one JSON object, see docs/lessons.md)";
   } catch (const json::exception&) {
     out.error = "lesson: not a lesson the app can read (a value of the wrong type)";
   }
@@ -467,15 +546,8 @@ std::string_view name_of(LessonHidden hidden) {
 }
 
 std::vector<std::string> Lesson::texts() const {
-  std::vector<std::string> out = {title, summary};
-  for (const LessonStep& s : steps) {
-    out.push_back(s.text);
-    if (!s.task) continue;
-    out.push_back(s.task->prompt);
-    out.insert(out.end(), s.task->options.begin(), s.task->options.end());
-    out.insert(out.end(), s.task->feedback.begin(), s.task->feedback.end());
-    if (!s.task->outcome.empty()) out.push_back(s.task->outcome);
-  }
+  std::vector<std::string> out;
+  for (const LessonText& t : lesson_texts(*this)) out.push_back(*t.text);
   return out;
 }
 

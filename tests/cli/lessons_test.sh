@@ -51,6 +51,18 @@ expect_lesson_error answer "{$head, \"steps\": [$step, {\"text\": \"b\", \"task\
   'steps[1].task.answer: must be an index into options (0 to 1)'
 expect_lesson_error twice "{$head, \"id\": \"u\", \"steps\": [$step]}" 'id: given twice (each key at most once)'
 expect_lesson_error trailing "{$head, \"steps\": [$step]} x" 'lesson: not valid JSON'
+expect_lesson_error cut-short $'{"lesson": 1,\n  "id": ' 'lesson: not valid JSON at line 2, column 9: '
+# A translation is held to the rules of the field it translates: a title to a title's length,
+# something to see, no control character (DEL and C1 as C0).
+long=$(head -c 8000 /dev/zero | tr '\0' x)
+expect_lesson_error long-title "{$head, \"steps\": [$step], \"translations\": {\"de\": {\"T\": \"$long\"}}}" \
+  'translations.de."T" (title): must be at most 120 bytes long, as the English is (it has 8000)'
+expect_lesson_error blank-translation "{$head, \"steps\": [$step], \"translations\": {\"es\": {\"Watch.\": \"\\u202e\"}}}" \
+  'translations.es."Watch." (steps[0].text): must show something (it holds only spaces or invisible characters such as U+202E)'
+expect_lesson_error c1-translation "{$head, \"steps\": [$step], \"translations\": {\"fr\": {\"S\": \"R\\u009bsum\"}}}" \
+  'translations.fr."S" (summary): control character U+009B (only line breaks are allowed)'
+expect_lesson_error del-title "{\"lesson\": 1, \"id\": \"t\", \"title\": \"T\\u007f\", \"summary\": \"S\", \"steps\": [$step]}" \
+  'title: control character U+007F (only line breaks are allowed)'
 
 # A good inline lesson validates and says what it is.
 printf '%s' "{$head, \"steps\": [$step]}" >"$work/good.json"

@@ -104,6 +104,17 @@ TEST_CASE("every rule of the lesson format is refused with the field and the rul
        "steps[0].text: an emphasis is not closed in its paragraph (write *like this*)"},
       {"/steps/0/text", "\"a\\u0007bell\"",
        "steps[0].text: control character U+0007 (only line breaks are allowed)"},
+      {"/steps/0/text", "\"a\\u007fdel\"",
+       "steps[0].text: control character U+007F (only line breaks are allowed)"},
+      {"/steps/0/text", "\"a\\u0085next line\"",
+       "steps[0].text: control character U+0085 (only line breaks are allowed)"},
+      {"/steps/0/text", "\"a\\u009b31m CSI\"",
+       "steps[0].text: control character U+009B (only line breaks are allowed)"},
+      {"/title", "\"\\u202e\"",
+       "title: must show something (it holds only spaces or invisible characters such as U+202E)"},
+      {"/summary", "\" \\u200b\\u200e\\u2066\\ufeff \"",
+       "summary: must show something (it holds only spaces or invisible characters such as U+200B)"},
+      {"/steps/0/text", "\"  \\n\\u3000 \"", "steps[0].text: must show something (it holds only spaces)"},
       {"/steps/0/preset", "", "steps[0].preset: missing (the first step sets the scene with a preset)"},
       {"/steps/0/preset", "\"nope.json\"", "steps[0].preset: no shipped preset \"nope.json\""},
       {"/steps/0/preset", "3", "steps[0].preset: must be a shipped preset's file name or a preset object"},
@@ -295,7 +306,11 @@ TEST_CASE("device words in lesson text are checked where they are written") {
 
 TEST_CASE("text that is not JSON is refused in one sentence, without the parser's own codes") {
   const std::string e = error_of("not json");
-  CHECK(e.rfind("lesson: not valid JSON (it breaks at byte ", 0) == 0);
+  CHECK(e.rfind("lesson: not valid JSON at line 1, column 2: invalid literal; last read: 'no'", 0) == 0);
+  // Where it breaks, as an editor counts lines and columns (a character, not a byte).
+  CHECK(error_of("{\"lesson\": 1,\n \"title\": \"\u00e9t\u00e9\" x}") ==
+        "lesson: not valid JSON at line 2, column 17: invalid literal; last read: '\"\u00e9t\u00e9\" x'; expected '}' "
+        "(a lesson is one JSON object, see docs/lessons.md)");
   CHECK(e.find("json.exception") == std::string::npos);
 }
 
@@ -379,9 +394,44 @@ TEST_CASE("a lesson carries its own translations, each a text of the lesson in a
   CHECK(with({{"en", {{"T", "x"}}}}).find("translations.en: not a language") == 0);
   CHECK(with({{"es", {{"Not in it", "x"}}}}) ==
         "translations.es.\"Not in it\": not a text of this lesson (the key is the English text, exactly)");
-  CHECK(with({{"es", {{"T", ""}}}}) == "translations.es.\"T\": must be a non-empty string");
+  CHECK(with({{"es", {{"T", ""}}}}) == "translations.es.\"T\" (title): must be a non-empty string");
   CHECK(with({{"es", {{"{Tap|Click} to pick.", "Toca para elegir."}}}}) ==
-        "translations.es.\"{Tap|Click} to pick.\": must keep the English text's {tap|click} choices, with as many alternatives each");
+        "translations.es.\"{Tap|Click} to pick.\" (steps[1].text): must keep the English text's {tap|click} choices, with as many alternatives each");
   CHECK(with({{"es", {{"Watch *this*.", "Mira *esto."}}}}).find("an emphasis is not closed") != std::string::npos);
   CHECK(with(ojson::array()) == "translations: must be an object of language codes (es, de, fr, pt-BR, zh-CN) to tables");
+}
+
+TEST_CASE("a translation is held to the rules of the field it translates") {
+  ojson l = base_lesson();
+  auto with = [&](const char* code, const std::string& english, const std::string& shown) {
+    ojson t = l;
+    t["translations"] = {{code, {{english, shown}}}};
+    return error_of_json(t);
+  };
+  // A title is at most 120 bytes in every language, as in English; other texts 8,000.
+  CHECK(with("de", "T", std::string(120, 'x')) == "");
+  CHECK(with("de", "T", std::string(8000, 'x')) ==
+        "translations.de.\"T\" (title): must be at most 120 bytes long, as the English is (it has 8000)");
+  CHECK(with("fr", "Pick.", std::string(8000, 'x')) == "");
+  CHECK(with("fr", "Pick.", std::string(8001, 'x')) ==
+        "translations.fr.\"Pick.\" (steps[1].text): must be at most 8000 bytes long, as the English is (it has 8001)");
+  // A text in two fields takes the stricter limit: "T" as the title and the summary.
+  l["summary"] = "T";
+  CHECK(with("es", "T", std::string(121, 'x')).find("(title): must be at most 120 bytes long") != std::string::npos);
+  l = base_lesson();
+  // Nothing to see is refused, as are DEL and the C1 controls, in the field named.
+  CHECK(with("es", "b", "\u202e") ==
+        "translations.es.\"b\" (steps[1].task.options[1]): must show something (it holds only spaces or "
+        "invisible characters such as U+202E)");
+  CHECK(with("zh-CN", "yes", "\u200b\u200c\u200d\u200e\u200f\u202a\u202b\u202c\u202d\u2066\u2067\u2068\u2069\ufeff") ==
+        "translations.zh-CN.\"yes\" (steps[1].task.feedback[1]): must show something (it holds only spaces or "
+        "invisible characters such as U+200B)");
+  CHECK(with("pt-BR", "it goes up", " \u00a0 ") ==
+        "translations.pt-BR.\"it goes up\" (steps[2].task.outcome): must show something (it holds only spaces)");
+  CHECK(with("de", "Which?", "Welche\x7f?") ==
+        "translations.de.\"Which?\" (steps[1].task.prompt): control character U+007F (only line breaks are allowed)");
+  CHECK(with("de", "S", "Zusammen\u0090fassung") ==
+        "translations.de.\"S\" (summary): control character U+0090 (only line breaks are allowed)");
+  // Visible text with a direction mark inside it still reads.
+  CHECK(with("de", "Which?", "\u200fWelche?") == "");
 }

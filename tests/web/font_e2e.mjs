@@ -1,5 +1,6 @@
 // The Chinese font as a broken network serves it (issue 36, points 2 and 3): cut after its
-// first 4,096 bytes, a captive portal's HTML page with a 200, a 404, a refused connection.
+// first 4,096 bytes, a captive portal's HTML page with a 200, a 404, a refused connection (and
+// an empty 200).
 // Each time the page lives on (no "Swarm Lab 无法启动", no page error); the app draws its
 // interface in English meanwhile, every panel named in the parallel DOM; it says once, in
 // Chinese, that Chinese text cannot be shown (the page's notice, a live region; in English in
@@ -31,6 +32,9 @@ const BROKEN = [
   ['404', (route) => route.fulfill({ status: 404, contentType: 'text/plain', body: 'Not found' })],
   ['a refused connection', (route) => route.abort('connectionrefused')],
 ];
+// Opened once each after those, without the wait and the retry: an empty answer, and the cut
+// font again (it crashed the page in 3 runs of 6).
+const EMPTY = (route) => route.fulfill({ status: 200, contentType: 'font/otf', body: '' });
 
 /** Runs in the page before its scripts: window.fontNotices counts the times the notice came to
  *  show the font's message (its text became it while shown, or it was shown with it). */
@@ -126,7 +130,7 @@ async function brokenFont(url, name, answer, full, by) {
 async function main(url) {
   await launchBrowser({ width: 1280, height: 720, serviceWorkers: 'block' });
   for (const [name, answer] of BROKEN) await brokenFont(url, name, answer, true, name === BROKEN[0][0] ? 'keyboard' : 'mouse');
-  // What crashed the page in 3 runs of 6: the cut font, again.
+  await brokenFont(url, 'an empty answer (200)', EMPTY, false);
   for (let run = 2; run <= CUT_RUNS; ++run) await brokenFont(url, `${BROKEN[0][0]}, run ${run}`, BROKEN[0][1], false);
 }
 

@@ -151,6 +151,8 @@ CjkFontNews cjk_font_news() {
   if (!delivered) return CjkFontNews::none;
   delivered = false;
   if (!fetched) return failed_try("the fetch failed");
+  // No bytes would read as "not here yet" (cjk_font()), and nothing would be tried again.
+  if (received.empty()) return failed_try(font_file_problem(received));
   bytes = std::move(received);
   fetch = Fetch::here;
   if (missing) tell_page_cjk_font_here();

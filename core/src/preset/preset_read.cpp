@@ -372,10 +372,10 @@ PresetParse parse_preset(std::string_view json_text, const ResourceLimits& limit
     out.error = e.what();
     return out;
   } catch (const json::parse_error& e) {
-    out.error = printable(std::string("preset: not valid JSON (") + e.what() + ")", 300);
+    out.error = "preset: not valid JSON at " + json_syntax_error(e, json_text);
     return out;
   } catch (const json::exception& e) {  // e.g. a number beyond the range of a double
-    out.error = printable(std::string("preset: a number cannot be read (") + e.what() + ")", 300);
+    out.error = "preset: a number cannot be read (" + json_error_text(e) + ")";
     return out;
   }
   try {
@@ -387,7 +387,7 @@ PresetParse parse_preset(std::string_view json_text, const ResourceLimits& limit
   } catch (const Invalid& e) {
     out.error = e.message;
   } catch (const json::exception& e) {
-    out.error = printable(std::string("preset: ") + e.what(), 300);
+    out.error = "preset: " + json_error_text(e);
   }
   return out;
 }

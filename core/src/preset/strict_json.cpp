@@ -139,4 +139,35 @@ nlohmann::json parse_strict_json(std::string_view text) {
   return root;
 }
 
+std::string json_syntax_error(const nlohmann::json::parse_error& e, std::string_view text) {
+  // Where: the character it broke at (e.byte counts from 1), as line and column.
+  const std::size_t end = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n')
+      ++line, column = 1;
+    else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80)
+      ++column;  // a character, not a UTF-8 continuation byte
+  }
+  // What: nlohmann's sentence after "[json.exception.parse_error.101] parse error at line 1,
+  // column 5: " and "syntax error while parsing value - ".
+  std::string_view what = e.what();
+  if (const std::size_t at = what.find("column "); at != std::string_view::npos)
+    if (const std::size_t colon = what.find(": ", at); colon != std::string_view::npos)
+      what.remove_prefix(colon + 2);
+  if (what.rfind("syntax error while parsing", 0) == 0)
+    if (const std::size_t dash = what.find(" - "); dash != std::string_view::npos)
+      what.remove_prefix(dash + 3);
+  return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": " +
+         printable(what, 200);
+}
+
+std::string json_error_text(const nlohmann::json::exception& e) {
+  std::string_view what = e.what();  // "[json.exception.out_of_range.406] number overflow ..."
+  if (what.rfind("[json.exception.", 0) == 0)
+    if (const std::size_t end = what.find("] "); end != std::string_view::npos)
+      what.remove_prefix(end + 2);
+  return printable(what, 200);
+}
+
 }  // namespace swarm
