@@ -69,13 +69,15 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_preset(int indent) {
   return preset_text.c_str();
 }
 
-/// Opens a preset from JSON text; "" on success, else the message also shown in the panel.
-/// The caller passes json in a malloc'd buffer, not on the wasm stack, and has already refused
-/// text over the size limit (web/swarmlab_api.js).
-EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_json(const char* json, const char* source,
+/// Opens a preset from JSON text of `bytes` bytes; "" on success, else the message also shown
+/// in the panel. The caller passes json in a malloc'd buffer, not on the wasm stack, and has
+/// already refused text over the size limit (web/swarmlab_api.js). The length comes with it,
+/// so that a NUL byte in a file is refused by the preset's rule, not taken for its end.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_json(const char* json, int bytes, const char* source,
                                                     const char* location) {
   swarmlab::App* app = swarmlab::web_app();
-  open_error = app ? swarmlab::open_preset_json(app->state(), json, source, location)
+  open_error = app ? swarmlab::open_preset_json(app->state(), std::string(json, std::size_t(bytes)),
+                                                source, location)
                    : std::string("the app has not started");
   return open_error.c_str();
 }

@@ -99,14 +99,22 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_lessons() {
   return lessons_text.c_str();
 }
 
-/// Opens a lesson: `text` is a shipped lesson's id, or lesson JSON when `is_json`. "" on
-/// success, else "source: message" (also shown in the app); the running lesson stays.
-EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson(const char* text, int is_json,
+/// Whether JSON text of `bytes` bytes is a lesson (lesson.h's looks_like_lesson): 1 or 0. A
+/// file picked or dropped on the page opens as a lesson when it is one.
+EMSCRIPTEN_KEEPALIVE int swarmlab_is_lesson(const char* text, int bytes) {
+  return swarmlab::looks_like_lesson(std::string_view(text, std::size_t(bytes))) ? 1 : 0;
+}
+
+/// Opens a lesson: `text` (`bytes` bytes, a NUL among them refused by the lesson's rule) is a
+/// shipped lesson's id, or lesson JSON when `is_json`. "" on success, else "source: message"
+/// (also shown in the app); the running lesson stays.
+EMSCRIPTEN_KEEPALIVE const char* swarmlab_open_lesson(const char* text, int bytes, int is_json,
                                                       const char* source) {
   swarmlab::App* app = swarmlab::web_app();
   if (!app) return "the app has not started";
   swarmlab::AppState& s = app->state();
-  std::string error = is_json ? swarmlab::open_lesson_json(s, text) : swarmlab::open_lesson_id(s, text);
+  const std::string given(text, std::size_t(bytes));
+  std::string error = is_json ? swarmlab::open_lesson_json(s, given) : swarmlab::open_lesson_id(s, given);
   if (!error.empty()) return refuse_lesson(s, std::string(source) + ": " + error).c_str();
   s.lessons.error.clear();
   s.lessons.dismiss_welcome();

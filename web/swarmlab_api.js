@@ -112,16 +112,17 @@
 
   function presetText(indent) { return Module.ccall('swarmlab_preset', 'string', ['number'], [indent]); }
 
-  // Calls use(pointer) with text as UTF-8 in a malloc'd buffer, freed afterwards. ccall's
+  // Calls use(pointer, bytes) with text as UTF-8 in a malloc'd buffer, freed afterwards. ccall's
   // 'string' argument copies onto the wasm stack (5 MB), which a long text overruns ("memory
-  // access out of bounds"); the heap grows instead.
+  // access out of bounds"); the heap grows instead. `bytes` is the text's length, a NUL in it
+  // included, which C would take for its end.
   function withHeapText(text, use) {
     var size = lengthBytesUTF8(text) + 1;
     var pointer = _malloc(size);
     if (!pointer) throw new Error('swarmlab: not enough memory for ' + size + ' bytes of text');
     stringToUTF8(text, pointer, size);
     try {
-      return use(pointer);
+      return use(pointer, size - 1);
     } finally {
       _free(pointer);
     }
@@ -169,9 +170,9 @@
     text = String(text);
     var bytes = lengthBytesUTF8(text);
     if (bytes > SwarmlabLink.maxPresetBytes) return refuse(SwarmlabLink.tooLarge(source + ': the preset', bytes));
-    var error = withHeapText(text, function (pointer) {
-      return Module.ccall('swarmlab_open_json', 'string', ['number', 'string', 'string'],
-                          [pointer, source, location]);
+    var error = withHeapText(text, function (pointer, length) {
+      return Module.ccall('swarmlab_open_json', 'string', ['number', 'number', 'string', 'string'],
+                          [pointer, length, source, location]);
     });
     if (error) stillRunning(error);
     else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
@@ -179,10 +180,16 @@
   }
 
   // A File (picked or dropped): its size is known before it is read, so a huge file is refused
-  // without reading it.
+  // without reading it. A lesson file opens as a lesson, anything else as a preset.
   function openFileObject(file) {
     if (file.size > SwarmlabLink.maxPresetBytes) return refuse(SwarmlabLink.tooLarge(file.name, file.size));
-    file.text().then(function (text) { openJson(text, file.name, file.name); });
+    file.text().then(function (text) {
+      var lesson = withHeapText(text, function (pointer, length) {
+        return Module.ccall('swarmlab_is_lesson', 'number', ['number', 'number'], [pointer, length]);
+      });
+      if (lesson) openLessonText(text, true, file.name);
+      else openJson(text, file.name, file.name);
+    });
   }
 
   // A file picker for JSON (a preset, lesson progress): use(file) with the file picked.
@@ -215,9 +222,9 @@
     var bytes = lengthBytesUTF8(text);
     if (bytes > SwarmlabLink.maxPresetBytes)
       return refuse(SwarmlabLink.tooLarge(source + ': the lesson', bytes));
-    var error = withHeapText(text, function (pointer) {
-      return Module.ccall('swarmlab_open_lesson', 'string', ['number', 'number', 'string'],
-                          [pointer, isJson ? 1 : 0, source]);
+    var error = withHeapText(text, function (pointer, length) {
+      return Module.ccall('swarmlab_open_lesson', 'string', ['number', 'number', 'number', 'string'],
+                          [pointer, length, isJson ? 1 : 0, source]);
     });
     if (error) notice('error', error);
     else if (typeof Module.hideNotice === 'function') Module.hideNotice('error');
@@ -535,7 +542,7 @@
         notice('info', 'Paused while this tab was hidden: press Play to go on.', '',
                pageText('Paused while this tab was hidden: press Play to go on.'));
     });
-    // A preset file dropped on the page opens like Open preset.
+    // A file dropped on the page opens like Open preset (a lesson file as a lesson).
     window.addEventListener('dragover', function (e) { e.preventDefault(); });
     window.addEventListener('drop', function (e) {
       e.preventDefault();

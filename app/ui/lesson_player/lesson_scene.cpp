@@ -62,6 +62,13 @@ std::string open_lesson_id(AppState& app, const std::string& id) {
   return error;
 }
 
+std::string open_file_text(AppState& app, const std::string& text, const std::string& location) {
+  if (!looks_like_lesson(text)) return app.open_json(text, location);
+  std::string error = open_lesson_json(app, text);
+  if (error.empty()) app.lessons.dismiss_welcome();
+  return error;
+}
+
 void keep_lesson_run_going(AppState& app) {
   const LessonStep* s = app.lessons.run_step();
   if (!s || !app.run->finished() || !app.run->primary().failure().empty()) return;

@@ -19,6 +19,11 @@ void open_lesson(AppState& app, const Lesson& lesson);
 std::string open_lesson_json(AppState& app, const std::string& json);
 std::string open_lesson_id(AppState& app, const std::string& id);
 
+/// Opens what a file holds (opened by path, picked or dropped): a lesson file (looks_like_lesson)
+/// as a lesson, anything else as a preset named `location`. Returns "" or the message, the
+/// lesson's or the preset's, the running lesson and preset staying.
+std::string open_file_text(AppState& app, const std::string& text, const std::string& location);
+
 /// Marks a picked option; a prediction plays the run.
 Marking answer_lesson_option(AppState& app, std::size_t option);
 

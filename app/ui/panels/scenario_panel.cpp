@@ -8,10 +8,12 @@
 #include <cstdio>
 #include <string>
 
+#include "files/text_file.h"
 #include "i18n/translator.h"
 #include "labels/system_labels.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/input/touch_target.h"
+#include "ui/lesson_player/lesson_scene.h"
 #include "ui/panels/panels.h"
 #include "ui/parallel_dom/item_tooltip.h"
 #include "ui/parallel_dom/parallel_dom.h"
@@ -124,9 +126,15 @@ void draw_scenario_panel(AppState& state) {
     ImGui::SetNextItemWidth(-1);
     ImGui::InputTextWithHint("##location", state.store->location_hint(), &state.location);
     if (ImGui::Button(tr_id("Open"))) {
-      const swarm::PresetParse parsed = state.store->open(state.location);
-      if (parsed.preset) {
-        state.open(*parsed.preset, state.location);
+      // A lesson file opens as a lesson, anything else as a preset (as a dropped file does in
+      // the browser).
+      std::string error;
+      const std::string text = read_text_file(state.location, error);
+      if (error.empty()) {
+        error = open_file_text(state, text, state.location);
+        if (!error.empty()) error = state.location + ": " + error;
+      }
+      if (error.empty()) {
         // One sentence with the location in it, as long as the location needs.
         const char* format = tr("Opened %s");
         const int length = std::snprintf(nullptr, 0, format, state.location.c_str());
@@ -134,7 +142,7 @@ void draw_scenario_panel(AppState& state) {
         std::snprintf(state.status.data(), state.status.size() + 1, format, state.location.c_str());
         state.status_is_error = false;
       } else {
-        state.status = parsed.error;
+        state.status = error;
         state.status_is_error = true;
       }
     }

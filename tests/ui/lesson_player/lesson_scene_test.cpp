@@ -71,4 +71,28 @@ TEST_CASE("lesson scene: without a run rule the run ends at its preset's end") {
   CHECK(app.run->time() == doctest::Approx(app.preset.duration).epsilon(1e-3));
 }
 
+TEST_CASE("lesson scene: a file opens as a lesson when it is one, else as a preset") {
+  AppState app = with_lesson("one-period");
+  const std::string lesson =
+      R"({"lesson": 1, "id": "from-a-file", "title": "From a file", "summary": "Opened by path.",)"
+      R"( "steps": [{"text": "The pair.", "preset": "two-body-circular.json"}]})";
+  // A lesson file is a lesson (not a preset with the unknown keys "id" and "lesson").
+  CHECK(open_file_text(app, lesson, "my-lesson.json") == "");
+  REQUIRE(app.lessons.open_lesson());
+  CHECK(app.lessons.open_lesson()->id == "from-a-file");
+  // A broken one gets the lesson's message; the open lesson stays.
+  const std::string broken = R"({"lesson": 1, "id": "broken", "title": "\u202e", "summary": "S",)"
+                             R"( "steps": [{"text": "a", "preset": "two-body-circular.json"}]})";
+  CHECK(open_file_text(app, broken, "broken.json") ==
+        "title: must show something (it holds only spaces or invisible characters such as U+202E)");
+  CHECK(app.lessons.open_lesson()->id == "from-a-file");
+  // A preset file runs as a preset, under the name it was opened from.
+  const std::string preset = R"({"name": "From a file", "J": 1, "particles": [{"m": 1, "r": [1, 0, 0],)"
+                             R"( "v": [0, 1, 0]}, {"m": 1, "r": [-1, 0, 0], "v": [0, -1, 0]}], "dt": 0.01, "duration": 5})";
+  CHECK(open_file_text(app, preset, "pair.json") == "");
+  CHECK(app.preset.name == "From a file");
+  CHECK(app.location == "pair.json");
+  CHECK(open_file_text(app, "{\"J\": 1,", "cut.json").rfind("preset: not valid JSON at line 1, column 9: ", 0) == 0);
+}
+
 }  // namespace swarmlab
