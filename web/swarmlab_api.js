@@ -79,6 +79,18 @@
       throw new Error('swarmlab: the app has not started yet (await swarmlab.ready)');
   }
 
+  // What a caller gave, for a message that refuses it: its kind and its value ("the string
+  // \"5\"" where String() would print a bare 5 that reads as a number).
+  function described(value) {
+    var kind = typeof value;
+    if (kind === 'string') return 'the string ' + JSON.stringify(value.length > 40 ? value.slice(0, 40) + '...' : value);
+    if (kind === 'bigint') return 'the BigInt ' + value + 'n';
+    if (kind === 'boolean') return 'the boolean ' + value;
+    if (kind === 'number' || value === undefined || value === null) return String(value);
+    if (kind === 'function' || kind === 'symbol') return 'a ' + kind;
+    return Array.isArray(value) ? 'an array' : 'an object';
+  }
+
   // A value as an error message quotes it (a BigInt or a cycle has no JSON).
   function quoted(value) {
     if (typeof value === 'number' || value === undefined) return String(value);
@@ -339,7 +351,7 @@
     seek: function (t, options) {
       check();
       if (typeof t !== 'number' || !isFinite(t))
-        return Promise.reject(new Error('swarmlab.seek(t): t must be a finite number, not ' + String(t)));
+        return Promise.reject(new Error('swarmlab.seek(t): t must be a finite number (time units), got ' + described(t)));
       var started = JSON.parse(Module.ccall('swarmlab_seek_start', 'string', ['number'], [t]));
       if (started.error) return Promise.reject(new Error('swarmlab.seek(t): ' + started.error));
       var onprogress = options && typeof options.onprogress === 'function' ? options.onprogress : null;

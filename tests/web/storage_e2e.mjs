@@ -216,6 +216,12 @@ async function seeks(url) {
   check('a refused seek changes nothing', after.seek === null && after.t === before.t && !before.playing, JSON.stringify(after));
   const negative = await api(() => window.swarmlab.seek(-1).then(() => null, (e) => e.message));
   check('seek(-1) is refused too', /t = -1 is beyond the run/.test(negative || ''), negative);
+  // Not a number: the message shows what was given, its kind too (a bare 5 would read as a number).
+  const given = await api(() => Promise.all(['5', undefined, NaN, null, [2]].map(
+    (t) => window.swarmlab.seek(t).then(() => null, (e) => e.message))));
+  const said = ['the string "5"', 'undefined', 'NaN', 'null', 'an array'];
+  check('seek(\'5\'), seek(), seek(NaN), seek(null), seek([2]): each refused showing what was given',
+        given.every((m, i) => m === 'swarmlab.seek(t): t must be a finite number (time units), got ' + said[i]), given.join(' | '));
 
   // 2. A far seek: answered at once with a Promise; frames keep coming; progress shown. First
   // the page's own long tasks over as many frames while it plays (the run changing every frame,
