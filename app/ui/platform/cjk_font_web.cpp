@@ -30,10 +30,12 @@ std::string received;
 CjkFontNews pending_news = CjkFontNews::none;  // from refuse_cjk_font, told at the next news
 
 // (EM_JS bodies: double quotes and no backslashes.) The page names the font as the build
-// published it, with its content's hash (window.swarmlabFiles, web/publish.py). The body is
-// read up to max_bytes and no further; what came is copied into the wasm heap for
-// swarmlab_cjk_font_ready (a null pointer: nothing came, and the console says why). A try after
-// a failure goes past the browser's HTTP cache.
+// published it, with the first 8 hex digits of its content's SHA-256 (window.swarmlabFiles,
+// web/publish.py). The body is read up to max_bytes and no further, and where the browser
+// offers SHA-256 (a secure context: https, localhost) bytes whose digest is not the name's are
+// refused here, so that only the build's own font goes on, to the checks of fonts.cpp; what
+// came is copied into the wasm heap for swarmlab_cjk_font_ready (a null pointer: nothing came,
+// and the console says why). A try after a failure goes past the browser's HTTP cache.
 // clang-format off
 EM_JS(void, fetch_cjk_font, (int delay_ms, int reload, int max_bytes), {
   var name = "fonts/noto-sans-sc-subset.otf";
@@ -59,6 +61,16 @@ EM_JS(void, fetch_cjk_font, (int delay_ms, int reload, int max_bytes), {
     }
     return pump();
   }
+  function published_digest(b) {
+    var parts = url.split("/").pop().split(".");
+    var want = parts.length > 2 ? parts[parts.length - 2] : "";
+    if (!/^[0-9a-f]{8}$/.test(want) || !(window.crypto && crypto.subtle)) return b;
+    return crypto.subtle.digest("SHA-256", b).then(function(d) {
+      var got = Array.from(new Uint8Array(d, 0, 4)).map(function(x) { return (x + 256).toString(16).slice(1); }).join("");
+      if (got !== want) throw new Error("its SHA-256 begins " + got + ", not " + want + " as its name says");
+      return b;
+    });
+  }
   function hand_over(b, why) {
     var pointer = 0;
     if (b) {
@@ -70,7 +82,7 @@ EM_JS(void, fetch_cjk_font, (int delay_ms, int reload, int max_bytes), {
     _swarmlab_wake();
   }
   setTimeout(function() {
-    fetch(url, reload ? { cache: "reload" } : {}).then(body)
+    fetch(url, reload ? { cache: "reload" } : {}).then(body).then(published_digest)
       .then(function(b) { hand_over(b, ""); }, function(e) { hand_over(null, String(e)); });
   }, delay_ms);
 });
