@@ -91,19 +91,13 @@
     return Array.isArray(value) ? 'an array' : 'an object';
   }
 
-  // A value as an error message quotes it (a BigInt or a cycle has no JSON).
-  function quoted(value) {
-    if (typeof value === 'number' || value === undefined) return String(value);
-    try { return JSON.stringify(value); } catch (e) { return String(value); }
-  }
-
   // An index from the caller, checked before it becomes a C int or size_t, where 2^32 + 1
   // would wrap to 1 and 2^53 to 0: a safe integer (exact in a double) from 0 to count - 1.
   // Throws Error naming the call's argument, the value and the range.
   function checkedIndex(call, name, value, count, what) {
     if (!Number.isSafeInteger(value) || value < 0 || value >= count)
       throw new Error(call + ': ' + name + ' must be ' + what + ', an integer from 0 to ' + (count - 1) +
-                      ' (' + count + ' of them), not ' + quoted(value));
+                      ' (' + count + ' of them), not ' + described(value));
     return value;
   }
   function particleCount() { return Module.ccall('swarmlab_particle_count', 'number', [], []); }
@@ -473,7 +467,7 @@
     lessonAnswer: function (value) {
       check();
       if (typeof value !== 'number' || !isFinite(value))
-        throw new Error('swarmlab.lessonAnswer(value): value must be a finite number (a measurement, or an option\'s index), not ' + quoted(value));
+        throw new Error('swarmlab.lessonAnswer(value): value must be a finite number (a measurement, or an option\'s index), not ' + described(value));
       var result = JSON.parse(Module.ccall('swarmlab_lesson_answer', 'string', ['number'], [value]));
       if (result.error) throw new Error('swarmlab.lessonAnswer(value): ' + result.error);
       return result;
