@@ -3,7 +3,8 @@
 // the mouse through the parallel DOM, switches it and the choice is remembered for the next
 // visit; a typed number accepts '.' and ',' and shows the language's decimal separator; the
 // Chinese font is fetched only when Chinese is chosen, and its glyphs are drawn; Copy link
-// carries the language, and beats a remembered choice. Then, per language, a lesson step at a
+// carries the language, and beats a remembered choice; windows opened in one language (the
+// Lesson progress notice, the panels) are named in the next. Then, per language, a lesson step at a
 // laptop size and on a phone, and the welcome on a phone, saved to build/web-test/i18n/ to be
 // looked at.
 // window.swarmlab is only read.
@@ -107,9 +108,34 @@ async function main(url) {
   check('the copied link opens in Chinese though French was remembered', started && await until(page, 'zh-CN'),
         error || await language(page));
   await page.close();
+
+  // 7. Windows opened in one language are named in the next (the parallel DOM's regions): a
+  //    saved progress that cannot be read opens the Lesson progress window in Spanish, then
+  //    View > Language > Deutsch.
+  ({ page, started, error } = await openApp(url + '#lang=es', 'i18n-windows', () =>
+    localStorage.setItem('swarmlab.progress', '{"version": 1, "welcomed": true, "lessons": {"one-per')));
+  if (check('the page opens in Spanish with unreadable progress', started && await until(page, 'es'), error || '')) {
+    const regions = () => page.evaluate(() => [...document.querySelectorAll('#parallel-dom .pdom-region')]
+      .map((r) => r.getAttribute('aria-label')));
+    const windows = ['Lesson progress', 'Controls', 'Plots'];
+    await page.waitForFunction((name) => [...document.querySelectorAll('#parallel-dom .pdom-region')]
+      .some((r) => r.getAttribute('aria-label') === name), words('es', 'Lesson progress'), { timeout: 30_000 }).catch(() => {});
+    const spanish = await regions();
+    check('the Lesson progress window opens, named in Spanish', spanish.includes(words('es', 'Lesson progress')), spanish.join(', '));
+    const mouse = person(page, 'mouse');
+    check('View > Language > Deutsch', await chooseLanguage(mouse, page, 'es', 'de'), await language(page));
+    await page.waitForFunction((name) => [...document.querySelectorAll('#parallel-dom .pdom-region')]
+      .some((r) => r.getAttribute('aria-label') === name), words('de', 'Lesson progress'), { timeout: 30_000 }).catch(() => {});
+    const german = await regions();
+    check('every window is named in German now: Lesson progress, Controls, Plots (none left in Spanish)',
+          windows.every((w) => german.includes(words('de', w)) && !german.includes(words('es', w))), german.join(', '));
+    check('the Lesson progress window\'s close button is named in German',
+          await mouse.find('button', words('de', 'Close %s').replace('%s', words('de', 'Lesson progress'))).count() === 1);
+    await page.close();
+  }
   await closeBrowser();
 
-  // 7. Per language, for a person to look at: a lesson's first step at a laptop size, and the
+  // 8. Per language, for a person to look at: a lesson's first step at a laptop size, and the
   //    welcome on a phone (each written to build/web-test/i18n/).
   await launchBrowser({ width: 1366, height: 768 });
   for (const code of LANGUAGES) {

@@ -164,6 +164,14 @@ function(swarmlab_imgui_core_with_hooks imgui_dir out_var)
     "    const ImVec2 text_size = text_size_if_known ? *text_size_if_known : CalcTextSize(text, text_end_full, false, 0.0f);\n\n    //draw_list->AddLine("
     "    const ImVec2 text_size = text_size_if_known ? *text_size_if_known : CalcTextSize(text, text_end_full, false, 0.0f);\n    { ImVec4 room(pos_min.x, pos_min.y, ImMin(pos_max.x, clip_max_x), pos_max.y); ${text_hook}draw_list, pos_min, text_size, text, text_end_full, &room); }\n\n    //draw_list->AddLine("
     1)
+  # A window's stored name follows the label it is begun with (the same ### id, another
+  # language): ImGui 1.86 renews it only while the Ctrl+Tab list shows it, but the parallel DOM
+  # names its regions and swarmlab.state() its windows from it, so a window first opened in
+  # Spanish kept its Spanish name in German.
+  _swarmlab_hook_edit(
+    "        bool window_title_visible_elsewhere = false;\n"
+    "        bool window_title_visible_elsewhere = true;  // Swarm Lab: the parallel DOM shows it\n"
+    1)
   file(WRITE "${out}.tmp" "${src}")
   file(COPY_FILE "${out}.tmp" "${out}" ONLY_IF_DIFFERENT)
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${imgui_dir}/imgui.cpp")
