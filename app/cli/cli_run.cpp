@@ -11,6 +11,7 @@
 #include "files/atomic_file.h"
 #include "files/preset_file.h"
 #include "report/plot_files.h"
+#include "report/provenance.h"
 #include "report/report.h"
 #include "report/run_csv.h"
 #include "swarm/measure/speed_distribution.h"
@@ -189,12 +190,17 @@ int run_command(const RunOptions& options) {
     // was, and Ctrl-C leaves no temporary behind.
     std::vector<report::NamedFigure> figures;
     if (!options.plots_dir.empty()) figures = report::run_figures(report::record_of(preset, runs));
+    // One provenance for all of this run's files. A seed given on the command line is the
+    // run's even for listed particles, which it perturbs.
+    const report::Provenance made_by = report::provenance_now(
+        options.seed ? report::Seeds{*options.seed} : report::seeds_of(preset));
     OutputFiles files;
     std::string err;
     if (!options.plots_dir.empty())
-      err = report::stage_figures(files, options.plots_dir, figures, options.png);
+      err = report::stage_figures(files, options.plots_dir, figures, options.png,
+                                  report::provenance_lines(made_by));
     if (err.empty() && !options.out_path.empty())
-      err = files.stage(options.out_path, result_json(preset, runs));
+      err = files.stage(options.out_path, result_json(preset, runs, made_by));
     if (err.empty() && !options.csv_path.empty())
       err = files.stage(options.csv_path, report::samples_csv(run.samples()));
     if (err.empty()) err = files.commit();

@@ -46,7 +46,8 @@ json summary_json(const swarm::RunSummary& s) {
 
 }  // namespace
 
-std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
+std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs,
+                        const report::Provenance& made_by) {
   swarm::Run& run = runs.primary();
   json j;
   j["preset"] = json::parse(swarm::preset_to_json(preset));
@@ -77,6 +78,7 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs) {
     const swarm::StageFits f = run.fits();
     j["fits"] = {{"P_V", fit_json(f.P_V)}, {"T_V", fit_json(f.T_V)}, {"P_T", fit_json(f.P_T)}};
   }
+  j["provenance"] = report::provenance_json(made_by);
   if (!runs.tracks().empty()) {
     json comparisons = json::array();
     for (const auto& track : runs.tracks()) {

@@ -12,6 +12,7 @@
 #include "report/csv_field.h"
 #include "report/ensemble_figures.h"
 #include "swarm/measure/confidence.h"
+#include "report/provenance.h"
 #include "swarm/measure/fit.h"
 #include "swarm/preset/ensemble_seed.h"
 #include "swarm/preset/printable_text.h"
@@ -383,7 +384,8 @@ MergeReport merge_runs(const std::string& dir, double relative_half_width) {
     for (const auto& [key, v] : values.items()) keys.insert(key);
   }
   // Keys and names come from files (plan.json, the records): text fields, formula-safe.
-  out.csv = report::csv_text("index") + "," + report::csv_text("seed");
+  out.csv = report::csv_comment_lines(report::provenance_lines(made_by)) +
+            report::csv_text("index") + "," + report::csv_text("seed");
   for (const std::string& key : keys) out.csv += "," + report::csv_text(key);
   for (const std::string& name : names) out.csv += "," + report::csv_text(name);
   out.csv += "\n";
@@ -418,6 +420,10 @@ MergeReport merge_runs(const std::string& dir, double relative_half_width) {
         const json v = values.contains(key) ? values[key] : json();
         out.csv += "," + (v.is_number()   ? report::csv_number_text(v.dump())
                           : v.is_string() ? report::csv_text(v.get<std::string>())
+  // What made the merge; each run's own provenance stays in its record.
+  const report::Provenance made_by =
+      report::provenance_now({std::nullopt, plan.seed, plan.seeds});
+  report["provenance"] = report::provenance_json(made_by);
                           : v.is_null()   ? report::csv_text("")
                                           : report::csv_text(v.dump()));
       }

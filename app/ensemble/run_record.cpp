@@ -100,6 +100,7 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
     put(r, "KE_end", samples.back().KE);
   }
   if (run.plan().engine.container_radius && run.stages().empty()) {
+  r.made_by = report::provenance_now({id.seed});
     const swarm::WallTimeAverages a = swarm::wall_time_averages(swarm::wall_intervals(samples));
     r.equilibration_start = a.start;
     // A blocking error without a plateau (the run too short for its correlations) is no error
@@ -162,6 +163,14 @@ std::string record_json(const RunRecord& r) {
     json x = {{"value", v.value}};
     if (v.se) x["se"] = *v.se;
     values[name] = x;
+  const report::Provenance& p = r.made_by;
+  out += "provenance " + canonical_text_item(p.version) + " " + canonical_text_item(p.commit) +
+         " " + (p.clean ? (*p.clean ? "true" : "false") : "null") + " " +
+         canonical_text_item(p.compiler) + " " + canonical_text_item(p.os) + " " +
+         canonical_text_item(p.machine) + " " + canonical_text_item(p.date) + "\n";
+  out += "provenance.seeds " + (p.seeds.seed ? std::to_string(*p.seeds.seed) : "-") + " " +
+         (p.seeds.base ? std::to_string(*p.seeds.base) : "-") + " " +
+         std::to_string(p.seeds.runs) + "\n";
   }
   json j = {{"format", kRunFormat},
             {"format_version", kRunFormatVersion},
@@ -190,6 +199,7 @@ RecordRead parse_record(const std::string& text) {
     out.error = std::string("format: not \"") + kRunFormat + "\"";
     return out;
   }
+            {"provenance", report::provenance_json(r.made_by)},
   RunRecord r;
   std::string& e = out.error;
   int format_version = 0;
@@ -233,6 +243,11 @@ RecordRead parse_record(const std::string& text) {
       double se = 0;
       if (!read_number(v, "se", se, e, where)) return out;
       x.se = se;
+  const auto made_by = j.find("provenance");
+  const std::optional<report::Provenance> p =
+      report::provenance_from_json(made_by == j.end() ? json() : *made_by, e);
+  if (!p) return out;
+  r.made_by = *p;
     }
     r.values[name] = x;
   }

@@ -14,12 +14,13 @@
 #include <string>
 #include <vector>
 
+#include "report/provenance.h"
 #include "swarm/run/run.h"
 
 namespace swarmlab::ensemble {
 
 inline constexpr const char* kRunFormat = "swarmlab ensemble run";
-inline constexpr int kRunFormatVersion = 2;  ///< 2: the digest
+inline constexpr int kRunFormatVersion = 3;  ///< 2: the digest; 3: the provenance
 /// The P(t), T(t) series hold at most this many points, each the wall average of a stretch
 /// of consecutive samples (exact: impulses and hits add up).
 inline constexpr std::size_t kSeriesPoints = 200;
@@ -42,6 +43,9 @@ struct RunRecord {
   RunIdentity id;
   std::string failure;  ///< "" for a finished run; the reason a run stopped otherwise
   double equilibration_start = 0;  ///< time from which P and T are averaged
+  /// Who ran it, where and when (its seeds: {id.seed}); inside the digest, so that an edited
+  /// record cannot pass for one made elsewhere or at another time.
+  report::Provenance made_by;
   /// "P", "T" (time averages after the equilibration start), "energy_drift", "wall_hits",
   /// with outside work or heat (EngineConfig::exchanges_energy) "work", "heat" (the books
   /// at the end), "KE_start" and "KE_end",
@@ -54,7 +58,7 @@ struct RunRecord {
   std::vector<double> stage_V, stage_P, stage_T;
 };
 
-/// The record of a finished (or failed) run.
+/// The record of a finished (or failed) run, made here and now.
 RunRecord record_of(const RunIdentity& id, swarm::Run& run);
 std::string record_json(const RunRecord& r);
 
@@ -71,6 +75,9 @@ std::string record_json(const RunRecord& r);
 /// or "null" for a number that is not finite (JSON's null), and LIST is the count followed by
 /// " NUM" per element. Items on one line are separated by one space.
 std::string canonical_text(const RunRecord& r);
+///   provenance TEXT TEXT CLEAN TEXT TEXT TEXT TEXT   (version, commit, clean, compiler,
+///   host.os, host.machine, date; CLEAN is true, false or null)
+///   provenance.seeds INT-or-- INT-or-- INT   (seeds.seed, seeds.base, seeds.runs or 0)
 /// "sha256:" and the SHA-256 (64 lowercase hex digits) of canonical_text(r): the record's
 /// "digest".
 std::string record_digest(const RunRecord& r);

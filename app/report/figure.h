@@ -58,6 +58,9 @@ struct Figure {
   bool shared_x = false;
   double width = 760;  ///< pixels; the height follows from the panels
   Ink ink{};
+  /// What made it (provenance_lines, report/provenance.h): the SVG's <metadata> and the
+  /// CSV's leading "# " lines. None: neither.
+  std::vector<std::string> made_by{};
 };
 
 /// A figure and the file stem it is saved under.

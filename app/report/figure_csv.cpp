@@ -1,6 +1,7 @@
 #include "report/figure_csv.h"
 
 #include "report/csv_field.h"
+#include "report/provenance.h"
 
 namespace swarmlab::report {
 namespace {
@@ -13,7 +14,7 @@ std::string axis_name(const Axis& a) {
 
 std::string csv_of(const Figure& figure) {
   // Every figure's panels share one x quantity, so the header names it.
-  std::string out = csv_text("panel") + "," + csv_text("series") + "," +
+  std::string out = csv_comment_lines(figure.made_by) + csv_text("panel") + "," + csv_text("series") + "," +
                     csv_text(figure.panels.empty() ? "x" : axis_name(figure.panels[0].x)) + "," +
                     csv_text("y") + "\n";
   for (std::size_t p = 0; p < figure.panels.size(); ++p) {

@@ -4,6 +4,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #ifndef __EMSCRIPTEN__
 #include <spawn.h>
 #include <sys/wait.h>
@@ -11,6 +13,7 @@ extern char** environ;
 #endif
 
 #include "report/figure_csv.h"
+#include "report/png_text.h"
 #include "report/svg_plot.h"
 
 namespace swarmlab::report {
@@ -38,6 +41,16 @@ std::string render_png(const fs::path& svg, const fs::path& png) {
     return std::string(kRenderer) + " failed on " + in;
   return {};
 #endif
+}
+
+/// Rewrites the PNG file at path with lines as its text (png_text.h).
+std::string with_text(const fs::path& path, const std::vector<std::string>& lines) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string png{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << png_with_text(png, png_text_of(lines));
+  out.close();
+  return in && out ? std::string() : "cannot add the provenance to " + path.string();
 }
 
 }  // namespace
@@ -70,14 +83,21 @@ std::string png_unavailable_reason() {
 }
 
 std::string stage_figures(OutputFiles& files, const std::string& dir,
-                          const std::vector<NamedFigure>& figures, bool png) {
-  for (const NamedFigure& f : figures) {
+                          const std::vector<NamedFigure>& figures, bool png,
+                          const std::vector<std::string>& made_by) {
+  for (const NamedFigure& named : figures) {
+    NamedFigure f = named;
+    f.figure.made_by = made_by;
     const std::string stem = (fs::path(dir) / f.name).string();
     if (std::string e = files.stage(stem + ".svg", svg_of(f.figure)); !e.empty()) return e;
     if (std::string e = files.stage(stem + ".csv", csv_of(f.figure)); !e.empty()) return e;
     if (png) {
       const fs::path svg = files.temp_of(stem + ".svg");
-      const auto render = [&](const std::string& temp) { return render_png(svg, temp); };
+      // rsvg-convert drops the SVG's metadata: the PNG gets it as text chunks.
+      const auto render = [&](const std::string& temp) {
+        const std::string e = render_png(svg, temp);
+        return e.empty() ? with_text(temp, f.figure.made_by) : e;
+      };
       if (std::string e = files.stage(stem + ".png", render); !e.empty()) return e;
     }
   }

@@ -19,7 +19,9 @@ std::string png_unavailable_reason();
 
 /// Stages every figure's files (NAME.svg, NAME.csv, and NAME.png rendered from the staged SVG)
 /// into files, for dir; they appear when files is committed, together with any other output.
+/// Each SVG and CSV says what made it: made_by (provenance_lines, report/provenance.h).
 std::string stage_figures(OutputFiles& files, const std::string& dir,
-                          const std::vector<NamedFigure>& figures, bool png);
+                          const std::vector<NamedFigure>& figures, bool png,
+                          const std::vector<std::string>& made_by);
 
 }  // namespace swarmlab::report

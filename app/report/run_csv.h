@@ -1,7 +1,9 @@
 #pragma once
 // A run's samples and stages as CSV: the one writer behind `swarmlab run --csv` and the app's
 // Export CSV, so that a file from either has the same columns. Every field quoted
-// (report/csv_field.h): "t","P","T",... then one row of numbers per sample.
+// (report/csv_field.h): "t","P","T",... then one row of numbers per sample. No provenance
+// comment lines, unlike the figures' CSV (provenance.h): the header stays the first line, as
+// a spreadsheet and the tests (`head -1`) read it; `run --out` carries the run's provenance.
 
 #include <string>
 #include <vector>

@@ -83,6 +83,11 @@ RecordRead read_result_file(const std::string& path) {
              {number(x.at("v")[0]), number(x.at("v")[1]), number(x.at("v")[2])}});
       r.final_speeds = swarm::check_speeds(final_state);
     }
+    if (j.contains("provenance")) {
+      std::string error;
+      r.made_by = provenance_from_json(j.at("provenance"), error);
+      if (!r.made_by) return {std::nullopt, path + ": " + error};
+    }
     return {std::move(r), {}};
   } catch (const json::exception& e) {
     return {std::nullopt,

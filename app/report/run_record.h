@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "report/provenance.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/preset/preset.h"
 #include "swarm/run/side_by_side.h"
@@ -27,6 +28,8 @@ struct RunRecord {
   std::vector<ComparisonTrack> comparisons;  ///< measured against preset.method
   /// With a hot wall or hard spheres: the final speeds against the Maxwellian.
   std::optional<swarm::SpeedCheck> final_speeds;
+  /// What made the run, when its RESULT.json says (files written before it did not).
+  std::optional<Provenance> made_by{};
 };
 
 RunRecord record_of(const swarm::Preset& preset, swarm::SideBySide& runs);

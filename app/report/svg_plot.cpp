@@ -323,6 +323,11 @@ std::string svg_of(const Figure& figure) {
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << px(width) << "\" height=\""
       << px(height) << "\" viewBox=\"0 0 " << px(width) << " " << px(height) << "\" font-family=\""
       << kFont << "\">\n";
+  if (!figure.made_by.empty()) {
+    svg << "<metadata id=\"provenance\">\n";
+    for (const std::string& line : figure.made_by) svg << escaped(line) << "\n";
+    svg << "</metadata>\n";
+  }
   svg << "<rect width=\"100%\" height=\"100%\" fill=\"" << figure.ink.background << "\"/>\n";
   svg << "<text x=\"" << px(width / 2) << "\" y=\"28\" text-anchor=\"middle\" font-size=\"17\" fill=\""
       << figure.ink.text << "\">"

@@ -23,7 +23,9 @@ for name in ("P", "T"):
     assert q["within_se"] > 0 and q["spread_ratio"] > 0 and q["runs_for_half_width"]["runs"] >= 2
 assert len(r["bands"]["time"]["t"]) == len(r["bands"]["time"]["P"]["mean"]) > 10
 PY
-  [ "$(wc -l <"$work/here/runs.csv")" -eq 7 ] && head -1 "$work/here/runs.csv" | grep -q '^"index","seed","P","T",' && ok || bad "runs.csv"
+  # After the comment lines that say what made it (tests/cli/provenance_test.sh).
+  [ "$(grep -vc '^#' "$work/here/runs.csv")" -eq 7 ] && grep -v '^#' "$work/here/runs.csv" | head -1 |
+    grep -q '^"index","seed","P","T",' && ok || bad "runs.csv"
 else
   bad "ensemble failed"
 fi
@@ -33,8 +35,20 @@ fi
   grep -q "95 % interval over runs" "$work/here/figures/ensemble-time.svg" && ok || bad "report of an ensemble"
 
 # The same runs from a manifest: each line a plain swarmlab run, the same bits as the ensemble.
-same_runs() {  # DIR: every runs/<k>.json equals the ensemble's, byte for byte
-  for k in 0 1 2 3 4 5; do cmp -s "$work/here/runs/$k.json" "$1/runs/$k.json" || return 1; done
+# same_record A B: two run records equal in every value, to the bit, apart from what made each
+# (its provenance: the date, and on other hosts the host, differ) and so its digest.
+same_record() {
+  python3 - "$1" "$2" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+for r in (a, b):
+    assert r["provenance"]["version"] == r["swarmlab"]
+    del r["provenance"], r["digest"]
+assert a == b
+PY
+}
+same_runs() {  # DIR: every runs/<k>.json equals the ensemble's (same_record)
+  for k in 0 1 2 3 4 5; do same_record "$work/here/runs/$k.json" "$1/runs/$k.json" || return 1; done
 }
 same_report() {  # DIR: the merge gives the ensemble's quantities
   "$bin" merge "$1" --quiet && python3 - "$work/here/report.json" "$1/report.json" <<'PY'
@@ -150,7 +164,7 @@ assert vals == [{"container.radius": R, "particles.count": n} for R in (1.0, 1.5
 # sphere is still filling in 0.5 time units, so by more than the volume ratio 3.4).
 P = {(p["values"]["container.radius"], p["values"]["particles.count"]): p["quantities"]["P"]["mean"] for p in r["points"]}
 assert 2.4 < P[(1.0, 300)] / P[(1.0, 100)] < 3.6 and P[(1.0, 100)] / P[(1.5, 100)] > 2.4, P
-rows = list(csv.DictReader(open(sys.argv[2])))
+rows = list(csv.DictReader(l for l in open(sys.argv[2]) if not l.startswith("#")))
 assert len(rows) == 12 and rows[0]["particles.count"] == "100" and rows[3]["particles.count"] == "300"
 assert rows[0]["seed"] == rows[3]["seed"] == rows[6]["seed"]   # the same seeds at every point
 PY
@@ -162,7 +176,7 @@ fi
   grep -q "sweep-plan/points/3.json' --seed" "$work/sweep-plan/manifest.txt" && ok || bad "sweep manifest"
 "$bin" report "$work/sweep/report.json" --plots "$work/sweep/figures" --quiet &&
   [ -s "$work/sweep/figures/point3-ensemble-time.svg" ] && ok || bad "report of a sweep"
-(cd "$work" && bash sweep-plan/manifest.txt >/dev/null) && cmp -s "$work/sweep/runs/7.json" "$work/sweep-plan/runs/7.json" &&
+(cd "$work" && bash sweep-plan/manifest.txt >/dev/null) && same_record "$work/sweep/runs/7.json" "$work/sweep-plan/runs/7.json" &&
   ok || bad "a sweep's manifest line gives another run"
 printf '{"preset": "gas.json", "grid": {"particles.countt": [100, 300]}, "seeds": 3}' >"$work/sweep-bad.json"
 refused sweep-unknown-key "particles.countt: not a key of the base preset" "$bin" ensemble "$work/sweep-bad.json" --out "$work/sb"
@@ -181,7 +195,7 @@ def text(s):
     b = s.encode()
     return b"%d:" % len(b) + b
 def canonical(r):
-    out = [b"swarmlab ensemble run 2"]
+    out = [b"swarmlab ensemble run 3"]
     out.append(b"swarmlab " + text(r["swarmlab"]))
     out.append(b"preset_hash " + text(r["preset_hash"]))
     out.append(b"index %d" % r["index"])
@@ -189,6 +203,12 @@ def canonical(r):
     out.append(b"perturbation " + num(r["perturbation"]).encode())
     out.append(b"failure " + text(r["failure"]))
     out.append(b"equilibration_start " + num(r["equilibration_start"]).encode())
+    p = r["provenance"]
+    clean = {True: b"true", False: b"false", None: b"null"}[p["clean"]]
+    out.append(b" ".join([b"provenance", text(p["version"]), text(p["commit"]), clean, text(p["compiler"]),
+                          text(p["host"]["os"]), text(p["host"]["machine"]), text(p["date"])]))
+    seeds = p["seeds"]
+    out.append(("provenance.seeds %s %s %d" % (seeds.get("seed", "-"), seeds.get("base", "-"), seeds.get("runs", 0))).encode())
     for name in sorted(r["values"], key=lambda n: n.encode()):
         v = r["values"][name]
         se = num(v["se"]) if "se" in v else "-"
@@ -256,9 +276,9 @@ python3 "$work/seal.py" "$work"/csv/runs/*.json
 HOSTILE=$hostile python3 - "$work/csv/runs.csv" <<'PY' && ok || bad "runs.csv: a hostile name broke the CSV or reached a cell as a formula"
 import csv, os, sys
 name = os.environ["HOSTILE"]
-text = open(sys.argv[1], newline="").read()
-assert text.startswith('"index","seed",'), text[:40]  # RFC 4180 quotes, every field
-rows = list(csv.reader(open(sys.argv[1], newline="")))
+lines = [l for l in open(sys.argv[1], newline="") if not l.startswith("#")]  # what made it
+assert lines[0].startswith('"index","seed",'), lines[0][:40]  # RFC 4180 quotes, every field
+rows = list(csv.reader(lines))
 assert len(rows) == 7, rows
 # The plan's keys (in byte order), then the records' value names: text starting as a formula
 # does is shown as text, behind a quote mark.

@@ -60,10 +60,11 @@ TEST_CASE("run record: a cut or altered file is refused, naming what is wrong") 
   CHECK(parse_record(text.substr(0, text.size() / 2)).error.find("not a complete JSON object") == 0);
   CHECK(parse_record("{\"format\": \"something else\"}").error.find("format:") == 0);
   std::string other = text;
-  other.replace(other.find("\"format_version\":2"), 18, "\"format_version\":7");
+  other.replace(other.find("\"format_version\":3"), 18, "\"format_version\":7");
   CHECK(parse_record(other).error.find("format_version: 7") == 0);
   std::string bad_seed = text;
-  bad_seed.replace(bad_seed.find("\"seed\":1"), 8, "\"seed\":-1");
+  // The record's own seed (keys in byte order: "series" follows), not provenance.seeds'.
+  bad_seed.replace(bad_seed.find("\"seed\":1,\"series\""), 8, "\"seed\":-1");
   CHECK(parse_record(bad_seed).error.find("seed:") == 0);
 }
 
@@ -78,9 +79,11 @@ TEST_CASE("run record: the digest is over the documented canonical text") {
   r.P = {0.5, 1e300};
   r.T = {NAN, 2};
   r.R = {1, 1};
+  r.made_by = {"v1", "c0ffee", false, "GCC 1", "Linux 6", "x86_64", "2026-12-07T18:00:00Z",
+               {18446744073709551615ULL, std::nullopt, 0}};
   // The text run_record.h describes, written out by hand.
   CHECK(canonical_text(r) ==
-        "swarmlab ensemble run 2\n"
+        "swarmlab ensemble run 3\n"
         "swarmlab 2:v1\n"
         "preset_hash 4:00ff\n"
         "index 4\n"
@@ -88,6 +91,8 @@ TEST_CASE("run record: the digest is over the documented canonical text") {
         "perturbation 0.25\n"
         "failure 3:a:b\n"
         "equilibration_start 0.5\n"
+        "provenance 2:v1 6:c0ffee false 5:GCC 1 7:Linux 6 6:x86_64 20:2026-12-07T18:00:00Z\n"
+        "provenance.seeds 18446744073709551615 - 0\n"
         "value 1:P -1.5 0.125\n"
         "value 1:T 0.33333333333333331 -\n"
         "series.t 2 1 2\n"
@@ -98,7 +103,7 @@ TEST_CASE("run record: the digest is over the documented canonical text") {
         "stages.P 0\n"
         "stages.T 0\n");
   // sha256 of that text, from Python's hashlib.
-  CHECK(record_digest(r) == "sha256:5094912e22e5447fe62cb0d636578f0019e2dde8386612a52973859e6f28556e");
+  CHECK(record_digest(r) == "sha256:45b47ed406423ff6c1cc9bd8c6c60af91b0e97f9aa7a7cb424d91123d03b0d96");
 }
 
 TEST_CASE("run record: an edited value is refused by its digest, a re-laid-out file is not") {
@@ -113,4 +118,28 @@ TEST_CASE("run record: an edited value is refused by its digest, a re-laid-out f
         "digest: does not match the record's contents (edited by hand or damaged)");
   j.erase("digest");
   CHECK(parse_record(j.dump()).error == "digest: missing or not text");
+}
+
+TEST_CASE("run record: what made it is read back, and an edited provenance is refused") {
+  swarm::Run run = gas_run(200);
+  const RunRecord r = record_of({0, 7, "00ff", "abc", 0.0}, run);
+  CHECK(r.made_by.seeds.seed == std::optional<std::uint64_t>(7));  // the run's seed
+  CHECK(!r.made_by.compiler.empty());
+  const RecordRead back = parse_record(record_json(r));
+  REQUIRE(back.record);
+  CHECK(back.record->made_by.date == r.made_by.date);
+  CHECK(back.record->made_by.os == r.made_by.os);
+  nlohmann::json j = nlohmann::json::parse(record_json(r));
+  // Another date or host, in valid JSON: the digest covers them.
+  for (const char* key : {"date", "compiler"}) {
+    nlohmann::json edited = j;
+    edited["provenance"][key] = std::string(key) == "date" ? "2020-01-01T00:00:00Z" : "GCC 0";
+    CHECK(parse_record(edited.dump()).error ==
+          "digest: does not match the record's contents (edited by hand or damaged)");
+  }
+  nlohmann::json edited = j;
+  edited["provenance"]["host"]["os"] = "Plan 9";
+  CHECK(parse_record(edited.dump()).error.find("digest:") == 0);
+  edited.erase("provenance");
+  CHECK(parse_record(edited.dump()).error == "provenance: missing or not an object");
 }

@@ -9,6 +9,10 @@
 #include <vector>
 
 #include "i18n/translator.h"
+#include "report/figure_csv.h"
+#include "report/png_text.h"
+#include "report/provenance.h"
+#include "report/svg_plot.h"
 #include "ui/app_state.h"
 #include "ui/platform/gl_api.h"
 #include "ui/platform/save_dialog.h"
@@ -33,6 +37,11 @@ std::string with_title(const char* format, const std::string& title) {
   return text;
 }
 
+/// What made an export: this app, here and now, from the preset on screen's seed.
+std::vector<std::string> made_by(const AppState& state) {
+  return report::provenance_lines(report::provenance_now(report::seeds_of(state.preset)));
+}
+
 }  // namespace
 
 void handle_plot_export(AppState& state) {
@@ -40,16 +49,17 @@ void handle_plot_export(AppState& state) {
   if (!pending) return;
   const std::string stem =
       file_stem_of(state.preset.name) + "-" + file_stem_of(pending->file_title);
+  pending->figure.made_by = made_by(state);
   SaveRequest r;
   switch (pending->kind) {
     case PlotExport::Kind::svg:
       r = {with_title(tr("the plot \u201c%s\u201d as SVG"), pending->title), stem + ".svg",
-           std::move(pending->content), "image/svg+xml", false};
+           report::svg_of(pending->figure), "image/svg+xml", false};
       break;
     case PlotExport::Kind::csv:
       r = {with_title(tr("the numbers of \u201c%s\u201d as CSV (panel,series,x,y)"),
                       pending->title),
-           stem + ".csv", std::move(pending->content), "text/csv", false};
+           stem + ".csv", report::csv_of(pending->figure), "text/csv", false};
       break;
     case PlotExport::Kind::png:
       // The menu was drawn in this frame; the next one is drawn without it.
@@ -77,6 +87,7 @@ void capture_plot_png(AppState& state) {
     glReadPixels(x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     png = png_of_gl_pixels(pixels.data(), w, h);
   }
+  png = report::png_with_text(png, report::png_text_of(made_by(state)));
   const std::string stem =
       file_stem_of(state.preset.name) + "-" + file_stem_of(png_capture->file_title);
   const std::string title = png_capture->title;

@@ -5,8 +5,6 @@
 #include <utility>
 
 #include "i18n/translator.h"
-#include "report/figure_csv.h"
-#include "report/svg_plot.h"
 #include "ui/classroom/theme_style.h"
 #include "ui/input/touch_target.h"
 #include "ui/plots/plot_figure.h"
@@ -25,8 +23,7 @@ void request_plot_export(const PlotSpec& spec, PlotExport::Kind kind, ImVec2 min
   e.max = max;
   // SVG and CSV from the plot's own numbers, in the colours on screen; PNG is read from the
   // screen (plot_export.h).
-  if (kind == PlotExport::Kind::svg) e.content = report::svg_of(figure_of(spec, current_palette()));
-  if (kind == PlotExport::Kind::csv) e.content = report::csv_of(figure_of(spec, current_palette()));
+  if (kind != PlotExport::Kind::png) e.figure = figure_of(spec, current_palette());
   pending = e;
 }
 

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "report/figure.h"
 #include "ui/plots/plot_spec.h"
 
 namespace swarmlab {
@@ -18,7 +19,9 @@ struct PlotExport {
   enum class Kind { svg, png, csv } kind = Kind::svg;
   std::string title;       ///< the plot's title as shown, for the save dialog
   std::string file_title;  ///< the plot's title in English, for the file name
-  std::string content;  ///< SVG or CSV text; empty for PNG, read from the screen
+  /// SVG and CSV: the plot's figure, written when the app takes the request (with what made
+  /// it, which only the app knows); PNG is read from the screen.
+  report::Figure figure;
   ImVec2 min, max;      ///< the plot's rectangle on screen (logical pixels), for PNG
 };
 
