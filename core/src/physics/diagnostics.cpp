@@ -20,17 +20,18 @@ double potential_energy_pairwise(const System& s) {
 }
 
 SwarmReading swarm_reading(const System& s) {
-  double M = 0, ke = 0;
+  double M = 0, ke = 0, G = 0;
   Vec3 moment = Vec3::Zero();
   for (const auto& p : s.particles) {
     M += p.m;  // total_mass
     moment += p.m * p.r;
     ke += 0.5 * p.m * p.v.squaredNorm();
+    G += p.m * p.r.dot(p.v);
   }
   const Vec3 R = moment / M;  // cm_position
   double sum = 0;
   for (const auto& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
-  return {{ke, 0.5 * (s.J * M) * sum}, R, std::sqrt(sum / M)};
+  return {{ke, 0.5 * (s.J * M) * sum}, R, std::sqrt(sum / M), G};
 }
 
 EnergyParts energy_parts(const System& s) { return swarm_reading(s).energy; }

@@ -29,6 +29,22 @@ std::vector<WallInterval> wall_intervals(const std::vector<Sample>& samples) {
   return out;
 }
 
+bool virial_balance_applies(const EngineConfig& config) {
+  return config.container_radius && !config.exchanges_energy() && !config.sphere_radius;
+}
+
+std::vector<VirialInterval> virial_intervals(const std::vector<Sample>& samples,
+                                             std::size_t first) {
+  std::vector<VirialInterval> out;
+  for (std::size_t i = first + 1; i < samples.size(); ++i) {
+    const Sample& a = samples[i - 1];
+    const Sample& b = samples[i];
+    const double kinetic = (2 * a.KE - 2 * a.PE + 2 * b.KE - 2 * b.PE) / 2;
+    out.push_back({b.t, b.t - a.t, 3 * b.P * sphere_volume(b.R), kinetic, a.G, b.G});
+  }
+  return out;
+}
+
 Run::Run(System initial, const RunPlan& plan)
     : Run(make_engine(std::move(initial), plan.engine), plan) {}
 
@@ -127,6 +143,7 @@ Sample Run::sample_now() {
   out.books = books_;
   out.cm_height = reading.cm.z();
   out.size = reading.size;
+  out.G = reading.G;
   sample_meter_.reset();
   return out;
 }

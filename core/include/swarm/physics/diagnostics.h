@@ -30,6 +30,7 @@ struct SwarmReading {
   EnergyParts energy;
   Vec3 cm = Vec3::Zero();
   double size = 0;
+  double G = 0;  ///< sum m r.v about the origin: the virial's G (swarm/measure/virial_balance.h)
 };
 SwarmReading swarm_reading(const System& s);
 /// L = sum m (r - R_cm) x (v - V_cm).

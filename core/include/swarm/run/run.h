@@ -14,6 +14,7 @@
 #include "swarm/engine/engine.h"
 #include "swarm/measure/fit.h"
 #include "swarm/measure/thermometry.h"
+#include "swarm/measure/virial_balance.h"
 #include "swarm/measure/wall_tally_log.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/run/run_plan.h"
@@ -31,6 +32,9 @@ struct Sample {
   EnergyBooks books;
   double cm_height = 0;  ///< z of the centre of mass (length)
   double size = 0;       ///< rms distance from the CM, sqrt(sum m |r - R_cm|^2 / M) (length)
+  /// sum m r.v about the lab origin, the container's centre: the virial balance's G
+  /// (swarm/measure/virial_balance.h; energy units)
+  double G = 0;
 };
 
 struct Stage {
@@ -141,5 +145,17 @@ double relative_energy_change(const Sample& start, double E);
 /// The wall interval behind every sample but the first (which covers no step), for
 /// wall_average and windowed_wall_averages.
 std::vector<WallInterval> wall_intervals(const std::vector<Sample>& samples);
+
+/// Whether the virial balance (swarm/measure/virial_balance.h) holds for runs of this engine:
+/// a container whose wall stays still and reflects elastically, and the springs as the only
+/// force. Gravity, drag and a floor add the virial of outside forces, a moving wall its
+/// motion's, a hot wall re-emits at random, and hard spheres' contacts add their own virial
+/// (what makes their Z exceed 1): for those the balance is not applicable.
+bool virial_balance_applies(const EngineConfig& config);
+/// The virial terms behind every sample but the first, as wall_intervals' (the same
+/// intervals): 3 P V with V = 4/3 pi R^3 of the interval's closing sample, 2 KE - 2 U by the
+/// trapezoid rule, G at the ends. From samples[first] on (a trailing window's), or all.
+std::vector<VirialInterval> virial_intervals(const std::vector<Sample>& samples,
+                                             std::size_t first = 0);
 
 }  // namespace swarm
