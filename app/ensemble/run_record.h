@@ -25,7 +25,9 @@ inline constexpr int kRunFormatVersion = 3;  ///< 2: the digest; 3: the provenan
 /// of consecutive samples (exact: impulses and hits add up).
 inline constexpr std::size_t kSeriesPoints = 200;
 
-/// A number one run gives, and its error within the run (blocking) when it is a time average.
+/// A number one run gives, and when it is a time average (P, T) its standard error about this
+/// run's own long-run value (swarm::wall_estimate over the averaging window: from the
+/// window's parts), none where the window is too short to measure one.
 struct RunValue {
   double value = 0;
   std::optional<double> se;

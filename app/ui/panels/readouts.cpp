@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <vector>
@@ -126,8 +127,8 @@ const char* error_source_words(const swarm::WallEstimate& w) {
   switch (w.source) {
     case swarm::WallErrorSource::history:
       return tr("± from past windows");
-    case swarm::WallErrorSource::blocking:
-      return tr("± rough (blocking)");
+    case swarm::WallErrorSource::parts:
+      return tr("± from its parts");
     case swarm::WallErrorSource::none: break;
   }
   return tr("no ± yet");
@@ -135,7 +136,7 @@ const char* error_source_words(const swarm::WallEstimate& w) {
 
 /// P and T over the plots' averaging window, with their standard errors.
 void wall_rows(const swarm::WallEstimate& w) {
-  char value[160], help[900];
+  char value[160], help[2400];
   if (w.intervals == 0) {
     row("P", tr("waiting for samples"), tr("Wall pressure, once the first samples arrive."));
     return;
@@ -176,11 +177,21 @@ void wall_rows(const swarm::WallEstimate& w) {
                      "tab), or the whole run when it is 0.\n\n± is how much the mean of a "
                      "window this long varies, measured from every window of the same length "
                      "in the run's recent past at this wall, once it holds %.0f windows' "
-                     "worth. Until then (and for the whole run) ± comes from blocking the "
-                     "window's own samples, which is too large for regular motion: each "
-                     "particle hits the wall at steady intervals, so a long window's mean "
-                     "varies less than its parts suggest."),
-                  swarm::kWallHistoryWindows);
+                     "worth. Until then (and for the whole run) ± comes from the window's own "
+                     "quarters and sixteenths, carried on to its length by how their spread "
+                     "shrinks: regular motion (each particle hits the wall at steady "
+                     "intervals) makes a long window's mean vary less than its parts suggest. "
+                     "With fewer than %d samples in the window there is no ± yet rather than a "
+                     "wrong one."),
+                  swarm::kWallHistoryWindows, int(swarm::kWallPartsIntervals));
+  // What the ± is about, the same for both sources.
+  const std::size_t used = std::strlen(help);
+  std::snprintf(help + used, sizeof help - used, "\n\n%s",
+                tr("This ± is about this run: how far its window's mean may lie from what this "
+                   "run would give if it went on for ever. Runs from other seeds differ by more "
+                   "(their energies differ: 3 to 17 times more at long windows); for that "
+                   "spread, and a mean over seeds, run an ensemble (README, 'Ensembles: "
+                   "numbers with error bars')."));
   row(tr("P, T over"), value, translator().numbers(help).c_str());
 }
 

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "swarm/measure/blocking.h"
-
 namespace swarm {
 namespace {
 
@@ -139,23 +137,37 @@ bool errors_from_history(const std::vector<WallInterval>& intervals, std::size_t
   return true;
 }
 
-/// The errors by blocking over the window's intervals [first, end): P as impulse over time,
-/// T as hit energy over hits, each interval weighted as wall_average weighs it.
-void errors_by_blocking(const std::vector<WallInterval>& intervals, std::size_t first,
-                        WallEstimate& e) {
-  std::vector<double> impulse, duration, hit_energy, hits;
-  for (std::size_t i = first; i < intervals.size(); ++i) {
-    const WallInterval& w = intervals[i];
-    impulse.push_back(w.reading.P * w.duration);
-    duration.push_back(w.duration);
-    hit_energy.push_back(w.reading.T * double(w.reading.hits));
-    hits.push_back(double(w.reading.hits));
-  }
-  const auto P = blocking_error_of_ratio(impulse, duration);
-  if (!P) return;
-  e.source = WallErrorSource::blocking;
-  e.P_stderr = P->se;
-  if (const auto T = blocking_error_of_ratio(hit_energy, hits)) e.T_stderr = T->se;
+/// The errors from the window's own parts, [first, end) (see wall_estimate): the history
+/// errors of its sub-windows a quarter and a sixteenth as long, each with four quarters'
+/// worth of history inside the window. The variance of a sub-window's sum, S(w) = w^2 se(w)^2,
+/// grows like w^alpha: alpha is measured between the two, held to [0, 1] (0: regular motion,
+/// whose sums stay bounded; 1: independent parts) and carried on from a quarter to the whole.
+/// False with fewer than kWallPartsIntervals intervals or a wall that moved in the window.
+bool errors_from_parts(const std::vector<WallInterval>& intervals, std::size_t first,
+                       WallEstimate& e) {
+  if (intervals.size() - first < kWallPartsIntervals) return false;
+  const std::vector<WallInterval> window(intervals.begin() + long(first), intervals.end());
+  for (const WallInterval& i : window)
+    if (i.R != window.back().R) return false;
+  // A hair under a quarter, so that four of them fit in the window whatever the rounding.
+  const double quarter = e.window / kWallHistoryWindows * (1 - 1e-9);
+  WallEstimate q, s;
+  if (!errors_from_history(window, window.size() - 1, quarter, q) ||
+      !errors_from_history(window, window.size() - 1, quarter / 4, s))
+    return false;
+  // se(whole) = se(quarter) / 4 * sqrt(S(quarter) * 4^alpha / S(quarter))
+  //           = se(quarter) / 4 * g, g = sqrt(S(quarter) / S(sixteenth)) held to [1, 2].
+  auto carried = [](const std::optional<double>& quarter_se,
+                    const std::optional<double>& sixteenth_se) -> std::optional<double> {
+    if (!quarter_se || !sixteenth_se) return std::nullopt;
+    const double g = *sixteenth_se > 0 ? 4 * *quarter_se / *sixteenth_se : 2.0;
+    return *quarter_se / 4 * std::clamp(g, 1.0, 2.0);
+  };
+  e.P_stderr = carried(q.P_stderr, s.P_stderr);
+  e.T_stderr = carried(q.T_stderr, s.T_stderr);
+  if (!e.P_stderr) return false;
+  e.source = WallErrorSource::parts;
+  return true;
 }
 
 }  // namespace
@@ -173,7 +185,7 @@ WallEstimate wall_estimate(const std::vector<WallInterval>& intervals, double wi
   e.window = end - (intervals[first].t_end - intervals[first].duration);
   e.intervals = int(intervals.size() - first);
   if (window > 0 && errors_from_history(intervals, first, window, e)) return e;
-  errors_by_blocking(intervals, first, e);
+  errors_from_parts(intervals, first, e);
   return e;
 }
 
