@@ -12,7 +12,7 @@ declare -A groups=(
   # The web server of scripts/web.sh (web/serve/Caddyfile).
   [serve]="caddy"
   [webtest]="chromium"
-  [fuzz]="clang libclang-rt-14-dev libeigen3-dev nlohmann-json3-dev nodejs"
+  [fuzz]="clang libclang-rt-14-dev cmake git libeigen3-dev nlohmann-json3-dev nodejs"
 )
 
 wanted=()

@@ -13,11 +13,14 @@ seconds=${1:-60}
 scripts/deps.sh fuzz
 
 out=build-fuzz
-mkdir -p "$out/obj" "$out/corpus"
+mkdir -p "$out/obj" "$out/corpus" "$out/generated"
+# A run record says what made it (app/report/provenance.cpp), which names the build's version:
+# the header the CMake build writes, written here the same way.
+cmake -DSRC="$PWD" -DOUT="$out/generated/swarmlab_version.h" -P app/ensemble/program_version.cmake
 # Line tables are all a sanitizer's report needs (file and line of each frame), at a fraction
 # of full debug information's compile time.
 flags=(-std=c++17 -gline-tables-only -O1 -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined
-       -Icore/include -Icore/src -Iapp -I/usr/include/eigen3)
+       -Icore/include -Icore/src -Iapp -I"$out/generated" -I/usr/include/eigen3)
 launcher=()
 command -v ccache >/dev/null && launcher=(ccache)
 
@@ -49,12 +52,14 @@ done
 # shellcheck disable=SC2086
 stale "$out/obj/preset_fuzz.o" tests/fuzz/preset_fuzz.cpp $headers &&
   compile tests/fuzz/preset_fuzz.cpp "$out/obj/preset_fuzz.o"
-# The run-record reader: its two app files and the target.
+# The run-record reader: its three app files and the target.
 record_objects=()
-for src in app/ensemble/run_record.cpp app/ensemble/sha256.cpp tests/fuzz/run_record_fuzz.cpp; do
+for src in app/ensemble/run_record.cpp app/ensemble/sha256.cpp app/report/provenance.cpp \
+           tests/fuzz/run_record_fuzz.cpp; do
   obj="$out/obj/$(basename "${src%.cpp}").o"
   # shellcheck disable=SC2086
-  stale "$obj" "$src" app/ensemble/*.h $headers && compile "$src" "$obj"
+  stale "$obj" "$src" app/ensemble/*.h app/report/provenance.h "$out/generated/swarmlab_version.h" \
+    $headers && compile "$src" "$obj"
   record_objects+=("$obj")
 done
 while [ "$(jobs -rp | wc -l)" -gt 0 ]; do wait -n; done
