@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <stdlib.h>
+
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -15,6 +17,14 @@ using namespace swarmlab::ensemble;
 namespace fs = std::filesystem;
 
 namespace {
+
+/// A new folder of its own under /tmp: two suites running at once (two engineers on one
+/// machine) never share one.
+std::string merge_scratch_dir(const std::string& stem) {
+  std::string name = (fs::temp_directory_path() / (stem + ".XXXXXX")).string();
+  REQUIRE(::mkdtemp(name.data()) != nullptr);
+  return name;
+}
 
 /// An ideal gas (J = 0) of n particles at T = 1 in the unit ball, starting in equilibrium.
 swarm::Preset ideal_gas(long n, double duration) {
@@ -64,7 +74,7 @@ TEST_CASE("ensemble coverage: 95 % intervals of an ideal gas's pressure hold P V
   const long n = 100;
   const swarm::Preset gas = ideal_gas(n, 1.0);
   const double truth = double(n - 1) * 1.0 / swarm::sphere_volume(1.0);
-  const std::string dir = (fs::temp_directory_path() / "swarmlab-coverage-test").string();
+  const std::string dir = merge_scratch_dir("swarmlab-coverage-test");
   int held = 0;
   const int ensembles = 200;
   double ratio_sum = 0, mean_sum = 0, sd_sum = 0;
@@ -89,7 +99,7 @@ TEST_CASE("ensemble coverage: 95 % intervals of an ideal gas's pressure hold P V
 
 TEST_CASE("merge: the report's numbers are the runs' numbers, summarised") {
   const swarm::Preset gas = ideal_gas(60, 0.3);
-  const std::string dir = (fs::temp_directory_path() / "swarmlab-merge-test").string();
+  const std::string dir = merge_scratch_dir("swarmlab-merge-test");
   const nlohmann::json r = ensemble_report(gas, 5, 7, dir);
   CHECK(r["runs"] == 5);
   CHECK(r["planned"] == 5);

@@ -2,6 +2,8 @@
 
 #include <doctest/doctest.h>
 
+#include <stdlib.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -10,9 +12,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// A base preset in a new folder of its own (two suites running at once never share one).
 std::string base_dir() {
-  const fs::path dir = fs::temp_directory_path() / "swarmlab-sweep-test";
-  fs::create_directories(dir);
+  std::string name = (fs::temp_directory_path() / "swarmlab-sweep-test.XXXXXX").string();
+  REQUIRE(::mkdtemp(name.data()) != nullptr);
+  const fs::path dir = name;
   std::ofstream(dir / "base.json")
       << R"({"J": 1, "particles": {"count": 10, "position_radius": 0.5, "velocity": {"speed": 1}},
             "container": {"radius": 1}, "dt": 0.01, "duration": 1})";
@@ -35,6 +39,7 @@ TEST_CASE("sweep: a grid is every combination, the last key changing fastest") {
   CHECK(std::get<swarm::SwarmSpec>(r.sweep->points[4].preset.particles).count == 20);
   CHECK(is_sweep(R"({"preset": "b.json", "points": []})"));
   CHECK_FALSE(is_sweep(R"({"J": 1, "particles": []})"));
+  fs::remove_all(dir);
 }
 
 TEST_CASE("sweep: each wrong key or value is one message naming it") {
@@ -52,5 +57,12 @@ TEST_CASE("sweep: each wrong key or value is one message naming it") {
   CHECK(read_sweep(R"({"preset": "base.json", "grid": {"J": [1]}, "seeds": 0})", at).error ==
         "seeds: must be a whole number from 1 to 1,000,000");
   CHECK(read_sweep(R"({"preset": "base.json", "grid": {"J": [1]}, "colour": 1})", at).error.find("colour: unknown key") == 0);
+  // Control characters reach plan.json, runs.csv and the terminal: refused, named.
+  CHECK(read_sweep(R"({"preset": "base.json", "points": [{"name": "a\nb"}]})", at).error ==
+        "name: a value that holds a newline (byte 2)");
+  CHECK(read_sweep(R"({"preset": "base.json", "points": [{"J\u0085": 1}]})", at).error ==
+        "\"J\\u0085\": a key that holds a C1 control character (byte 2)");
+  CHECK(read_sweep(R"({"preset": "base\r.json", "points": [{"J": 1}]})", at).error ==
+        "preset: the base preset's file name holds a carriage return (byte 5)");
   fs::remove_all(dir);
 }
