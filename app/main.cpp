@@ -134,6 +134,9 @@ int main(int argc, char** argv) {
                    "Engine threads per run: any count (default: 1 when runs share the cores, "
                    "else every hardware thread; the results are the same)")
       ->check(CLI::Range(1, swarm::kMaxThreads));
+  ensemble_cmd->add_flag("--dt-check", ensemble.dt_check,
+                         "Run the same seeds again at dt / 2 (into OUT/dt-half) and report each "
+                         "quantity's shift with its 95 % interval beside the statistical one");
   plan_cmd->add_flag("--slurm", plan.slurm, "Also write DIR/array.sbatch, a Slurm job array");
   plan_cmd->add_option("--at-once", plan.slurm_at_once, "With --slurm: at most this many tasks at once")
       ->check(CLI::NonNegativeNumber);

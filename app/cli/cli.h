@@ -35,6 +35,7 @@ struct EnsembleOptions {
   int jobs = 0;  // runs at once; 0: every hardware thread
   int threads = 0;  // engine threads per run; 0: 1 when runs share the cores, else the default
   bool quiet = false;
+  bool dt_check = false;  // ensemble only: the same seeds again at dt / 2 (ensemble/dt_check.h)
   // plan only
   bool slurm = false;
   long slurm_at_once = 0;

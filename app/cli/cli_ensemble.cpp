@@ -5,10 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "cli/cli.h"
 #include "cli/progress_bar.h"
+#include "ensemble/dt_check.h"
 #include "ensemble/ensemble_member.h"
 #include "ensemble/ensemble_plan.h"
 #include "ensemble/merge.h"
@@ -45,13 +47,18 @@ std::string absolute_folder(const std::string& dir) {
   return out;
 }
 
-Prepared prepare(const EnsembleOptions& o, int jobs) {
+/// `half_dt`: the ensemble's twin for --dt-check, the preset at dt / 2 (ensemble/dt_check.h).
+Prepared prepare(const EnsembleOptions& o, int jobs, bool half_dt = false) {
   Prepared out;
   // Read once: the text is a sweep or a preset.
   const std::string text = read_text_file(o.preset_path, out.error);
   if (!out.error.empty()) return out;
   long seeds = o.seeds;
   std::vector<PlanPoint> points;
+  if (is_sweep(text) && o.dt_check) {
+    out.error = "--dt-check: checks a plain preset's ensemble, not a sweep's";
+    return out;
+  }
   if (is_sweep(text)) {
     SweepRead sweep = read_sweep(text, o.preset_path);
     if (!sweep.sweep) {
@@ -64,10 +71,18 @@ Prepared prepare(const EnsembleOptions& o, int jobs) {
       out.presets.push_back(std::move(p.preset));
     }
   } else {
-    const swarm::PresetParse parsed = swarm::parse_preset(text);
+    swarm::PresetParse parsed = swarm::parse_preset(text);
     if (!parsed.preset) {
       out.error = o.preset_path + ": " + parsed.error;
       return out;
+    }
+    if (half_dt) {
+      // Held to the same rules and limits as a preset read from a file.
+      parsed = swarm::parse_preset(swarm::preset_to_json(with_half_dt(*parsed.preset)));
+      if (!parsed.preset) {
+        out.error = "--dt-check: " + o.preset_path + " at dt / 2: " + parsed.error;
+        return out;
+      }
     }
     points.push_back({"{}", preset_hash(*parsed.preset)});
     out.presets.push_back(*parsed.preset);
@@ -176,10 +191,10 @@ int write_merge(const std::string& dir, const MergeOptions& o) {
 
 }  // namespace
 
-int ensemble_command(const EnsembleOptions& o) {
-  const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
-  const Prepared p = prepare(o, jobs);
-  if (!p.error.empty()) return fail(p.error);
+namespace {
+
+/// Runs what p's folder lacks (a killed ensemble resumes): 0, or 1 with the message written.
+int run_missing(const Prepared& p, const EnsembleOptions& o, int jobs) {
   // A killed ensemble resumes: whole runs are kept, a corrupted file is named and run again.
   const RunScan scan = scan_runs(p.dir, p.plan);
   if (!scan.mixed.empty()) return fail("runs of another ensemble in " + o.dir + ": " + scan.mixed);
@@ -231,6 +246,29 @@ int ensemble_command(const EnsembleOptions& o) {
   for (auto& t : pool) t.join();
   bar.finish();
   if (!first_error.empty()) return fail(first_error);
+  return 0;
+}
+
+}  // namespace
+
+int ensemble_command(const EnsembleOptions& o) {
+  const int jobs = o.jobs > 0 ? o.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+  const Prepared p = prepare(o, jobs);
+  if (!p.error.empty()) return fail(p.error);
+  // The twin at dt / 2 is prepared before anything runs, so that a preset that cannot be
+  // halved is refused at once.
+  EnsembleOptions twin = o;
+  twin.dir = p.dir + "/" + kDtHalfFolder;
+  std::optional<Prepared> half;
+  if (o.dt_check) {
+    half = prepare(twin, jobs, true);
+    if (!half->error.empty()) return fail(half->error);
+  }
+  if (const int failed = run_missing(p, o, jobs)) return failed;
+  if (half) {
+    if (!o.quiet) std::fprintf(stderr, "the same seeds at dt / 2, into %s\n", half->dir.c_str());
+    if (const int failed = run_missing(*half, twin, jobs)) return failed;
+  }
   MergeOptions m;
   m.quiet = o.quiet;
   return write_merge(p.dir, m);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "ensemble/dt_check.h"
 #include "files/text_file.h"
 #include "report/csv_field.h"
 #include "report/ensemble_figures.h"
@@ -441,6 +442,16 @@ MergeReport merge_runs(const std::string& dir, double relative_half_width) {
     report["preset_hash"] = only["preset_hash"];
     for (const char* key : {"equilibration_start", "quantities", "bands"})
       if (only.contains(key)) report[key] = only[key];
+    // The same seeds at dt / 2, when `ensemble --dt-check` ran them: the time step's systematic.
+    const DtCheck check = dt_check(dir, plan, only.value("quantities", json::object()));
+    if (!check.error.empty()) {
+      out.error = check.error;
+      return out;
+    }
+    if (!check.report.is_null()) {
+      report["dt_check"] = check.report;
+      out.table += "\n" + check.table;
+    }
   } else {
     report["points"] = point_reports;
   }
