@@ -1,11 +1,13 @@
 // Browser tests of export and of labels that stay true (issue 13): swarmlab.exportCsv()
 // downloads the samples with the columns of `swarmlab run --csv`; a preset opened from a link
-// is "edited" unless it is a shipped one as shipped; leaving the page asks only after an edit.
+// is "edited" unless it is a shipped one as shipped; leaving the page asks only after an edit;
+// a plot's exports say what made them.
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import * as harness from './harness.mjs';
+import { person } from './person.mjs';
 
 const { check, openApp, launchBrowser, runSuite, base64url, shipped, pageErrors, consoleErrors,
         cliPath } = harness;
@@ -94,6 +96,57 @@ async function main(url) {
   check('and its rows end at that time, not at the time reached',
         lastT <= shown * (1 + 1e-9) && shown - lastT <= interval * (1 + 1e-9),
         `last t ${lastT}, shown ${shown}, reached ${reached}, sampling interval ${interval}`);
+
+  // 6. A plot's Export SVG, CSV and PNG, pressed as a person does: each file says what made it
+  // (README, "Provenance"): this build's version, Emscripten, the browser, now, the seeds (the
+  // link's preset lists its particles: none).
+  const me = person(page, 'mouse');
+  // The version of the build that made the page (scripts/web.sh builds it in build-wasm/), as
+  // its `swarmlab --version` prints it.
+  const versionHeader = join(harness.root, 'build-wasm/app/generated/swarmlab_version.h');
+  const version = existsSync(versionHeader) ? (/SWARMLAB_VERSION "(.*)"/.exec(readFileSync(versionHeader, 'utf8')) || [])[1] : '';
+  const saved = async (label) => {
+    const [d] = await Promise.all([page.waitForEvent('download', { timeout: 15_000 }).catch(() => null),
+                                   me.press('button', label)]);
+    return d ? readFileSync(await d.path()) : null;
+  };
+  // '' when the lines say what they must, else what is wrong.
+  const madeBy = (lines) => {
+    const field = (key) => (lines.find((l) => l.startsWith(key + ': ')) || '').slice(key.length + 2);
+    const age = Math.abs(Date.now() - Date.parse(field('date')));
+    if (!version || !(lines[0] || '').startsWith(`made by swarmlab ${version} from commit ${version.split('-dirty-')[0]} `)) return `first line "${lines[0]}", the page's build ${version}`;
+    if (!field('compiler').startsWith('Emscripten ')) return `compiler "${field('compiler')}"`;
+    if (field('host') !== 'browser wasm32') return `host "${field('host')}"`;
+    if (!/^\d{4}-\d\d-\d\dT\d\d:\d\d:\d\dZ$/.test(field('date')) || !(age < 600_000)) return `date "${field('date')}"`;
+    if (field('seeds') !== 'none (the particles are listed)') return `seeds "${field('seeds')}"`;
+    return '';
+  };
+  const svg = await saved('Export SVG');
+  const parsed = svg && await page.evaluate((text) => {
+    const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
+    const meta = doc.querySelector('svg > metadata');
+    return { xml: !doc.querySelector('parsererror'), lines: meta ? meta.textContent.split('\n').filter(Boolean) : [] };
+  }, svg.toString('utf8'));
+  const svgProblem = parsed ? madeBy(parsed.lines) : 'no download';
+  check('Export SVG: well-formed XML whose <metadata> says what made it', parsed && parsed.xml && svgProblem === '', svgProblem);
+  const csv = await saved('Export CSV');
+  const csvLines = csv ? csv.toString('utf8').split('\n').filter(Boolean) : [];
+  const comments = csvLines.filter((l) => l.startsWith('# ')).map((l) => l.slice(2));
+  const csvProblem = madeBy(comments);
+  check('Export CSV: comment lines say what made it, then the panel,series,x,y table',
+        csvProblem === '' && csvLines[comments.length].startsWith('"panel","series",') &&
+        csvLines.slice(0, comments.length).every((l) => l.startsWith('# ')), csvProblem || csvLines[comments.length]);
+  const png = await saved('Export PNG');
+  let pngText = '';
+  for (let at = 8; png && at + 8 <= png.length; at += 12 + png.readUInt32BE(at)) {
+    const n = png.readUInt32BE(at);
+    if (png.toString('latin1', at + 4, at + 8) !== 'iTXt') continue;
+    const body = png.subarray(at + 8, at + 8 + n);
+    const end = body.indexOf(0);
+    if (body.toString('latin1', 0, end) === 'Comment') pngText = body.subarray(end + 5).toString('utf8');
+  }
+  const pngProblem = png ? madeBy(pngText.split('\n')) : 'no download';
+  check('Export PNG: an iTXt Comment says what made it', png && png.subarray(1, 4).toString() === 'PNG' && pngProblem === '', pngProblem);
 
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
