@@ -12,8 +12,8 @@
 #include "files/text_file.h"
 #include "report/csv_field.h"
 #include "report/ensemble_figures.h"
-#include "swarm/measure/confidence.h"
 #include "report/provenance.h"
+#include "swarm/measure/confidence.h"
 #include "swarm/measure/fit.h"
 #include "swarm/preset/ensemble_seed.h"
 #include "swarm/preset/printable_text.h"
@@ -368,6 +368,10 @@ MergeReport merge_runs(const std::string& dir, double relative_half_width) {
                  {"missing", scan.missing},
                  {"corrupted", corrupted},
                  {"failed", failed}};
+  // What made the merge; each run's own provenance stays in its record.
+  const report::Provenance made_by =
+      report::provenance_now({std::nullopt, plan.seed, plan.seeds});
+  report["provenance"] = report::provenance_json(made_by);
   char line[320];
   std::snprintf(line, sizeof line, "%zu of %ld runs merged (%zu missing, %zu corrupted, %zu failed)\n",
                 merged, plan.runs(), scan.missing.size(), scan.corrupted.size(), scan.failed.size());
@@ -421,10 +425,6 @@ MergeReport merge_runs(const std::string& dir, double relative_half_width) {
         const json v = values.contains(key) ? values[key] : json();
         out.csv += "," + (v.is_number()   ? report::csv_number_text(v.dump())
                           : v.is_string() ? report::csv_text(v.get<std::string>())
-  // What made the merge; each run's own provenance stays in its record.
-  const report::Provenance made_by =
-      report::provenance_now({std::nullopt, plan.seed, plan.seeds});
-  report["provenance"] = report::provenance_json(made_by);
                           : v.is_null()   ? report::csv_text("")
                                           : report::csv_text(v.dump()));
       }

@@ -88,6 +88,7 @@ std::string canonical_list(const char* name, const std::vector<double>& xs) {
 RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
   RunRecord r;
   r.id = id;
+  r.made_by = report::provenance_now({id.seed});
   r.failure = run.failure();
   const swarm::RunSummary s = run.summary();
   put(r, "energy_drift", s.energy_drift);
@@ -100,7 +101,6 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
     put(r, "KE_end", samples.back().KE);
   }
   if (run.plan().engine.container_radius && run.stages().empty()) {
-  r.made_by = report::provenance_now({id.seed});
     const swarm::WallTimeAverages a = swarm::wall_time_averages(swarm::wall_intervals(samples));
     r.equilibration_start = a.start;
     // The errors as the read-outs give them for a window without history before it: from the
@@ -147,6 +147,14 @@ std::string canonical_text(const RunRecord& r) {
   out += "perturbation " + canonical_number(r.id.perturbation) + "\n";
   out += "failure " + canonical_text_item(r.failure) + "\n";
   out += "equilibration_start " + canonical_number(r.equilibration_start) + "\n";
+  const report::Provenance& p = r.made_by;
+  out += "provenance " + canonical_text_item(p.version) + " " + canonical_text_item(p.commit) +
+         " " + (p.clean ? (*p.clean ? "true" : "false") : "null") + " " +
+         canonical_text_item(p.compiler) + " " + canonical_text_item(p.os) + " " +
+         canonical_text_item(p.machine) + " " + canonical_text_item(p.date) + "\n";
+  out += "provenance.seeds " + (p.seeds.seed ? std::to_string(*p.seeds.seed) : "-") + " " +
+         (p.seeds.base ? std::to_string(*p.seeds.base) : "-") + " " +
+         std::to_string(p.seeds.runs) + "\n";
   for (const auto& [name, v] : r.values)
     out += "value " + canonical_text_item(name) + " " + canonical_number(v.value) + " " +
            (v.se ? canonical_number(*v.se) : std::string("-")) + "\n";
@@ -165,14 +173,6 @@ std::string record_json(const RunRecord& r) {
     json x = {{"value", v.value}};
     if (v.se) x["se"] = *v.se;
     values[name] = x;
-  const report::Provenance& p = r.made_by;
-  out += "provenance " + canonical_text_item(p.version) + " " + canonical_text_item(p.commit) +
-         " " + (p.clean ? (*p.clean ? "true" : "false") : "null") + " " +
-         canonical_text_item(p.compiler) + " " + canonical_text_item(p.os) + " " +
-         canonical_text_item(p.machine) + " " + canonical_text_item(p.date) + "\n";
-  out += "provenance.seeds " + (p.seeds.seed ? std::to_string(*p.seeds.seed) : "-") + " " +
-         (p.seeds.base ? std::to_string(*p.seeds.base) : "-") + " " +
-         std::to_string(p.seeds.runs) + "\n";
   }
   json j = {{"format", kRunFormat},
             {"format_version", kRunFormatVersion},
@@ -183,6 +183,7 @@ std::string record_json(const RunRecord& r) {
             {"perturbation", r.id.perturbation},
             {"failure", r.failure},
             {"equilibration_start", r.equilibration_start},
+            {"provenance", report::provenance_json(r.made_by)},
             {"values", values},
             {"series", {{"t", r.t}, {"P", r.P}, {"T", r.T}, {"R", r.R}}},
             {"stages", {{"V", r.stage_V}, {"P", r.stage_P}, {"T", r.stage_T}}},
@@ -201,7 +202,6 @@ RecordRead parse_record(const std::string& text) {
     out.error = std::string("format: not \"") + kRunFormat + "\"";
     return out;
   }
-            {"provenance", report::provenance_json(r.made_by)},
   RunRecord r;
   std::string& e = out.error;
   int format_version = 0;
@@ -227,6 +227,11 @@ RecordRead parse_record(const std::string& text) {
   if (!read_number(j, "index", r.id.index, e) || !read_number(j, "perturbation", r.id.perturbation, e) ||
       !read_number(j, "equilibration_start", r.equilibration_start, e))
     return out;
+  const auto made_by = j.find("provenance");
+  const std::optional<report::Provenance> p =
+      report::provenance_from_json(made_by == j.end() ? json() : *made_by, e);
+  if (!p) return out;
+  r.made_by = *p;
   const auto values = j.find("values");
   if (values == j.end() || !values->is_object()) {
     e = "values: missing or not an object";
@@ -245,11 +250,6 @@ RecordRead parse_record(const std::string& text) {
       double se = 0;
       if (!read_number(v, "se", se, e, where)) return out;
       x.se = se;
-  const auto made_by = j.find("provenance");
-  const std::optional<report::Provenance> p =
-      report::provenance_from_json(made_by == j.end() ? json() : *made_by, e);
-  if (!p) return out;
-  r.made_by = *p;
     }
     r.values[name] = x;
   }
