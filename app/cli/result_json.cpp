@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "swarm/measure/speed_distribution.h"
+#include "swarm/measure/wall_time_average.h"
 
 namespace swarmlab {
 namespace {
@@ -29,6 +30,33 @@ json speeds_json(const swarm::System& final_state) {
            "(T estimated from the same speeds: conservative)"}};
 }
 
+/// The virial balance over the window wall_time_averages picks (swarm/measure/virial_balance.h):
+/// whether the run's P is the equilibrium's, or the run is too short to claim it.
+json virial_json(const swarm::Run& run) {
+  if (!swarm::virial_balance_applies(run.plan().engine) || !run.stages().empty())
+    return "not applicable: outside forces, a floor, a moving or hot wall, hard spheres, an "
+           "expansion or no container add terms of their own";
+  const auto& samples = run.samples();
+  const swarm::WallTimeAverages a =
+      swarm::wall_time_averages(swarm::wall_intervals(samples), swarm::virial_intervals(samples));
+  if (!a.virial) return "too few samples";
+  const swarm::VirialBalance& b = *a.virial;
+  return {{"equilibration_start", a.start},
+          {"from", b.start},
+          {"to", b.end},
+          {"3PV", b.wall},
+          {"2KE-2U", b.kinetic},
+          {"G_start", b.G_start},
+          {"G_end", b.G_end},
+          {"imbalance", b.imbalance},
+          {"imbalance_se", b.error},
+          {"residual", b.residual},
+          {"relative_imbalance", b.relative()},
+          {"holds", b.holds},
+          {"verdict", b.holds ? "in equilibrium: the balance holds within 2 standard errors"
+                              : "too short to claim equilibrium: P is off by relative_imbalance"}};
+}
+
 json summary_json(const swarm::RunSummary& s) {
   return {{"M", s.M},
           {"omega", s.omega},
@@ -53,6 +81,7 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs,
   j["preset"] = json::parse(swarm::preset_to_json(preset));
   j["summary"] = summary_json(run.summary());
   j["summary"].update(speeds_json(run.engine().system()));
+  j["summary"]["virial"] = virial_json(run);
   json samples = json::array();
   for (const swarm::Sample& x : run.samples())
     samples.push_back({{"t", x.t},

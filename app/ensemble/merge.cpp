@@ -287,6 +287,57 @@ json point_quantities(const PointRuns& p, double relative_half_width, std::strin
   return quantities;
 }
 
+/// Whether the point's runs were in equilibrium, by the virial balance (virial_balance.h):
+/// which runs are too short to claim it (their own balance fails within their own error), and
+/// whether the runs' mean imbalance is distinguishable from 0 (the ensemble's intervals are
+/// sqrt(runs) narrower than a run's, so a memory of the start that one run's error hides can
+/// still lie outside the ensemble's interval). Empty where the balance does not apply.
+json point_equilibrium(const PointRuns& p, std::string& table) {
+  const auto holds = p.values.find("virial.holds");
+  const auto relative = p.values.find("virial.relative_imbalance");
+  if (holds == p.values.end() || relative == p.values.end()) return json();
+  json too_short = json::array();
+  std::vector<double> offsets;
+  double worst = 0;
+  for (std::size_t i = 0; i < p.indices.size(); ++i) {
+    const double x = relative->second[i];
+    if (!std::isfinite(x)) continue;
+    offsets.push_back(x);
+    if (holds->second[i] == 0) {
+      too_short.push_back({{"index", p.indices[i]}, {"relative_imbalance", x}});
+      if (std::abs(x) > std::abs(worst)) worst = x;
+    }
+  }
+  const swarm::MeanInterval m = swarm::mean_interval(offsets);
+  const bool ensemble_balances = !m.lo || (*m.lo <= 0 && 0 <= *m.hi);
+  json out = {{"judged_by", "the virial balance: mean(3PV) - mean(2KE - 2U) = -(G(t1) - G(t0)) / "
+                            "(t1 - t0) over each run's averaging window"},
+              {"runs_judged", offsets.size()},
+              {"runs_too_short", too_short},
+              {"relative_imbalance", interval_json(m, "virial.relative_imbalance")},
+              {"ensemble_balances", ensemble_balances}};
+  char line[400];
+  if (!too_short.empty()) {
+    std::snprintf(line, sizeof line,
+                  "equilibrium: %zu of %zu runs too short to claim it (the virial balance is off "
+                  "by up to %.2g %% of 3PV, beyond their errors)\n",
+                  too_short.size(), offsets.size(), 100 * worst);
+    table += line;
+  }
+  if (!ensemble_balances) {
+    std::snprintf(line, sizeof line,
+                  "equilibrium: not shown at this ensemble's precision: the runs' mean virial "
+                  "imbalance is %.2g %% of 3PV [%.2g, %.2g] (95 %%), so P's interval carries the "
+                  "runs' memory of their start; run longer\n",
+                  100 * m.mean, 100 * *m.lo, 100 * *m.hi);
+    table += line;
+  }
+  out["message"] = too_short.empty() && ensemble_balances
+                       ? "in equilibrium: the virial balance holds in every run and over the runs"
+                       : "too short to claim equilibrium: see runs_too_short and relative_imbalance";
+  return out;
+}
+
 json point_bands(const PointRuns& p) {
   json bands = json::object();
   if (p.bands_agree && !p.P_t.x.empty())
@@ -415,6 +466,7 @@ MergeReport merge_runs(const std::string& dir, double relative_half_width) {
     r["equilibration_start"] =
         interval_json(swarm::mean_interval(runs.starts), "equilibration_start");
     r["quantities"] = point_quantities(runs, relative_half_width, out.table);
+    if (json e = point_equilibrium(runs, out.table); !e.is_null()) r["equilibrium"] = e;
     r["bands"] = point_bands(runs);
     point_reports.push_back(r);
     for (std::size_t i = 0; i < runs.indices.size(); ++i) {
@@ -440,7 +492,7 @@ MergeReport merge_runs(const std::string& dir, double relative_half_width) {
     // A plain ensemble: its one point's numbers at the top level.
     const json& only = point_reports[0];
     report["preset_hash"] = only["preset_hash"];
-    for (const char* key : {"equilibration_start", "quantities", "bands"})
+    for (const char* key : {"equilibration_start", "quantities", "equilibrium", "bands"})
       if (only.contains(key)) report[key] = only[key];
     // The same seeds at dt / 2, when `ensemble --dt-check` ran them: the time step's systematic.
     const DtCheck check = dt_check(dir, plan, only.value("quantities", json::object()));

@@ -33,6 +33,18 @@ void fill_series(RunRecord& r, const std::vector<swarm::Sample>& samples) {
   }
 }
 
+/// The virial balance over the averaging window (virial_balance.h), as "virial.*" values.
+void put_virial_balance(RunRecord& r, const swarm::VirialBalance& b) {
+  put(r, "virial.3PV", b.wall);
+  put(r, "virial.2KE-2U", b.kinetic);
+  put(r, "virial.G_start", b.G_start);
+  put(r, "virial.G_end", b.G_end);
+  put(r, "virial.imbalance", b.imbalance, b.error);
+  put(r, "virial.residual", b.residual);
+  put(r, "virial.relative_imbalance", b.relative());
+  put(r, "virial.holds", b.holds ? 1.0 : 0.0);
+}
+
 /// A number at j[key]; `where` prefixes the key in the message ("values.P.").
 template <class T>
 bool read_number(const json& j, const char* key, T& out, std::string& error,
@@ -101,8 +113,12 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
     put(r, "KE_end", samples.back().KE);
   }
   if (run.plan().engine.container_radius && run.stages().empty()) {
-    const swarm::WallTimeAverages a = swarm::wall_time_averages(swarm::wall_intervals(samples));
+    const bool judged = swarm::virial_balance_applies(run.plan().engine);
+    const swarm::WallTimeAverages a = swarm::wall_time_averages(
+        swarm::wall_intervals(samples),
+        judged ? swarm::virial_intervals(samples) : std::vector<swarm::VirialInterval>{});
     r.equilibration_start = a.start;
+    if (a.virial) put_virial_balance(r, *a.virial);
     // The errors as the read-outs give them for a window without history before it: from the
     // window's own parts (thermometry.h, wall_estimate), about this run's long-run value.
     // Blocking overstated regular motion's 3.5x. A window too short for its parts gives none:

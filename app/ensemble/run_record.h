@@ -52,7 +52,13 @@ struct RunRecord {
   /// with outside work or heat (EngineConfig::exchanges_energy) "work", "heat" (the books
   /// at the end), "KE_start" and "KE_end",
   /// and for expansions "stage<k>.P", "stage<k>.T" (k from 1), "fit.P_V", "fit.T_V",
-  /// "fit.P_T" (each run's fitted exponent) and "r2.P_V", "r2.T_V", "r2.P_T" (their R^2).
+  /// "fit.P_T" (each run's fitted exponent) and "r2.P_V", "r2.T_V", "r2.P_T" (their R^2),
+  /// and where the virial balance applies (swarm::virial_balance_applies) its terms over P's
+  /// window: "virial.3PV", "virial.2KE-2U", "virial.G_start", "virial.G_end",
+  /// "virial.imbalance" (-(G_end - G_start) / the window; se: its error), "virial.residual"
+  /// (3PV - (2KE - 2U) - imbalance: the collision scheme's offset), "virial.relative_imbalance"
+  /// (over 3PV: how far P is off) and "virial.holds" (1, or 0: the run is too short to claim
+  /// equilibrium).
   std::map<std::string, RunValue> values;
   /// The wall series, at most kSeriesPoints; T is NAN (null in the file) where nothing hit.
   std::vector<double> t, P, T, R;

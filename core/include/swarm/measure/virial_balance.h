@@ -17,11 +17,11 @@
 /// collision scheme reflects at the start of the step, at |r| = R - s with s between 0 and the
 /// step's radial travel, so its wall virial is sum (R - s) |dp|, while 3 P V (P over the area
 /// at R) books R |dp|: 3 P V exceeds the wall's virial by about <v_r> dt / (2 R) of itself
-/// (measured in virial_balance_test: 5e-4 of 3PV at dt = 0.001 and speeds up to 1.5; over
-/// 12 runs of 40 time units at dt = 0.0005 it was 2.6e-4, outside their mean imbalance's
-/// interval, where it would read as a memory the runs do not have). That is the scheme's dt
-/// systematic, not equilibrium's; the residual shows it, with the trapezoid rule's error in
-/// 2 KE - 2 U.
+/// (measured in virial_balance_test: 5e-4 of 3PV at dt = 0.001 and speeds up to 1.5; 1.7e-4
+/// in 12 runs of 40 time units at dt = 0.0005 and speeds up to 1, where counted into the
+/// imbalance it made the runs' mean 2.6e-4 [0.3e-4, 4.9e-4], a memory they do not have).
+/// That is the scheme's dt systematic, not equilibrium's; the residual shows it, with the
+/// trapezoid rule's error in 2 KE - 2 U.
 
 #include <optional>
 #include <vector>
