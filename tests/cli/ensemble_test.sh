@@ -464,5 +464,25 @@ PY
 else
   bad "held-out ensemble failed"
 fi
+# The same start run ten times as long (300 particles to keep it cheap: 12 x 80,000 steps, 2 s):
+# no run is too short, the runs' mean imbalance is 0 within its interval, and P's interval holds
+# each run's exact 2 KE / 3V (2KE - 2U is 2 KE here, as checked against Python above).
+long='{"version": 1, "name": "held-out gas, long", "J": 0, "particles": {"count": 300, "position_radius": 0.9, "velocity": {"speed": 1}, "seed": 1}, "container": {"radius": 1}, "dt": 0.0005, "duration": 40}'
+printf '%s' "$long" >"$work/held-long.json"
+"$bin" ensemble "$work/held-long.json" --seeds 12 --out "$work/held-long" --jobs 2 --quiet &&
+  python3 - "$work/held-long" <<'PY' && ok || bad "a long run flagged as out of equilibrium, or P's interval misses 2 KE / 3V"
+import json, math, sys
+d = sys.argv[1]
+r = json.load(open(d + "/report.json"))
+V = 4 / 3 * math.pi
+exact = [json.load(open(f"{d}/runs/{k}.json"))["values"]["virial.2KE-2U"]["value"] / (3 * V) for k in range(12)]
+P_exact = sum(exact) / 12
+lo, hi = r["quantities"]["P"]["ci95"]
+e = r["equilibrium"]
+print(f"long: P = {r['quantities']['P']['mean']:.3f} [{lo:.3f}, {hi:.3f}], 2 KE / 3V = {P_exact:.3f}; "
+      f"mean imbalance {100 * e['relative_imbalance']['mean']:.3f} % {[round(100 * x, 3) for x in e['relative_imbalance']['ci95']]}")
+assert e["runs_judged"] == 12 and e["runs_too_short"] == [] and e["ensemble_balances"], e
+assert lo <= P_exact <= hi
+PY
 
 finish
