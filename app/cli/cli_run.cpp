@@ -10,6 +10,8 @@
 #include "ensemble/ensemble_plan.h"
 #include "files/atomic_file.h"
 #include "files/preset_file.h"
+#include "files/text_file.h"
+#include "lessons/lesson.h"
 #include "report/plot_files.h"
 #include "report/provenance.h"
 #include "report/report.h"
@@ -114,7 +116,18 @@ void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
 int run_command(const RunOptions& options) {
   const swarm::PresetParse parsed = read_preset_file(options.preset_path);
   if (!parsed.preset) {
-    std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
+    // A lesson where a preset belongs fails the preset's rules at its first key ("lesson:
+    // unknown key"): say what the file is and what opens it instead.
+    std::string unreadable;
+    const std::string text = read_text_file(options.preset_path, unreadable);
+    if (unreadable.empty() && looks_like_lesson(text))
+      std::fprintf(stderr,
+                   "error: %s: a lesson, not a preset: open it in the app (Open preset..., or drop "
+                   "it on the window) or check it with swarmlab validate and swarmlab "
+                   "check-lesson\n",
+                   options.preset_path.c_str());
+    else
+      std::fprintf(stderr, "error: %s\n", parsed.error.c_str());
     return 1;
   }
   // Every output path is checked before the run: a device, a FIFO, a directory, a missing

@@ -5,6 +5,7 @@
 
 #include "ensemble/ensemble_plan.h"
 #include "files/text_file.h"
+#include "swarm/preset/strict_json.h"
 #include "swarm/preset/printable_text.h"
 
 namespace swarmlab::ensemble {
@@ -54,9 +55,18 @@ bool is_sweep(const std::string& text) {
 
 SweepRead read_sweep(const std::string& text, const std::string& sweep_path) {
   SweepRead out;
-  const json j = json::parse(text, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) {
-    out.error = "sweep: not valid JSON";
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    out.error = "sweep: not valid JSON at " + swarm::json_syntax_error(e, text);
+    return out;
+  } catch (const json::exception& e) {
+    out.error = "sweep: " + swarm::json_error_text(e);
+    return out;
+  }
+  if (!j.is_object()) {
+    out.error = "sweep: must be a JSON object ({\"preset\": ..., \"grid\" or \"points\": ...})";
     return out;
   }
   for (const auto& [key, v] : j.items())

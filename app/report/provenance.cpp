@@ -41,6 +41,14 @@ constexpr const char* kCompiler =
 /// comments and XML, where a line break or a control character would end or break them.
 std::string one_line(const std::string& text) { return swarm::printable(text, 200); }
 
+/// kCompiler without the space clang's __clang_version__ ends with ("clang 14.0.6 )").
+std::string compiler_name() {
+  std::string name = kCompiler;
+  for (std::size_t at; (at = name.find(" )")) != std::string::npos;) name.erase(at, 1);
+  while (!name.empty() && name.back() == ' ') name.pop_back();
+  return name;
+}
+
 struct Host {
   std::string os, machine;
 };
@@ -118,7 +126,7 @@ Provenance provenance_now(const Seeds& seeds) {
   const std::size_t dirty = p.version.find(kDirty);
   p.commit = p.version.substr(0, dirty);
   if (p.commit != "unknown") p.clean = dirty == std::string::npos;
-  p.compiler = one_line(kCompiler);
+  p.compiler = one_line(compiler_name());
   const Host h = host();
   p.os = h.os;
   p.machine = h.machine;

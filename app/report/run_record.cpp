@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "files/text_file.h"
+#include "swarm/preset/strict_json.h"
 
 namespace swarmlab::report {
 namespace {
@@ -89,9 +90,11 @@ RecordRead read_result_file(const std::string& path) {
       if (!r.made_by) return {std::nullopt, path + ": " + error};
     }
     return {std::move(r), {}};
+  } catch (const json::parse_error& e) {
+    return {std::nullopt, path + ": not valid JSON at " + swarm::json_syntax_error(e, text)};
   } catch (const json::exception& e) {
-    return {std::nullopt,
-            path + ": not a RESULT.json from swarmlab run --out (" + std::string(e.what()) + ")"};
+    return {std::nullopt, path + ": not a RESULT.json from swarmlab run --out (" +
+                              swarm::json_error_text(e) + ")"};
   }
 }
 

@@ -150,6 +150,11 @@ refused changed "--preset-hash: the preset has changed since the plan" \
   "$bin" run "$work/gas.json" --seed 1 --run-index 0 --preset-hash 0123456789abcdef --record "$work/r.json"
 refused other-plan "holds another ensemble (12 seeds)" "$bin" ensemble "$work/long.json" --seeds 5 --out "$work/killed"
 
+# A sweep cut short (read as a preset: it cannot say it is a sweep): where it breaks, in one line.
+printf '{"preset": "gas.json", "grid": {' >"$work/cut-sweep.json"
+"$bin" ensemble "$work/cut-sweep.json" --out "$work/cut-sweep" --quiet 2>"$work/stderr" && bad "a cut sweep: exit 0" ||
+  { grep -q "not valid JSON at line 1, column [0-9]*: " "$work/stderr" && [ ! -e "$work/cut-sweep" ] && ok ||
+    bad "cut sweep: $(cat "$work/stderr")"; }
 # A sweep: a grid over two keys of the base preset, its points' values in the report and in
 # runs.csv, the same seeds at every point, and the same runs through the manifest.
 printf '{"preset": "gas.json", "grid": {"particles.count": [100, 300], "container.radius": [1.0, 1.5]}, "seeds": 3}' >"$work/sweep.json"

@@ -67,6 +67,16 @@ done
   { grep -q "nope.json: cannot open the file" "$work/stderr" && ok || bad "report missing: $(cat "$work/stderr")"; }
 "$bin" report "$presets/fig1-four-masses.json" --plots "$work/x" 2>"$work/stderr" && bad "report of a preset: exit 0" ||
   { grep -q "not a RESULT.json" "$work/stderr" && ok || bad "report preset: $(cat "$work/stderr")"; }
+# A RESULT.json cut short: where it breaks, in one line, without nlohmann's exception code.
+"$bin" run "$presets/fig1-four-masses.json" --out "$work/whole.json" --quiet && head -c 300 "$work/whole.json" >"$work/cut.json"
+"$bin" report "$work/cut.json" --plots "$work/x" 2>"$work/stderr" && bad "report of a cut RESULT.json: exit 0" ||
+  { grep -q "cut.json: not valid JSON at line [0-9]*, column [0-9]*: " "$work/stderr" && ! grep -q "json.exception" "$work/stderr" &&
+    [ "$(wc -l <"$work/stderr")" -eq 1 ] && ok || bad "report cut: $(cat "$work/stderr")"; }
+# A lesson given to run: said to be a lesson, with what opens it (not "lesson: unknown key").
+"$bin" run "$presets/../lessons/01-one-period.json" --out "$work/lesson-run.json" 2>"$work/stderr" &&
+  bad "run of a lesson: exit 0" ||
+  { grep -q "01-one-period.json: a lesson, not a preset: open it in the app" "$work/stderr" &&
+    [ "$(wc -l <"$work/stderr")" -eq 1 ] && [ ! -e "$work/lesson-run.json" ] && ok || bad "run lesson: $(cat "$work/stderr")"; }
 "$bin" run "$presets/fig1-four-masses.json" --png 2>/dev/null && bad "--png without --plots accepted" || ok
 "$bin" run --help | grep -q -- --plots && ok || bad "run --help lacks --plots"
 
