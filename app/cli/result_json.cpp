@@ -78,6 +78,7 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs,
                         const report::Provenance& made_by) {
   swarm::Run& run = runs.primary();
   json j;
+  j["provenance"] = report::provenance_json(made_by);
   j["preset"] = json::parse(swarm::preset_to_json(preset));
   j["summary"] = summary_json(run.summary());
   j["summary"].update(speeds_json(run.engine().system()));
@@ -107,7 +108,6 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs,
     const swarm::StageFits f = run.fits();
     j["fits"] = {{"P_V", fit_json(f.P_V)}, {"T_V", fit_json(f.T_V)}, {"P_T", fit_json(f.P_T)}};
   }
-  j["provenance"] = report::provenance_json(made_by);
   if (!runs.tracks().empty()) {
     json comparisons = json::array();
     for (const auto& track : runs.tracks()) {

@@ -43,11 +43,11 @@ struct RunIdentity {
 
 struct RunRecord {
   RunIdentity id;
-  std::string failure;  ///< "" for a finished run; the reason a run stopped otherwise
-  double equilibration_start = 0;  ///< time from which P and T are averaged
   /// Who ran it, where and when (its seeds: {id.seed}); inside the digest, so that an edited
   /// record cannot pass for one made elsewhere or at another time.
   report::Provenance made_by;
+  std::string failure;  ///< "" for a finished run; the reason a run stopped otherwise
+  double equilibration_start = 0;  ///< time from which P and T are averaged
   /// "P", "T" (time averages after the equilibration start), "energy_drift", "wall_hits",
   /// with outside work or heat (EngineConfig::exchanges_energy) "work", "heat" (the books
   /// at the end), "KE_start" and "KE_end",
@@ -75,6 +75,9 @@ std::string record_json(const RunRecord& r);
 ///   swarmlab ensemble run 2
 ///   swarmlab TEXT / preset_hash TEXT / index INT / seed INT / perturbation NUM /
 ///   failure TEXT / equilibration_start NUM
+///   provenance TEXT TEXT CLEAN TEXT TEXT TEXT TEXT   (version, commit, clean, compiler,
+///   host.os, host.machine, date; CLEAN is true, false or null)
+///   provenance.seeds INT-or-- INT-or-- INT   (seeds.seed, seeds.base, seeds.runs or 0)
 ///   value TEXT NUM NUM-or--   (each of "values": name, value, se; names in byte order)
 ///   series.t LIST / series.P LIST / series.T LIST / series.R LIST /
 ///   stages.V LIST / stages.P LIST / stages.T LIST
@@ -83,9 +86,6 @@ std::string record_json(const RunRecord& r);
 /// or "null" for a number that is not finite (JSON's null), and LIST is the count followed by
 /// " NUM" per element. Items on one line are separated by one space.
 std::string canonical_text(const RunRecord& r);
-///   provenance TEXT TEXT CLEAN TEXT TEXT TEXT TEXT   (version, commit, clean, compiler,
-///   host.os, host.machine, date; CLEAN is true, false or null)
-///   provenance.seeds INT-or-- INT-or-- INT   (seeds.seed, seeds.base, seeds.runs or 0)
 /// "sha256:" and the SHA-256 (64 lowercase hex digits) of canonical_text(r): the record's
 /// "digest".
 std::string record_digest(const RunRecord& r);
