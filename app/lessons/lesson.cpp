@@ -10,6 +10,7 @@
 #include "i18n/printed.h"
 #include "i18n/translator.h"
 #include "lessons/device_words.h"
+#include "lessons/field_rule.h"
 #include "swarm/preset/printable_text.h"
 #include "swarm/preset/strict_json.h"
 
@@ -26,17 +27,9 @@ constexpr std::size_t kMaxOptions = 8;
 /// A step's run may be continued to at most this time (a class period at any speed).
 constexpr double kMaxRunUntil = 1e6;
 
-struct Invalid {
-  std::string message;
-};
-
-[[noreturn]] void fail(const std::string& field, const std::string& rule) {
-  throw Invalid{field + ": " + rule};
-}
-
-void require(bool ok, const std::string& field, const std::string& rule) {
-  if (!ok) fail(field, rule);
-}
+using field_rule::fail;
+using field_rule::require;
+using Invalid = field_rule::Broken;
 
 std::string format(double x) {
   char text[32];

@@ -5,12 +5,13 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "lessons/field_rule.h"
 #include "swarm/measure/confidence.h"
 #include "swarm/preset/printable_text.h"
 
 namespace swarmlab {
-// Named, not anonymous: the unity build compiles this file with lesson.cpp, whose helpers
-// have the same names.
+// Named, not anonymous: the unity build compiles this file with lesson.cpp, whose own helpers
+// may share names with these.
 namespace claim_reading {
 
 using json = nlohmann::json;
@@ -18,17 +19,9 @@ using json = nlohmann::json;
 constexpr std::size_t kMaxClaims = 8;
 constexpr int kMaxSeeds = 64;
 
-struct Invalid {
-  std::string message;
-};
-
-[[noreturn]] void fail(const std::string& field, const std::string& rule) {
-  throw Invalid{field + ": " + rule};
-}
-
-void require(bool ok, const std::string& field, const std::string& rule) {
-  if (!ok) fail(field, rule);
-}
+using field_rule::fail;
+using field_rule::require;
+using Invalid = field_rule::Broken;
 
 /// Refuses keys a claim's object does not know.
 void known_keys(const json& j, const std::string& path, std::initializer_list<const char*> allowed) {
