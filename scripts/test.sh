@@ -4,9 +4,10 @@
 #                            Emscripten, then the doctest suite natively and under node, the CLI
 #                            as a process, the desktop window under Xvfb, native == wasm, the
 #                            browser suites, Lighthouse and axe-core and the walkthroughs in
-#                            headless Chromium, and a minute of fuzzing. About 18 minutes on a
-#                            fresh clone of a 2-core machine (1098 s, 2026-11-28, both cores 97 %
-#                            busy: what is left to cut is work, not waiting).
+#                            headless Chromium, and fuzzing (scripts/fuzz.sh 60: its four targets
+#                            take 100 s). About 34 minutes on a fresh clone of a 2-core machine
+#                            (2055 s, 2026-12-07, both cores 98 % busy; the walkthroughs 934 s of
+#                            it: what is left to cut is work, not waiting).
 #   scripts/test.sh --quick  before a commit: the doctest suite, the CLI tests and one browser
 #                            smoke test, under 3 minutes once built.
 # Installs what is missing first. Each stage runs through ctest's labels (unit, cli, desktop,
@@ -111,7 +112,7 @@ native_lane() {
     tests/wasm/maxwell-repulsive.json assets/presets/fig4-equilibration.json \
     assets/presets/fig1-four-masses.json assets/presets/euler-vs-euler-cromer.json \
     tests/wasm/gravity-wall.json tests/wasm/gravity-floor.json
-  stage "fuzzing, a minute (scripts/fuzz.sh, ctest -L fuzz)" nice -n 10 scripts/fuzz.sh 60
+  stage "fuzzing, four targets (scripts/fuzz.sh 60, ctest -L fuzz)" nice -n 10 scripts/fuzz.sh 60
   # What ctest's web_audit runs, outside ctest: the wasm lane's ctest runs in build/ meanwhile.
   stage "Lighthouse and axe-core on the page (node tests/web/audit.mjs, ctest -L audit)" \
     nice -n 10 node tests/web/audit.mjs
