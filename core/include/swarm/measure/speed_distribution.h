@@ -51,7 +51,7 @@ SpeedHistogram speed_histogram(const std::vector<double>& scaled, int bins, doub
 struct SpeedCheck {
   double T = 0;
   std::size_t n = 0;
-  double ks_distance = 0;  ///< sqrt(n) ks_distance < 1.63: Maxwellian at the 1 % level
+  double ks_distance = 0;  ///< the KS distance; judge it by maxwellian_p (finite-n correct)
   /// ks_p_value of ks_distance: below 0.01, the speeds are not Maxwellian at the 1 % level
   /// (and the wall's T is then not the kinetic T: README, "What T means").
   double maxwellian_p = 1;
