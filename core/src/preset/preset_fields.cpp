@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string_view>
 #include <utility>
 
 #include "swarm/preset/printable_text.h"
@@ -37,13 +38,10 @@ Fields::Fields(const json& j, std::string path, std::initializer_list<const char
     : j_(j), path_(std::move(path)) {
   if (!j.is_object()) fail(path_.empty() ? "preset" : path_, "must be a JSON object");
   for (const auto& [key, value] : j.items()) {
-    bool known = false;
+    if (std::find(allowed.begin(), allowed.end(), std::string_view(key)) != allowed.end()) continue;
     std::string list;
-    for (const char* a : allowed) {
-      known = known || key == a;
-      list += (list.empty() ? "" : ", ") + std::string(a);
-    }
-    if (!known) fail(join(path_, printable(key)), "unknown key (allowed here: " + list + ")");
+    for (const char* a : allowed) list += (list.empty() ? "" : ", ") + std::string(a);
+    fail(join(path_, printable(key)), "unknown key (allowed here: " + list + ")");
   }
 }
 
@@ -51,11 +49,15 @@ std::string Fields::path(const char* key) const { return join(path_, key); }
 
 double Fields::number(const char* key) const {
   if (!has(key)) fail(path(key), "missing (a number is required)");
-  return number_value(at(key), path(key));
+  return number(key, 0.0);
 }
 
 double Fields::number(const char* key, double fallback) const {
-  return has(key) ? number_value(at(key), path(key)) : fallback;
+  if (!has(key)) return fallback;
+  // The path is built only for a refusal: a list of particles reads millions of numbers.
+  const json& v = at(key);
+  if (v.is_number() && std::isfinite(v.get<double>())) return v.get<double>();
+  return number_value(v, path(key));
 }
 
 std::int64_t Fields::integer(const char* key, std::int64_t lo, std::int64_t hi) const {

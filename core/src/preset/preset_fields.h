@@ -18,6 +18,8 @@ struct Invalid {
 };
 
 [[noreturn]] void fail(const std::string& field, const std::string& rule);
+/// Its message is built whether or not the rule holds: in a loop over the particles, where a
+/// preset may list millions, write `if (!ok) fail(...)` instead.
 void require(bool ok, const std::string& field, const std::string& rule);
 
 /// A number as the messages print it (ostream's default, 6 significant digits).

@@ -39,11 +39,20 @@ constexpr double kMaxSteps = 1e9;
 
 // [SECTION] Particles: a list or a generator -----------------------------------------------
 
-Vec3 vector3(const json& v, const std::string& path) {
-  if (!v.is_array() || v.size() != 3) fail(path, "must be an array of 3 numbers [x, y, z]");
-  return {Fields::number_value(v[0], path + "[0]"), Fields::number_value(v[1], path + "[1]"),
-          Fields::number_value(v[2], path + "[2]")};
+// `path` only names a refusal; it is asked for then, since a list may hold millions of vectors.
+template <class Path>
+Vec3 vector3(const json& v, const Path& path) {
+  if (!v.is_array() || v.size() != 3) fail(path(), "must be an array of 3 numbers [x, y, z]");
+  Vec3 out;
+  for (int k = 0; k < 3; ++k) {
+    const json& x = v[std::size_t(k)];
+    out[k] = x.is_number() ? x.get<double>() : 0.0;
+    if (!x.is_number() || !std::isfinite(out[k]))
+      Fields::number_value(x, path() + "[" + std::to_string(k) + "]");
+  }
+  return out;
 }
+
 
 std::vector<Particle> particle_list(const json& list) {
   require(!list.empty(), "particles", "must hold at least one particle");
@@ -52,15 +61,14 @@ std::vector<Particle> particle_list(const json& list) {
   std::vector<Particle> out;
   out.reserve(list.size());
   for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string path = "particles[" + std::to_string(i) + "]";
-    const Fields f(list[i], path, {"m", "r", "v"});
+    const Fields f(list[i], "particles[" + std::to_string(i) + "]", {"m", "r", "v"});
     Particle p;
     p.m = f.number("m");
-    require(p.m > 0, f.path("m"), "must be > 0");
+    if (!(p.m > 0)) fail(f.path("m"), "must be > 0");
     if (!f.has("r")) fail(f.path("r"), "missing (an array of 3 numbers is required)");
     if (!f.has("v")) fail(f.path("v"), "missing (an array of 3 numbers is required)");
-    p.r = vector3(f.at("r"), f.path("r"));
-    p.v = vector3(f.at("v"), f.path("v"));
+    p.r = vector3(f.at("r"), [&] { return f.path("r"); });
+    p.v = vector3(f.at("v"), [&] { return f.path("v"); });
     out.push_back(p);
   }
   return out;
@@ -108,7 +116,7 @@ SwarmSpec swarm_spec(const json& j) {
 
 void parse_forces(const Fields& f, Preset& p) {
   if (f.has("gravity")) {
-    p.gravity = vector3(f.at("gravity"), "gravity");
+    p.gravity = vector3(f.at("gravity"), [] { return std::string("gravity"); });
     // The CM falls g t^2 / 2: keep that and its energy M |g| z far inside a double.
     const double fall = 0.5 * p.gravity->norm() * p.duration * p.duration;
     require(fall <= 1e100, "gravity",

@@ -44,9 +44,10 @@ void check_walls_and_contacts(const Preset& p, long count) {
   const double reach = *p.container_radius - a;  // the centres' room
   if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
     for (std::size_t i = 0; i < list->size(); ++i)
-      require((*list)[i].r.norm() <= reach, "particles[" + std::to_string(i) + "].r",
-              "a sphere's centre must start within container.radius - hard_spheres.radius = " +
-                  format(reach));
+      if (!((*list)[i].r.norm() <= reach))
+        fail("particles[" + std::to_string(i) + "].r",
+             "a sphere's centre must start within container.radius - hard_spheres.radius = " +
+                 format(reach));
   } else {
     require(std::get<SwarmSpec>(p.particles).position_radius <= reach, "particles.position_radius",
             "must be <= container.radius - hard_spheres.radius = " + format(reach) +
@@ -65,9 +66,10 @@ void check_forces_consistency(const Preset& p, long count) {
   if (p.floor) {
     if (const auto* list = std::get_if<std::vector<Particle>>(&p.particles)) {
       for (std::size_t i = 0; i < list->size(); ++i)
-        require((*list)[i].r.z() >= p.floor->z, "particles[" + std::to_string(i) + "].r",
-                "starts below the floor (z = " + format((*list)[i].r.z()) +
-                    " < floor.z = " + format(p.floor->z) + ")");
+        if (!((*list)[i].r.z() >= p.floor->z))
+          fail("particles[" + std::to_string(i) + "].r",
+               "starts below the floor (z = " + format((*list)[i].r.z()) +
+                   " < floor.z = " + format(p.floor->z) + ")");
     } else {
       const auto& s = std::get<SwarmSpec>(p.particles);
       require(p.floor->z <= -s.position_radius, "floor.z",
@@ -77,9 +79,10 @@ void check_forces_consistency(const Preset& p, long count) {
   }
   if (p.drag)
     for (std::size_t i = 0; i < p.drag->particles.size(); ++i)
-      require(long(p.drag->particles[i]) < count, "drag.particles[" + std::to_string(i) + "]",
-              "particle " + std::to_string(p.drag->particles[i]) + " does not exist (there are " +
-                  std::to_string(count) + ", numbered from 0)");
+      if (long(p.drag->particles[i]) >= count)
+        fail("drag.particles[" + std::to_string(i) + "]",
+             "particle " + std::to_string(p.drag->particles[i]) + " does not exist (there are " +
+                 std::to_string(count) + ", numbered from 0)");
 }
 
 }  // namespace
@@ -91,9 +94,10 @@ void check_consistency(const Preset& p) {
     if (p.container_radius) {
       for (std::size_t i = 0; i < list->size(); ++i) {
         const double r = (*list)[i].r.norm();
-        require(r <= *p.container_radius, "particles[" + std::to_string(i) + "].r",
-                "starts outside the container (|r| = " + format(r) +
-                    " > container.radius = " + format(*p.container_radius) + ")");
+        if (!(r <= *p.container_radius))
+          fail("particles[" + std::to_string(i) + "].r",
+               "starts outside the container (|r| = " + format(r) +
+                   " > container.radius = " + format(*p.container_radius) + ")");
       }
     }
   } else {
