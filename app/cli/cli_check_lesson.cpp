@@ -17,6 +17,7 @@
 #include "ensemble/ensemble_plan.h"
 #include "ensemble/run_record.h"
 #include "lessons/lesson_file.h"
+#include "swarm/measure/speed_distribution.h"
 #include "swarm/preset/ensemble_seed.h"
 #include "swarm/run/run.h"
 
@@ -48,8 +49,8 @@ bool listed(const swarm::Preset& p) {
   return std::holds_alternative<std::vector<swarm::Particle>>(p.particles);
 }
 
-/// Run k of a side, as `swarmlab ensemble` runs it: the record's values, and the first and last
-/// sample's energies and size.
+/// Run k of a side, as `swarmlab ensemble` runs it: the record's values, the first and last
+/// sample's energies and size, and the final speeds' kinetic temperature.
 RunResult run_one(const RunJob& job, int threads) {
   RunResult out;
   swarm::Preset preset = *job.preset;
@@ -76,6 +77,7 @@ RunResult run_one(const RunJob& job, int threads) {
     out.values["KE_start"] = s.front().KE, out.values["KE_end"] = s.back().KE;
     out.values["size_start"] = s.front().size, out.values["size_end"] = s.back().size;
   }
+  out.values["T_kinetic"] = swarm::check_speeds(run.engine().system()).T;
   return out;
 }
 

@@ -238,9 +238,9 @@ double mean_of(const std::vector<double>& v) {
 
 const std::vector<std::string>& claim_quantities() {
   static const std::vector<std::string> names = {
-      "P",        "T",      "energy_drift", "wall_hits", "work",       "heat",    "E_start",
-      "E_end",    "KE_start", "KE_end",     "size_start", "size_end",  "fit.P_V", "fit.T_V",
-      "fit.P_T"};
+      "P",        "T",      "T_kinetic",  "energy_drift", "wall_hits", "work",    "heat",
+      "E_start",  "E_end",  "KE_start",   "KE_end",       "size_start", "size_end", "fit.P_V",
+      "fit.T_V",  "fit.P_T"};
   return names;
 }
 

@@ -2,7 +2,8 @@
 # swarmlab check-lesson: every shipped lesson's claims hold; each choice with a claim, its marked
 # answer moved to the next option, fails naming the lesson and the step; and the checker's
 # numbers agree with calculations made here, not by the code: the ideal gas's exact
-# P = N T / V, and Carnahan-Starling's hard-sphere pressure. One run of the checker does it
+# P = N T / V, Carnahan-Starling's hard-sphere pressure, and the two temperatures of a gas whose
+# speeds are uniform in a ball. One run of the checker does it
 # all, so that runs the files share are run once (about 20 s on two cores).
 # Usage: check_lesson_test.sh SWARMLAB LESSON_DIR
 source "$(dirname "$0")/harness.sh"
@@ -50,16 +51,25 @@ def lesson(name, *claims):
     text = {"lesson": 1, "id": name, "title": "T", "summary": "S",
             "steps": [{"text": "A gas.", "preset": "point-gas.json", "claims": list(claims)}]}
     json.dump(text, open(f"{work}/{name}.json", "w"))
-lesson("physics", point, spheres)
+# Speeds uniform in a ball of radius 1 (ball-speeds-gas.json, J = 0: each particle keeps its
+# speed, density v^2 on [0, 1]): T_kinetic = (2/3) (1/2) <v^2> = 1/5, less the CM's share 1/N;
+# the wall's T = (1/2) (1/2) <v^3> / <v> (hits weighted by speed) = (1/4) (1/2) / (3/4) = 1/6.
+ball = {"preset": "ball-speeds-gas.json"}
+kinetic = {"quantity": "T_kinetic", "scene": ball, "against": 0.2 * (1 - 1 / N), "expect": "equal",
+           "tolerance": 0.02}
+wall = {"quantity": "T", "scene": ball, "against": 1 / 6, "expect": "equal", "tolerance": 0.02}
+lesson("physics", point, spheres, kinetic, wall)
 # The same runs against what is not so: 10 % above the exact P, and the point particles' P in
 # the spheres' room (the paper's idealisation, which excluded volume raises by Z = 1.22).
 lesson("wrong-ideal", dict(point, against=1.1 * ideal))
 lesson("wrong-spheres", dict(spheres, against=N * T / V_centres))
+# T_kinetic taken for the wall's T, which the Maxwellian's factor 2 would make it.
+lesson("wrong-kinetic", dict(kinetic, against=1 / 6))
 EOF
 
 start=$(date +%s)
 "$bin" check-lesson "$lessons"/*.json "$work"/rot/*.json "$work"/physics.json "$work"/wrong-ideal.json \
-  "$work"/wrong-spheres.json >"$work/stdout" 2>"$work/stderr"
+  "$work"/wrong-spheres.json "$work"/wrong-kinetic.json >"$work/stdout" 2>"$work/stderr"
 code=$?
 echo "check-lesson: $(tail -1 "$work/stdout") (exit $code after $(($(date +%s) - start)) s)"
 [ $code -eq 1 ] && ok || bad "exit $code, expected 1 (the rotated and wrong lessons fail)"
@@ -82,6 +92,8 @@ for name in wrong-ideal wrong-spheres; do
   grep -qE "error: $work/$name\.json \($name\): step 1, claims\[0\]: the step states a equal b, but the runs refute it: a = P of the scene .* = [0-9.]+ \[[0-9.]+, [0-9.]+\]; .*\(95 % intervals, [48] seeds\)" \
     "$work/stderr" && ok || bad "$name: not refuted with its numbers: $(grep "$name" "$work/stderr")"
 done
+grep -qE "error: $work/wrong-kinetic\.json \(wrong-kinetic\): step 1, claims\[0\]: the step states a equal b, but the runs refute it: a = T_kinetic of ball-speeds-gas\.json = 0\.19[0-9]* \[" \
+  "$work/stderr" && ok || bad "wrong-kinetic: not refuted with its numbers: $(grep wrong-kinetic "$work/stderr")"
 # The table: one row per relation, the verdicts, and the time.
 grep -qE "^08-walls-that-work\.json \(walls-that-work\) +7 +0 +shown " "$work/stdout" && ok ||
   bad "the table lacks lesson 8's excluded-volume claim: $(head -5 "$work/stdout")"
