@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
-#include "ensemble/sha256.h"
+#include "files/sha256.h"
 #include "swarm/measure/wall_time_average.h"
 #include "swarm/preset/printable_text.h"
 

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "files/sha256.h"
 #include "ui/platform/cjk_font.h"
 #include "ui/platform/font_file_check.h"
 
@@ -31,11 +32,11 @@ CjkFontNews pending_news = CjkFontNews::none;  // from refuse_cjk_font, told at 
 
 // (EM_JS bodies: double quotes and no backslashes.) The page names the font as the build
 // published it, with the first 8 hex digits of its content's SHA-256 (window.swarmlabFiles,
-// web/publish.py). The body is read up to max_bytes and no further, and where the browser
-// offers SHA-256 (a secure context: https, localhost) bytes whose digest is not the name's are
-// refused here, so that only the build's own font goes on, to the checks of fonts.cpp; what
-// came is copied into the wasm heap for swarmlab_cjk_font_ready (a null pointer: nothing came,
-// and the console says why). A try after a failure goes past the browser's HTTP cache.
+// web/publish.py). The body is read up to max_bytes and no further and copied into the wasm
+// heap for swarmlab_cjk_font_ready (a null pointer: nothing came, and the console says why),
+// whose digest the app checks itself: the browser's crypto.subtle exists only in a secure
+// context, not on a class server's plain http address. A try after a failure goes past the
+// browser's HTTP cache.
 // clang-format off
 EM_JS(void, fetch_cjk_font, (int delay_ms, int reload, int max_bytes), {
   var name = "fonts/noto-sans-sc-subset.otf";
@@ -61,16 +62,6 @@ EM_JS(void, fetch_cjk_font, (int delay_ms, int reload, int max_bytes), {
     }
     return pump();
   }
-  function published_digest(b) {
-    var parts = url.split("/").pop().split(".");
-    var want = parts.length > 2 ? parts[parts.length - 2] : "";
-    if (!/^[0-9a-f]{8}$/.test(want) || !(window.crypto && crypto.subtle)) return b;
-    return crypto.subtle.digest("SHA-256", b).then(function(d) {
-      var got = Array.from(new Uint8Array(d, 0, 4)).map(function(x) { return (x + 256).toString(16).slice(1); }).join("");
-      if (got !== want) throw new Error("its SHA-256 begins " + got + ", not " + want + " as its name says");
-      return b;
-    });
-  }
   function hand_over(b, why) {
     var pointer = 0;
     if (b) {
@@ -82,7 +73,7 @@ EM_JS(void, fetch_cjk_font, (int delay_ms, int reload, int max_bytes), {
     _swarmlab_wake();
   }
   setTimeout(function() {
-    fetch(url, reload ? { cache: "reload" } : {}).then(body).then(published_digest)
+    fetch(url, reload ? { cache: "reload" } : {}).then(body)
       .then(function(b) { hand_over(b, ""); }, function(e) { hand_over(null, String(e)); });
   }, delay_ms);
 });
@@ -102,6 +93,17 @@ EM_JS(void, forget_cached_cjk_font, (), {
   } catch (e) {}
 });
 
+// The first 8 hex digits of the SHA-256 that the font's published name carries, in a malloc'd
+// string ("" for a name without them, as in a build that does not publish).
+EM_JS(char*, published_cjk_font_digest, (), {
+  var name = "fonts/noto-sans-sc-subset.otf";
+  var parts = ((window.swarmlabFiles && window.swarmlabFiles[name]) || name).split("/").pop().split(".");
+  var want = parts.length > 2 && /^[0-9a-f]{8}$/.test(parts[parts.length - 2]) ? parts[parts.length - 2] : "";
+  var pointer = _malloc(want.length + 1);
+  if (pointer) stringToUTF8(want, pointer, want.length + 1);
+  return pointer;
+});
+
 EM_JS(void, tell_page_cjk_font_missing, (), {
   if (Module.onCjkFontMissing)
     Module.onCjkFontMissing(function() { _swarmlab_retry_cjk_font(); _swarmlab_wake(); });
@@ -115,6 +117,13 @@ void start_try() {
   fetch_cjk_font(tries == 0 ? 0 : kSecondTryDelayMs, after_a_failure ? 1 : 0,
                  int(kMaxFontFileBytes));
   ++tries;
+}
+
+std::string published_digest() {
+  char* text = published_cjk_font_digest();
+  std::string out = text ? text : "";
+  std::free(text);
+  return out;
 }
 
 CjkFontNews failed_try(std::string_view why) {
@@ -165,6 +174,12 @@ CjkFontNews cjk_font_news() {
   if (!fetched) return failed_try("the fetch failed");
   // No bytes would read as "not here yet" (cjk_font()), and nothing would be tried again.
   if (received.empty()) return failed_try(font_file_problem(received));
+  // Only the build's own font goes on to the checks of fonts.cpp.
+  if (const std::string want = published_digest(); !want.empty()) {
+    const std::string got = sha256_hex(received).substr(0, want.size());
+    if (got != want)
+      return failed_try("its SHA-256 begins " + got + ", not " + want + " as its published name says");
+  }
   bytes = std::move(received);
   fetch = Fetch::here;
   if (missing) tell_page_cjk_font_here();

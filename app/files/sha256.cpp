@@ -1,9 +1,9 @@
-#include "ensemble/sha256.h"
+#include "files/sha256.h"
 
 #include <array>
 #include <cstdint>
 
-namespace swarmlab::ensemble {
+namespace swarmlab {
 namespace {
 
 using Word = std::uint32_t;
@@ -68,4 +68,4 @@ std::string sha256_hex(std::string_view bytes) {
   return out;
 }
 
-}  // namespace swarmlab::ensemble
+}  // namespace swarmlab

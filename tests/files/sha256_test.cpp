@@ -1,10 +1,10 @@
-#include "ensemble/sha256.h"
+#include "files/sha256.h"
 
 #include <doctest/doctest.h>
 
 #include <string>
 
-using swarmlab::ensemble::sha256_hex;
+using swarmlab::sha256_hex;
 
 // The FIPS 180-4 examples (NIST CSRC, "Cryptographic Standards and Guidelines: Examples with
 // Intermediate Values", SHA256.pdf and SHA256_2.pdf) and the empty message.
