@@ -54,11 +54,11 @@ stale "$out/obj/preset_fuzz.o" tests/fuzz/preset_fuzz.cpp $headers &&
   compile tests/fuzz/preset_fuzz.cpp "$out/obj/preset_fuzz.o"
 # The run-record reader: its three app files and the target.
 record_objects=()
-for src in app/ensemble/run_record.cpp app/ensemble/sha256.cpp app/report/provenance.cpp \
+for src in app/ensemble/run_record.cpp app/files/sha256.cpp app/report/provenance.cpp \
            tests/fuzz/run_record_fuzz.cpp; do
   obj="$out/obj/$(basename "${src%.cpp}").o"
   # shellcheck disable=SC2086
-  stale "$obj" "$src" app/ensemble/*.h app/report/provenance.h "$out/generated/swarmlab_version.h" \
+  stale "$obj" "$src" app/ensemble/*.h app/files/sha256.h app/report/provenance.h "$out/generated/swarmlab_version.h" \
     $headers && compile "$src" "$obj"
   record_objects+=("$obj")
 done
