@@ -9,7 +9,9 @@ ProjectPlots project_plots_for(const swarm::Preset& p) {
   plots.motion = p.gravity.has_value() || p.floor.has_value();
   plots.books = p.floor.has_value() || p.drag.has_value() || moving_wall || hot_wall;
   plots.pv_loop = moving_wall;
-  plots.speeds = hot_wall || p.sphere_radius.has_value();
+  // In any container: the wall's T is the temperature only for Maxwellian speeds, and the
+  // read-outs show it beside T kinetic.
+  plots.speeds = hot_wall || p.sphere_radius.has_value() || p.container_radius.has_value();
   return plots;
 }
 

@@ -16,7 +16,7 @@ struct ProjectPlots {
   bool motion = false;   ///< gravity or a floor: CM height and swarm size over time
   bool books = false;    ///< a floor, drag, a moving or hot wall: the energy books over time
   bool pv_loop = false;  ///< a moving wall: P against V, the way in and the way out
-  bool speeds = false;   ///< a hot wall or hard spheres: speeds against the Maxwellian
+  bool speeds = false;   ///< a container, hot wall or hard spheres: speeds against the Maxwellian
   bool any() const { return motion || books || pv_loop || speeds; }
 };
 ProjectPlots project_plots_for(const swarm::Preset& p);

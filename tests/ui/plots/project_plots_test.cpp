@@ -49,6 +49,14 @@ TEST_CASE("project_plots: each Appendix B feature calls for its plots, none for 
   p = project_plots_for(spheres);
   CHECK(p.speeds);
   CHECK_FALSE(p.books);  // elastic contacts exchange no energy with the outside
+
+  // A plain container: whether the wall's T is the temperature depends on the speeds.
+  swarm::Preset gas;
+  gas.container_radius = 1.0;
+  p = project_plots_for(gas);
+  CHECK(p.speeds);
+  CHECK_FALSE(p.books);
+  CHECK_FALSE(p.motion);
 }
 
 TEST_CASE("project_plots: the books' sum and E - E0 from the samples") {
