@@ -1,5 +1,6 @@
 #include "swarm/measure/virial_balance.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "swarm/measure/blocking.h"
@@ -16,17 +17,18 @@ std::optional<VirialBalance> virial_balance(const std::vector<VirialInterval>& i
     ++first;
   if (intervals.size() - first < 8) return std::nullopt;
   std::vector<double> difference_dt, duration;  // (3PV - (2KE - 2U)) dt, dt
-  double wall = 0, kinetic = 0, time = 0;
+  double wall = 0, kinetic = 0, G_squared = 0, time = 0;  // each integrated over time
   for (std::size_t i = first; i < intervals.size(); ++i) {
     const VirialInterval& v = intervals[i];
     wall += v.wall * v.duration;
     kinetic += v.kinetic * v.duration;
+    G_squared += 0.5 * (v.G_start * v.G_start + v.G_end * v.G_end) * v.duration;
     time += v.duration;
     difference_dt.push_back((v.wall - v.kinetic) * v.duration);
     duration.push_back(v.duration);
   }
-  const std::optional<BlockingError> b = blocking_error_of_ratio(difference_dt, duration);
-  if (!b || !(time > 0)) return std::nullopt;
+  const std::optional<BlockingError> blocked = blocking_error_of_ratio(difference_dt, duration);
+  if (!blocked || !(time > 0)) return std::nullopt;
   VirialBalance out;
   out.start = intervals[first].t_end - intervals[first].duration;
   out.end = intervals.back().t_end;
@@ -37,7 +39,7 @@ std::optional<VirialBalance> virial_balance(const std::vector<VirialInterval>& i
   out.G_end = intervals.back().G_end;
   out.imbalance = -(out.G_end - out.G_start) / (out.end - out.start);
   out.residual = out.wall - out.kinetic - out.imbalance;
-  out.error = b->se;
+  out.error = std::min(std::sqrt(2 * G_squared / time) / (out.end - out.start), blocked->se);
   out.holds = std::abs(out.imbalance) <= kVirialBalanceErrors * out.error;
   return out;
 }

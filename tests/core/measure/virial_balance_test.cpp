@@ -50,19 +50,21 @@ double springs_by_hand(const System& s) {
 
 }  // namespace
 
-TEST_CASE("virial balance: a window's means, G at its ends, and a drifting G flagged") {
-  // 400 intervals of 0.01: 3PV = 10 + noise (+ 0.5 for the drifting one), 2KE - 2U = 10, and
-  // G following the identity dG/dt = (2KE - 2U) - 3PV.
+TEST_CASE("virial balance: a window's means, G at its ends, and a relaxing G flagged") {
+  // 400 intervals of 0.01: G fluctuates about 0 (independent draws of spread 1 at the
+  // samples, as in equilibrium), and for the relaxing one also carries a memory
+  // 20 exp(-t / 0.1) of its start; 2KE - 2U = 10, and 3PV follows the identity
+  // dG/dt = (2KE - 2U) - 3PV.
   std::mt19937_64 rng(3);
   std::normal_distribution<double> noise(0.0, 1.0);
-  std::vector<VirialInterval> balanced, drifting;
-  double G = 7, G_drifting = 7;
+  std::vector<VirialInterval> balanced, relaxing;
+  double G = noise(rng), memory = 20;
   for (int i = 0; i < 400; ++i) {
-    const double t = 0.01 * (i + 1), e = noise(rng);
-    balanced.push_back({t, 0.01, 10 + e, 10, G, G - e * 0.01});
-    drifting.push_back({t, 0.01, 10.5 + e, 10, G_drifting, G_drifting - (0.5 + e) * 0.01});
-    G -= e * 0.01;
-    G_drifting -= (0.5 + e) * 0.01;
+    const double t = 0.01 * (i + 1), next = noise(rng), next_memory = 20 * std::exp(-t / 0.1);
+    balanced.push_back({t, 0.01, 10 - (next - G) / 0.01, 10, G, next});
+    relaxing.push_back({t, 0.01, 10 - (next + next_memory - G - memory) / 0.01, 10, G + memory,
+                        next + next_memory});
+    G = next, memory = next_memory;
   }
   const auto b = virial_balance(balanced, 1.0);
   REQUIRE(b);
@@ -73,13 +75,26 @@ TEST_CASE("virial balance: a window's means, G at its ends, and a drifting G fla
   CHECK(b->kinetic == Approx(10.0));
   CHECK(b->imbalance == Approx(b->wall - 10.0));
   CHECK(std::abs(b->residual) < 1e-12);
-  CHECK(b->error == Approx(1 / std::sqrt(300.0)).epsilon(0.25));
+  // sqrt(2 <G^2>) / 3 with <G^2> = 1: G's mean square over the window (trapezoid) by hand.
+  double G_squared = 0;
+  for (std::size_t i = 100; i < 400; ++i)
+    G_squared += 0.5 * (balanced[i].G_start * balanced[i].G_start +
+                        balanced[i].G_end * balanced[i].G_end) * 0.01;
+  CHECK(b->error == Approx(std::sqrt(2 * G_squared / 3) / 3).epsilon(1e-9));
+  CHECK(b->error == Approx(std::sqrt(2.0) / 3).epsilon(0.15));
   CHECK(b->holds);
-  // Off by 0.5, nine errors: too short to claim equilibrium, by 5 % of 3PV.
-  const auto d = virial_balance(drifting, 1.0);
+  // From t = 1 the memory is 20 exp(-10) = 1e-3: the window balances. From t = 0.1 it is
+  // 7.4, against G's spread of 1: off by 7.4 / 3.9 = 1.9, four errors (the memory raises G's
+  // mean square over the window to 1 + 7.4^2 0.1 / 2 / 3.9 = 1.7, so the error is
+  // sqrt(2 1.7) / 3.9 = 0.47); blocking 3PV - (2KE - 2U) would give 1.1 (measured).
+  const auto late = virial_balance(relaxing, 1.0);
+  REQUIRE(late);
+  CHECK(late->holds);
+  const auto d = virial_balance(relaxing, 0.1);
   REQUIRE(d);
+  MESSAGE("relaxing from 0.1: imbalance " << d->imbalance << " +- " << d->error);
   CHECK_FALSE(d->holds);
-  CHECK(d->relative() == Approx(0.5 / 10.5).epsilon(0.05));
+  CHECK(d->imbalance == Approx((relaxing[10].G_start - G - memory) / 3.9).epsilon(1e-9));
   CHECK_FALSE(virial_balance(balanced, 3.95));  // 5 intervals: no balance
 }
 
@@ -125,7 +140,7 @@ TEST_CASE("virial balance, J = 0: dG = 2 KE dt + r.dp at the wall, and a long ru
                    << b->error);
   CHECK(offset > 0);
   CHECK(offset < 1e-3 * b->wall);
-  CHECK(offset < 0.2 * b->error);
+  CHECK(offset < 0.5 * b->error);  // 0.28 of it: the flag cannot mistake it for a memory
   CHECK(b->imbalance == Approx(-(G1 - G0) / T).epsilon(1e-12));
   CHECK(b->residual == Approx(offset).epsilon(1e-6));
   CHECK(b->holds);
@@ -202,4 +217,68 @@ TEST_CASE("virial balance: a gas still flowing out to the wall; G's memory is P'
   CHECK(3 * V * (a.P->mean - P_exact) ==
         Approx(a.virial->imbalance + a.virial->residual).epsilon(1e-9));
   CHECK(std::abs(a.virial->relative()) > 0.05);
+}
+
+TEST_CASE("virial balance: the held-out gas's early windows flagged on their own, each run's P honest") {
+  // The issue's held-out case: J = 0, 1,500 particles started uniformly within 0.9 R with
+  // velocities uniform in a ball, R = 1, dt = 0.0005, 4 time units, sampled every 4 steps as
+  // an ensemble samples it; 8 seeds. A window from 0.2 or 0.4 starts while the gas that flowed
+  // out to the wall is still breathing (G's rms over the window 2-4x its spread at the end):
+  // measured, 13 of 16 such windows flagged (the old blocking error, 3x wider: 1 of 16). The
+  // start wall_time_averages picks must then balance, or P's interval must hold 2 KE / 3V.
+  // Fewer particles would not do: the breathing grows as N, G's spread as sqrt(N) (300: 7 of 16).
+  int flagged = 0, honest = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const System s = testing::random_swarm(1500, 0.0, seed, 0.9, 1.0);
+    Run run(s, container_plan(5e-4, 8000, 4));
+    run.finish();
+    const auto virial = virial_intervals(run.samples());
+    for (const double from : {0.2, 0.4}) {
+      const auto b = virial_balance(virial, from);
+      REQUIRE(b);
+      flagged += !b->holds;
+    }
+    const WallTimeAverages a = wall_time_averages(wall_intervals(run.samples()), virial);
+    REQUIRE(a.virial);
+    REQUIRE(a.P);
+    const double P_exact = 2 * kinetic_by_hand(s) / (3 * sphere_volume(1.0));
+    honest += !a.virial->holds || std::abs(a.P->mean - P_exact) <= 1.96 * a.P->se;
+  }
+  MESSAGE(flagged << " of 16 windows from 0.2 and 0.4 flagged; " << honest << " of 8 runs honest");
+  CHECK(flagged >= 11);
+  CHECK(honest == 8);
+}
+
+TEST_CASE("virial balance: long equilibrated runs are not flagged beyond the 2 errors' rate") {
+  // 12 seeds each of J = 0 (300 particles within 0.9 R, speeds in a ball, 40 time units) and
+  // J = +-1 / M (the crowded swarms above, 20 time units), dt = 0.001. A window from the middle
+  // of an equilibrated run is flagged at the rate of |z| > 2, about 5 %: at most 4 of the 36
+  // (measured: 1, 1 and 2 of 12; over 60 seeds each, J = +-1 3 and 3 of 60, rms z 1.0; J = 0
+  // from the middle of 20 time units 8 of 60, rms z 1.17, where the breathing of a gas in a
+  // sphere, which only dephases, is still there at t = 10). The start wall_time_averages picks,
+  // of eleven, balances in every run (measured: 180 of 180).
+  int middle_flagged = 0;
+  for (const double J : {0.0, 1.0, -1.0}) {
+    CAPTURE(J);
+    int flagged = 0, runs_flagged = 0;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+      const System s = J == 0 ? testing::random_swarm(300, 0.0, seed, 0.9, 1.0)
+                              : testing::crowded_swarm(300, J, seed);
+      const double duration = J == 0 ? 40 : 20;
+      Run run(s, container_plan(1e-3, long(duration * 1000), long(duration / 2)));
+      run.finish();
+      const auto virial = virial_intervals(run.samples());
+      const auto b = virial_balance(virial, duration / 2);
+      REQUIRE(b);
+      flagged += !b->holds;
+      const WallTimeAverages a = wall_time_averages(wall_intervals(run.samples()), virial);
+      REQUIRE(a.virial);
+      runs_flagged += !a.virial->holds;
+    }
+    middle_flagged += flagged;
+    MESSAGE("J = " << J << ": " << flagged << " of 12 windows from the middle flagged, "
+                   << runs_flagged << " of 12 runs");
+    CHECK(runs_flagged == 0);
+  }
+  CHECK(middle_flagged <= 4);
 }
