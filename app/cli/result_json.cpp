@@ -91,6 +91,7 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs,
                        {"KE", x.KE},
                        {"PE", x.PE},
                        {"E", x.E},
+                       {"T_kinetic", x.T_kinetic},
                        {"hits", x.hits},
                        {"R", x.R},
                        {"work", x.books.wall_work},
@@ -101,8 +102,13 @@ std::string result_json(const swarm::Preset& preset, swarm::SideBySide& runs,
   j["samples"] = samples;
   json stages = json::array();
   for (const swarm::Stage& x : run.stages())
-    stages.push_back(
-        {{"R", x.R}, {"V", x.V}, {"P", x.P}, {"T", x.T}, {"E", x.E}, {"hits", x.hits}});
+    stages.push_back({{"R", x.R},
+                      {"V", x.V},
+                      {"P", x.P},
+                      {"T", x.T},
+                      {"T_kinetic", x.T_kinetic},
+                      {"E", x.E},
+                      {"hits", x.hits}});
   j["stages"] = stages;
   if (!run.stages().empty()) {
     const swarm::StageFits f = run.fits();

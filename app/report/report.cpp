@@ -57,6 +57,17 @@ std::vector<double> column(const std::vector<Row>& rows, F f) {
   return out;
 }
 
+/// Whether a record holds the kinetic temperature (RESULT.json files written before it was
+/// recorded read it as NaN).
+bool recorded(const std::vector<double>& values) {
+  return std::any_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
+// The two temperatures' legend entries: the wall's (from the hitters' kinetic energy, the
+// paper's) is the gas's temperature only for a Maxwellian gas; the kinetic one always.
+constexpr const char* kWallT = "T at the wall";
+constexpr const char* kKineticT = "T kinetic, (2/3) KE/N";
+
 /// The relative energy change as the run's summary defines it (swarm::relative_energy_change).
 auto energy_change(const RunRecord& r) {
   const swarm::Sample first = r.samples.front();
@@ -105,6 +116,8 @@ NamedFigure equilibration_figure(const RunRecord& r, const TimeAxis& time) {
   const double T_mean = equilibrated.T > 0 ? equilibrated.T : 1;
   const std::vector<double> P = column(samples, [&](auto& s) { return s.P / P_mean; });
   const std::vector<double> T = column(samples, [&](auto& s) { return s.T / T_mean; });
+  const std::vector<double> T_kinetic =
+      column(samples, [&](auto& s) { return s.T_kinetic / T_mean; });
   // Centred on each sample, 1% of the run wide.
   const double half_window = 0.005 * (samples.back().t - r.samples.front().t);
   const std::vector<swarm::WallReading> running =
@@ -127,9 +140,16 @@ NamedFigure equilibration_figure(const RunRecord& r, const TimeAxis& time) {
              printed(" (%.4g)", name[0] == 'P' ? P_mean : T_mean);
     return p;
   };
+  Panel temperature = panel(kWallT, T, T_running, orange);
+  if (recorded(T_kinetic)) {
+    // Over the wall's mean too, so that where the two differ the panel shows by how much.
+    temperature.series.push_back(
+        series(std::string(kKineticT) + ", over the same mean", t, T_kinetic, green));
+    temperature.note += "; T kinetic over the same mean";
+  }
   Figure f{"Wall pressure and temperature in a fixed container",
            r.preset.name,
-           {panel("P", P, P_running, blue), panel("T", T, T_running, orange)},
+           {panel("P", P, P_running, blue), temperature},
            true};
   return {"equilibration", f};
 }
@@ -144,38 +164,63 @@ NamedFigure wall_history_figure(const RunRecord& r, const TimeAxis& time) {
     p.series = {series("", t, v, colour)};
     return p;
   };
+  Panel temperature =
+      panel({"temperature T", "energy"}, column(samples, [](auto& s) { return s.T; }), orange, 0.4);
+  const std::vector<double> T_kinetic = column(samples, [](auto& s) { return s.T_kinetic; });
+  if (recorded(T_kinetic)) {
+    temperature.series.front().name = kWallT;
+    temperature.series.push_back(series(kKineticT, t, T_kinetic, green));
+  }
   Figure f{
       "Wall readings during the expansion",
       r.preset.name,
       {panel({"pressure P", "force/area"}, column(samples, [](auto& s) { return s.P; }), blue, 0.4),
-       panel({"temperature T", "energy"}, column(samples, [](auto& s) { return s.T; }), orange,
-             0.4),
+       temperature,
        panel({"radius R", "length"}, column(samples, [](auto& s) { return s.R; }), grey, 0.3)},
       true};
   return {"wall-history", f};
 }
 
 struct StageColumn {
-  const char* symbol;  ///< "V", "P" or "T"
+  const char* symbol;  ///< "V", "P", "T" (the wall's) or "Tk" (the kinetic T)
   Axis axis;
   std::vector<double> values;
+  bool is_T() const { return std::string(symbol) == "T"; }
 };
 
+/// V, P, T and, where the record has it, T kinetic (stage_figure draws it beside T).
 std::vector<StageColumn> stage_columns(const std::vector<swarm::Stage>& stages) {
-  std::vector<double> V, P, T;
-  for (const swarm::Stage& s : stages) V.push_back(s.V), P.push_back(s.P), T.push_back(s.T);
-  return {{"V", {"volume V", "length³"}, V},
-          {"P", {"pressure P", "force/area"}, P},
-          {"T", {"temperature T", "energy"}, T}};
+  std::vector<double> V, P, T, T_kinetic;
+  for (const swarm::Stage& s : stages)
+    V.push_back(s.V), P.push_back(s.P), T.push_back(s.T), T_kinetic.push_back(s.T_kinetic);
+  std::vector<StageColumn> out = {{"V", {"volume V", "length³"}, V},
+                                  {"P", {"pressure P", "force/area"}, P},
+                                  {"T", {"temperature T", "energy"}, T}};
+  if (recorded(T_kinetic)) out.push_back({"Tk", {"temperature T", "energy"}, T_kinetic});
+  return out;
+}
+
+/// The kinetic T's column, when stage_columns found one.
+const StageColumn* kinetic_column(const std::vector<StageColumn>& columns) {
+  return columns.size() > 3 ? &columns[3] : nullptr;
 }
 
 /// (y, x) pairs of the paper's Figs. 2 and 3: T-V, P-V, P-T.
 const std::pair<int, int> kStagePairs[] = {{2, 0}, {1, 0}, {1, 2}};
 
-NamedFigure stage_figure(const RunRecord& r, const StageColumn& y, const StageColumn& x) {
+NamedFigure stage_figure(const RunRecord& r, const StageColumn& y, const StageColumn& x,
+                         const StageColumn* kinetic) {
   Panel p{x.axis, y.axis};
-  p.series = {series(std::string(y.symbol) + " at the end of each stage", x.values, y.values,
-                     std::string(y.symbol) == "T" ? orange : blue, Mark::line_and_points)};
+  const std::string against = x.is_T() ? std::string(" against ") + kWallT : "";
+  p.series = {
+      series(std::string(y.is_T() ? kWallT : y.symbol) + against + " at the end of each stage",
+             x.values, y.values, y.is_T() ? orange : blue, Mark::line_and_points)};
+  if (kinetic && y.is_T())
+    p.series.push_back(series(std::string(kKineticT) + ", over the same steps", x.values,
+                              kinetic->values, green, Mark::line_and_points));
+  if (kinetic && x.is_T())
+    p.series.push_back(series(std::string(y.symbol) + " against " + kKineticT, kinetic->values,
+                              y.values, green, Mark::line_and_points));
   p.y.include_zero = true;
   p.note = std::to_string(r.stages.size()) + " stages; each value averaged over the last " +
            printed("%.0f%% of its stage", 100 * (1 - r.preset.expansion->thermalize_fraction));
@@ -195,7 +240,8 @@ std::string with_uncertainty(double value, double stderr_value) {
 }
 
 /// Appendix C: ln y against ln x with its least-squares line, and the residuals beneath.
-NamedFigure loglog_figure(const RunRecord& r, const StageColumn& y, const StageColumn& x) {
+NamedFigure loglog_figure(const RunRecord& r, const StageColumn& y, const StageColumn& x,
+                          const StageColumn* kinetic) {
   const swarm::PowerLawFit fit = swarm::fit_power_law(x.values, y.values);
   std::vector<double> xs, ys;
   for (int i : fit.used)
@@ -205,8 +251,14 @@ NamedFigure loglog_figure(const RunRecord& r, const StageColumn& y, const StageC
   x_axis.log = y_axis.log = true;
   Panel main{x_axis, y_axis};
   main.height = 0.8;
-  main.series = {series("stages with P, T > 0", xs, ys,
-                        std::string(y.symbol) == "T" ? orange : blue, Mark::points)};
+  main.series = {series("stages with P, T > 0", xs, ys, y.is_T() ? orange : blue, Mark::points)};
+  // The fit is the paper's, of the wall's T; the kinetic T is drawn beside it, not fitted.
+  if (kinetic && y.is_T())
+    main.series.push_back(series(std::string(kKineticT) + " (not fitted)", x.values,
+                                 kinetic->values, green, Mark::points));
+  if (kinetic && x.is_T())
+    main.series.push_back(series(std::string(y.symbol) + " against " + kKineticT + " (not fitted)",
+                                 kinetic->values, y.values, green, Mark::points));
   Panel residuals{x_axis, {"residual of ln " + std::string(y.symbol), ""}};
   residuals.height = 0.35;
   residuals.zero_line = true;
@@ -373,9 +425,11 @@ std::vector<NamedFigure> run_figures(const RunRecord& r) {
   if (!r.stages.empty()) {
     const std::vector<StageColumn> columns = stage_columns(r.stages);
     for (const auto& [y, x] : kStagePairs)
-      out.push_back(stage_figure(r, columns[std::size_t(y)], columns[std::size_t(x)]));
+      out.push_back(stage_figure(r, columns[std::size_t(y)], columns[std::size_t(x)],
+                                 kinetic_column(columns)));
     for (const auto& [y, x] : kStagePairs)
-      out.push_back(loglog_figure(r, columns[std::size_t(y)], columns[std::size_t(x)]));
+      out.push_back(loglog_figure(r, columns[std::size_t(y)], columns[std::size_t(x)],
+                                  kinetic_column(columns)));
   }
   if (!r.comparisons.empty())
     for (NamedFigure& f : comparison_figures(r, time)) out.push_back(std::move(f));
@@ -406,10 +460,18 @@ std::vector<NamedFigure> overlay_figures(const std::vector<RunRecord>& runs) {
       p.x = cx.axis, p.y = cy.axis;
       p.y.include_zero = true;
       symbols = std::string(cy.symbol) + "-" + cx.symbol;
-      Series s = series(r.preset.name + printed(" (τ = %g)", r.preset.expansion->tau), cx.values,
-                        cy.values, int(k), Mark::line_and_points);
+      const std::string run_name = r.preset.name + printed(" (τ = %g)", r.preset.expansion->tau);
+      const bool has_T = cy.is_T() || cx.is_T();
+      Series s = series(run_name + (has_T ? std::string(", ") + kWallT : ""), cx.values, cy.values,
+                        int(k), Mark::line_and_points);
       s.dashed = k > 0;
       p.series.push_back(s);
+      // The kinetic T in the run's colour, as points only.
+      const StageColumn* kinetic = kinetic_column(columns);
+      if (kinetic && has_T)
+        p.series.push_back(series(run_name + ", " + kKineticT,
+                                  cx.is_T() ? kinetic->values : cx.values,
+                                  cy.is_T() ? kinetic->values : cy.values, int(k), Mark::points));
     }
     p.note = "each value averaged over the last part of its stage";
     out.push_back({"overlay-" + symbols, Figure{symbols.substr(0, 1) + " against " +

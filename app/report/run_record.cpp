@@ -15,6 +15,12 @@ using json = nlohmann::json;
 /// as null, which reads back as NaN (a gap in the figures) rather than refusing the file.
 double number(const json& v) { return v.is_null() ? std::nan("") : v.get<double>(); }
 
+/// T_kinetic, which files written before it was recorded lack: NaN there, and the figures
+/// leave the series out (report.cpp's recorded).
+double kinetic_temperature(const json& x) {
+  return x.contains("T_kinetic") ? number(x.at("T_kinetic")) : std::nan("");
+}
+
 swarm::RunSummary summary_from(const json& j) {
   swarm::RunSummary s;
   s.M = number(j.at("M")), s.omega = number(j.at("omega")), s.E0 = number(j.at("E0")),
@@ -58,15 +64,19 @@ RecordRead read_result_file(const std::string& path) {
       swarm::Sample sample;
       sample.t = number(x.at("t")), sample.P = number(x.at("P")), sample.T = number(x.at("T"));
       sample.KE = number(x.at("KE")), sample.PE = number(x.at("PE")), sample.E = number(x.at("E"));
+      sample.T_kinetic = kinetic_temperature(x);
       sample.hits = x.at("hits"), sample.R = number(x.at("R"));
       sample.books.wall_work = number(x.at("work")), sample.books.wall_heat = number(x.at("heat"));
       sample.books.drag_loss = number(x.at("drag_loss"));
       sample.cm_height = number(x.at("cm_height")), sample.size = number(x.at("size"));
       r.samples.push_back(sample);
     }
-    for (const json& x : j.at("stages"))
-      r.stages.push_back({number(x.at("R")), number(x.at("V")), number(x.at("P")),
-                          number(x.at("T")), number(x.at("E")), x.at("hits")});
+    for (const json& x : j.at("stages")) {
+      swarm::Stage stage{number(x.at("R")), number(x.at("V")), number(x.at("P")),
+                         number(x.at("T")), number(x.at("E")), x.at("hits")};
+      stage.T_kinetic = kinetic_temperature(x);
+      r.stages.push_back(stage);
+    }
     if (j.contains("comparisons"))
       for (const json& c : j.at("comparisons")) {
         ComparisonTrack track{c.at("method"), number(c.at("summary").at("energy_drift")), {}};

@@ -241,7 +241,7 @@ grep -q 'running \[#' "$work/stderr" && ok || bad "no progress bar on a long run
 
 # Hostile but well-formed presets: refused at validation, fast, naming the field that drives
 # the cost or the overflow.
-expect_error samples-fill '{"J":1,"particles":{"count":1,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1}' 'sample_every: 1e+09 samples need ~224 GB of memory (limit ~12 GB); raise sample_every'
+expect_error samples-fill '{"J":1,"particles":{"count":1,"position_radius":1,"velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1}' 'sample_every: 1e+09 samples need ~240 GB of memory (limit ~12 GB); raise sample_every'
 expect_error repulsive-700 '{"J": -1, "particles": [{"m": 1, "r": [0.5,0,0], "v": [0,0,0]}, {"m": 1, "r": [-0.5,0,0], "v": [0,0,0]}], "dt": 0.01, "duration": 494.97474683058323}' "duration: an isolated repulsive system's energies grow as exp(2 Omega t)"
 expect_error overflow-J '{"J": 1e308, "particles": [{"m": 1, "r": [0,0,0], "v": [0,0,0]}, {"m": 1, "r": [0.1,0,0], "v": [0,0,0]}], "dt": 0.1, "duration": 1}' 'J: J * M = inf must stay within +-1e300'
 expect_error overflow-mass '{"J": 1, "particles": [{"m": 1e308, "r": [0,0,0], "v": [0,0,0]}, {"m": 1e308, "r": [0,0,0], "v": [0,0,0]}], "dt": 0.1, "duration": 1}' 'particles: the total mass M = inf must stay <= 1e300'

@@ -80,6 +80,84 @@ done
 "$bin" run "$presets/fig1-four-masses.json" --png 2>/dev/null && bad "--png without --plots accepted" || ok
 "$bin" run --help | grep -q -- --plots && ok || bad "run --help lacks --plots"
 
+# Two temperatures: where a figure draws the wall's T it draws T kinetic = (2/3) KE / N (CM
+# frame) beside it. Checked against the run's own final particles (RESULT.json), not the code.
+# series_of CSV NAME: the y values of the series called NAME, in order.
+series_of() {
+  python3 - "$1" "$2" <<'PY'
+import csv, sys
+rows = csv.reader(l for l in open(sys.argv[1], newline="") if not l.startswith("#"))
+next(rows)
+print(" ".join(r[3] for r in rows if r[1] == sys.argv[2]))
+PY
+}
+kinetic='T kinetic, (2/3) KE/N'
+# A J = 0 Maxwellian gas, expanded in three stages: the last sample's T kinetic is that of the
+# final state to the CSV's 8 digits; each stage's (KE is kept by still, elastic walls; only the
+# CM's share moves with the wall's impulses) within 0.5 % of it; the wall's T agrees within
+# 3 standard errors: a hitter's 1/2 m v^2 is Gamma(2, T) distributed, so the wall's T over n
+# hits has a relative error of 1 / sqrt(2 n).
+printf '{"J": 0, "particles": {"count": 1000, "position_radius": 1, "velocity": {"temperature": 0.5},
+  "cm_at_rest": true, "seed": 7}, "container": {"radius": 1}, "dt": 0.002,
+  "expansion": {"factor": 1.05, "stages": 3, "tau": 4}}' >"$work/maxwell.json"
+"$bin" run "$work/maxwell.json" --plots "$work/maxwell" --out "$work/maxwell.result.json" --quiet &&
+  ok || bad "J = 0 expansion run"
+python3 - "$work/maxwell.result.json" "$(series_of "$work/maxwell/wall-history.csv" "$kinetic")" \
+  "$(series_of "$work/maxwell/stages-T-V.csv" "$kinetic, over the same steps")" \
+  "$(series_of "$work/maxwell/stages-T-V.csv" "T at the wall at the end of each stage")" <<'PY' &&
+import json, sys
+final = json.load(open(sys.argv[1]))["final"]["particles"]
+M = sum(p["m"] for p in final)
+V = [sum(p["m"] * p["v"][k] for p in final) / M for k in range(3)]
+ke_cm = sum(0.5 * p["m"] * sum((p["v"][k] - V[k]) ** 2 for k in range(3)) for p in final)
+T = 2 * ke_cm / (3 * len(final))
+history = [float(x) for x in sys.argv[2].split()]
+stages = [float(x) for x in sys.argv[3].split()]
+wall = [float(x) for x in sys.argv[4].split()]
+hits = [s["hits"] for s in json.load(open(sys.argv[1]))["stages"]]
+assert abs(history[-1] / T - 1) < 1e-7, (history[-1], T)
+assert len(stages) == 3 and all(abs(s / T - 1) < 0.005 for s in stages), (stages, T)
+assert len(wall) == 3 and all(abs(w / T - 1) < 3 / (2 * n) ** 0.5 for w, n in zip(wall, hits)), (wall, hits, T)
+PY
+  ok || bad "J = 0 Maxwellian: T kinetic in wall-history and stages-T-V"
+[ -n "$(series_of "$work/maxwell/stages-P-T.csv" "P against $kinetic")" ] &&
+  [ -n "$(series_of "$work/maxwell/loglog-T-V.csv" "$kinetic (not fitted)")" ] &&
+  grep -q "$kinetic" "$work/maxwell/stages-P-T.svg" && ok || bad "P-T and log-log: no T kinetic"
+# Speeds uniform in a ball (not Maxwellian, J = 0: each particle keeps its speed). A particle
+# hits the wall at a rate proportional to its speed, so the wall's T, half the hitters' mean
+# 1/2 m v^2, is (1/4) sum m v^3 / sum v, below T kinetic: 1/6 against 1/5 for these speeds.
+# The fixed container's figure draws both over the wall's mean, so T kinetic's series is
+# their ratio, 1.2.
+printf '{"J": 0, "particles": {"count": 2000, "position_radius": 1, "velocity": {"speed": 1},
+  "cm_at_rest": true, "seed": 14}, "container": {"radius": 1}, "dt": 0.001, "duration": 8,
+  "sample_every": 10}' >"$work/ball.json"
+"$bin" run "$work/ball.json" --plots "$work/ball" --out "$work/ball.result.json" --quiet &&
+  ok || bad "ball-speeds run"
+python3 - "$work/ball.result.json" "$(series_of "$work/ball/equilibration.csv" "$kinetic, over the same mean")" <<'PY' &&
+import json, sys
+final = json.load(open(sys.argv[1]))["final"]["particles"]
+speeds = [sum(x * x for x in p["v"]) ** 0.5 for p in final]
+T_wall = 0.25 * sum(p["m"] * v ** 3 for p, v in zip(final, speeds)) / sum(speeds)
+T_kinetic = sum(p["m"] * v * v for p, v in zip(final, speeds)) / (3 * len(final))
+ratio = [float(x) for x in sys.argv[2].split()]
+expected = T_kinetic / T_wall
+assert 1.15 < expected < 1.25, expected
+assert ratio and all(abs(r / expected - 1) < 0.025 for r in ratio), (min(ratio), max(ratio), expected)
+PY
+  ok || bad "ball speeds: T kinetic over the wall's T is not (sum m v^2 / 3N) / ((1/4) sum m v^3 / sum v)"
+grep -q "T at the wall" "$work/ball/equilibration.svg" && grep -q "$kinetic" "$work/ball/equilibration.svg" &&
+  ok || bad "equilibration.svg: the two temperatures not named"
+# A RESULT.json written before T kinetic was recorded still reads; its figures have only T.
+python3 - "$work/maxwell.result.json" "$work/old.result.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+for row in j["samples"] + j["stages"]:
+    del row["T_kinetic"]
+json.dump(j, open(sys.argv[2], "w"))
+PY
+"$bin" report "$work/old.result.json" --plots "$work/old" --quiet && ! grep -q "$kinetic" "$work/old"/*.csv &&
+  has_figures "$work/old" wall-history stages-T-V && ok || bad "a RESULT.json without T_kinetic"
+
 # PNGs where rsvg-convert is installed (scripts/deps.sh native installs it).
 if command -v rsvg-convert >/dev/null; then
   "$bin" run "$presets/fig1-four-masses.json" --plots "$work/png" --png --quiet &&

@@ -10,6 +10,17 @@ double kinetic_energy(const System& s) {
   return ke;
 }
 
+double kinetic_energy_cm(const System& s) {
+  double M = 0, twice_ke = 0;
+  Vec3 momentum = Vec3::Zero();
+  for (const auto& p : s.particles) {
+    M += p.m;
+    momentum += p.m * p.v;
+    twice_ke += p.m * p.v.squaredNorm();
+  }
+  return M > 0 ? 0.5 * (twice_ke - momentum.squaredNorm() / M) : 0.0;
+}
+
 double potential_energy_pairwise(const System& s) {
   double sum = 0;  // over i < k, which is half the double sum of eq. 8
   const auto& ps = s.particles;
@@ -21,17 +32,19 @@ double potential_energy_pairwise(const System& s) {
 
 SwarmReading swarm_reading(const System& s) {
   double M = 0, ke = 0, G = 0;
-  Vec3 moment = Vec3::Zero();
+  Vec3 moment = Vec3::Zero(), momentum = Vec3::Zero();
   for (const auto& p : s.particles) {
     M += p.m;  // total_mass
     moment += p.m * p.r;
+    momentum += p.m * p.v;
     ke += 0.5 * p.m * p.v.squaredNorm();
     G += p.m * p.r.dot(p.v);
   }
   const Vec3 R = moment / M;  // cm_position
   double sum = 0;
   for (const auto& p : s.particles) sum += p.m * (p.r - R).squaredNorm();
-  return {{ke, 0.5 * (s.J * M) * sum}, R, std::sqrt(sum / M), G};
+  return {
+      {ke, 0.5 * (s.J * M) * sum}, R, std::sqrt(sum / M), G, ke - 0.5 * momentum.squaredNorm() / M};
 }
 
 EnergyParts energy_parts(const System& s) { return swarm_reading(s).energy; }

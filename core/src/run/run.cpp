@@ -10,6 +10,19 @@
 #include "swarm/physics/gravity.h"
 
 namespace swarm {
+namespace {
+
+/// (2/3) KE / N from the CM-frame kinetic energy (kinetic_energy_cm): as measure's
+/// kinetic_temperature, in the one pass a step can afford.
+double kinetic_temperature_of(double kinetic_cm, const System& s) {
+  return s.particles.empty() ? 0.0 : 2 * kinetic_cm / (3 * double(s.particles.size()));
+}
+
+double kinetic_temperature_of(const System& s) {
+  return kinetic_temperature_of(kinetic_energy_cm(s), s);
+}
+
+}  // namespace
 
 double relative_energy_change(double E0, double E_end, double energy_scale) {
   const double scale = E0 != 0 ? std::abs(E0) : energy_scale;
@@ -82,6 +95,8 @@ Run::Run(const Run& other)
       energy_scale_(other.energy_scale_),
       sample_meter_(other.sample_meter_),
       stage_meter_(other.stage_meter_),
+      stage_kinetic_sum_(other.stage_kinetic_sum_),
+      stage_kinetic_steps_(other.stage_kinetic_steps_),
       samples_(other.samples_),
       stages_(other.stages_),
       failure_(other.failure_),
@@ -105,8 +120,9 @@ void Run::expand_now(double factor) {
     const long length = steps_done_ - hand_stage_start_;
     const WallReading w =
         hand_tallies_.reading(std::lround(f * double(length)), plan_.dt, wall_area(*R, *R));
+    const System& s = engine_->system();
     stages_.push_back(
-        {*R, wall_volume(*R), w.P, w.T, total_energy(engine_->system()), w.hits, true});
+        {*R, wall_volume(*R), w.P, w.T, total_energy(s), w.hits, true, kinetic_temperature_of(s)});
   }
   engine_->set_container_radius(*R * factor);
   if (stage_by_hand_open()) open_stage_by_hand();
@@ -139,6 +155,7 @@ Sample Run::sample_now() {
   out.KE = energy.kinetic;
   out.PE = energy.potential;
   out.E = out.KE + out.PE;
+  out.T_kinetic = kinetic_temperature_of(reading.kinetic_cm, s);
   out.R = engine_->container_radius().value_or(0.0);
   out.books = books_;
   out.cm_height = reading.cm.z();
@@ -164,13 +181,22 @@ void Run::step_once() {
     const ExpansionProtocol& e = *plan_.expansion;
     const long per_stage = steps_per_stage(e, plan_.dt);
     const long in_stage = (steps_done_ - 1) % per_stage;  // index of the step just taken
-    if (in_stage >= std::lround(e.thermalize_fraction * double(per_stage)))
+    if (in_stage >= std::lround(e.thermalize_fraction * double(per_stage))) {
       stage_meter_.add(tally, plan_.dt, area);
+      // Every step, as P and T: a swarm that breathes (J != 0) changes KE within a period.
+      stage_kinetic_sum_ += kinetic_temperature_of(engine_->system());
+      ++stage_kinetic_steps_;
+    }
     if (in_stage == per_stage - 1) {
       const WallReading w = stage_meter_.reading();
       const EnergyParts energy = energy_now();
-      stages_.push_back({R, wall_volume(R), w.P, w.T, energy.kinetic + energy.potential, w.hits});
+      Stage stage{R, wall_volume(R), w.P, w.T, energy.kinetic + energy.potential, w.hits};
+      stage.T_kinetic =
+          stage_kinetic_steps_ > 0 ? stage_kinetic_sum_ / double(stage_kinetic_steps_) : 0.0;
+      stages_.push_back(stage);
       stage_meter_.reset();
+      stage_kinetic_sum_ = 0;
+      stage_kinetic_steps_ = 0;
       if (long(stages_.size()) < e.stages) engine_->set_container_radius(R * e.factor);
     }
     if (steps_done_ == protocol_steps_) open_stage_by_hand();

@@ -53,7 +53,7 @@ TEST_CASE("one sample every step of a billion is refused naming sample_every") {
     "velocity":{"speed":1}},"dt":1e-3,"duration":1e6,"sample_every":1})";
   const std::string error = resource_error(preset_of(text), ResourceLimits{});
   CHECK(error ==
-        "sample_every: 1e+09 samples need ~224 GB of memory (limit ~12 GB); raise "
+        "sample_every: 1e+09 samples need ~240 GB of memory (limit ~12 GB); raise "
         "sample_every");
   CHECK(parse_preset(text).error == error);
   // Every 100th step fits (1e7 samples, ~1.3 GB).

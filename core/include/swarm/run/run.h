@@ -35,6 +35,9 @@ struct Sample {
   /// sum m r.v about the lab origin, the container's centre: the virial balance's G
   /// (swarm/measure/virial_balance.h; energy units)
   double G = 0;
+  /// (2/3) KE / N in the CM frame, now: the gas's temperature whatever its speeds, where the
+  /// wall's T (from the hitters' kinetic energy) is that only for a Maxwellian gas
+  double T_kinetic = 0;
 };
 
 struct Stage {
@@ -44,6 +47,9 @@ struct Stage {
   double E = 0;           ///< total energy at the end of the stage
   std::int64_t hits = 0;  ///< wall hits in the averaging window
   bool by_hand = false;   ///< ended by "Expand now" rather than by the protocol
+  /// (2/3) KE / N in the CM frame, averaged over the steps P and T are; a stage by hand's is
+  /// the value at its end (its steps are not kept)
+  double T_kinetic = 0;
 };
 
 struct StageFits {
@@ -129,6 +135,8 @@ class Run {
   EnergyBooks books_;  // accumulated since t = 0
   double E0_ = 0, energy_scale_ = 1;
   WallMeter sample_meter_, stage_meter_;
+  double stage_kinetic_sum_ = 0;  // of (2/3) KE / N in the CM frame over the stage's window
+  long stage_kinetic_steps_ = 0;
   std::vector<Sample> samples_;
   std::vector<Stage> stages_;
   std::string failure_;
