@@ -23,8 +23,9 @@ swarm::Preset with_half_dt(const swarm::Preset& p);
 /// The dt check of the ensemble in `dir` (one point, its plan `plan`, its report's
 /// `quantities`) against the runs in dir/dt-half: per quantity `shift`, `relative` (over the
 /// mean of the paired runs at dt), `ci95` (the shift's), `pairs`, `half_width` (the
-/// quantity's own 95 % half-width) and `statistics_wider` (whether that half-width exceeds
-/// |shift|), and a line per quantity for the terminal table. `error` when dir/dt-half holds
+/// quantity's own 95 % half-width), `bias_at_dt` (-2 shift, first order) and
+/// `statistics_wider` (whether that half-width exceeds |bias_at_dt|), and a line per quantity
+/// for the terminal table. `error` when dir/dt-half holds
 /// something else than the same seeds at dt / 2 (another plan, preset or version); null json
 /// and no error when there is no dir/dt-half.
 struct DtCheck {

@@ -252,11 +252,12 @@ TEST_CASE("virial balance: the held-out gas's early windows flagged on their own
 TEST_CASE("virial balance: long equilibrated runs are not flagged beyond the 2 errors' rate") {
   // 12 seeds each of J = 0 (300 particles within 0.9 R, speeds in a ball, 40 time units) and
   // J = +-1 / M (the crowded swarms above, 20 time units), dt = 0.001. A window from the middle
-  // of an equilibrated run is flagged at the rate of |z| > 2, about 5 %: at most 4 of the 36
-  // (measured: 1, 1 and 2 of 12; over 60 seeds each, J = +-1 3 and 3 of 60, rms z 1.0; J = 0
-  // from the middle of 20 time units 8 of 60, rms z 1.17, where the breathing of a gas in a
-  // sphere, which only dephases, is still there at t = 10). The start wall_time_averages picks,
-  // of eleven, balances in every run (measured: 180 of 180).
+  // of an equilibrated run is flagged at the rate of |z| > 2, about 5 %: at most 5 of the 36
+  // (more happens 1 % of the time at a true 5 %; measured: 1, 1 and 2 of 12; over 60 seeds
+  // each, J = +-1: 3 and 3 of 60, rms z 1.0; J = 0 from the middle of 20 time units: 8 of 60,
+  // rms z 1.17, the breathing of a gas in a sphere, which only dephases, still there at
+  // t = 10). The start wall_time_averages picks, of eleven, balances in every run (measured:
+  // 180 of 180 over 20 time units).
   int middle_flagged = 0;
   for (const double J : {0.0, 1.0, -1.0}) {
     CAPTURE(J);
@@ -280,5 +281,5 @@ TEST_CASE("virial balance: long equilibrated runs are not flagged beyond the 2 e
                    << runs_flagged << " of 12 runs");
     CHECK(runs_flagged == 0);
   }
-  CHECK(middle_flagged <= 4);
+  CHECK(middle_flagged <= 5);
 }
