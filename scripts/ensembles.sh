@@ -4,8 +4,9 @@
 # 95 % intervals, each beside its dt systematic (--dt-check: the same seeds again at dt / 2), and
 # the ensembles' band figures into docs/figures/ensembles/. Every report is made by one build,
 # which it names (provenance.swarmlab); a folder of another build's runs is started again.
-# About an hour on a 2-core machine (the Fig. 5 long runs and the Fig. 4 runs of 40,000
-# particles are most of it; the cheap presets go first); a killed run resumes.
+# The first seven presets take about 45 minutes on a 2-core machine; the Fig. 4 runs of 40,000
+# particles and the Fig. 5 long runs, last, take hours more (a Fig. 4 run about 1.7 minutes of
+# a shared core, three runs a seed with the dt / 2 pair); a killed run resumes.
 # Usage: scripts/ensembles.sh [--seeds N] [--no-dt-check] [PRESET...]
 #   (default: 32 seeds, every preset below)
 # The ensembles stay in build/ensembles/PRESET (report.json, runs.csv, runs/); the reports are

@@ -3,7 +3,7 @@
 # docs/figures/, one command per figure set, from the shipped presets (a few minutes in all;
 # the Fig. 5 long run dominates).
 # Then the ensembles behind the pages' error bars (scripts/ensembles.sh: 32 seeds per claim,
-# each beside its dt / 2 check, about an hour more on this 2-core machine), unless --no-ensembles.
+# each beside its dt / 2 check, hours more on this 2-core machine), unless --no-ensembles.
 # Usage: scripts/report.sh [--png] [--no-ensembles]   (--png: a PNG beside each SVG; needs
 # rsvg-convert)
 # SWARMLAB=path/to/swarmlab picks the binary; by default build/app/swarmlab, built if missing.
