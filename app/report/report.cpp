@@ -251,12 +251,16 @@ NamedFigure loglog_figure(const RunRecord& r, const StageColumn& y, const StageC
   x_axis.log = y_axis.log = true;
   Panel main{x_axis, y_axis};
   main.height = 0.8;
-  main.series = {series("stages with P, T > 0", xs, ys, y.is_T() ? orange : blue, Mark::points)};
+  const bool two_temperatures = kinetic && (y.is_T() || x.is_T());
+  std::string points = "stages with P, T > 0";
+  if (two_temperatures)
+    points = (x.is_T() ? std::string(y.symbol) + " against " + kWallT : kWallT) + ", " + points;
+  main.series = {series(points, xs, ys, y.is_T() ? orange : blue, Mark::points)};
   // The fit is the paper's, of the wall's T; the kinetic T is drawn beside it, not fitted.
-  if (kinetic && y.is_T())
+  if (two_temperatures && y.is_T())
     main.series.push_back(series(std::string(kKineticT) + " (not fitted)", x.values,
                                  kinetic->values, green, Mark::points));
-  if (kinetic && x.is_T())
+  if (two_temperatures && x.is_T())
     main.series.push_back(series(std::string(y.symbol) + " against " + kKineticT + " (not fitted)",
                                  kinetic->values, y.values, green, Mark::points));
   Panel residuals{x_axis, {"residual of ln " + std::string(y.symbol), ""}};
