@@ -22,6 +22,16 @@ double kinetic_temperature_of(const System& s) {
   return kinetic_temperature_of(kinetic_energy_cm(s), s);
 }
 
+/// Steps between the kinetic T's readings in a stage's window. A reading materialises the
+/// fast engine's state, which costs several of its steps: one every step made an expansion
+/// 4x slower. A swarm's KE breathes at 2 omega (period pi / omega), so eight readings a period
+/// average it as every step would; at J = 0, where only the CM's share of KE moves, 64 over
+/// the window.
+long kinetic_stride(double omega, double dt, long window_steps) {
+  const double per_reading = omega > 0 ? M_PI / omega / 8 / dt : double(window_steps) / 64;
+  return std::max(1L, long(std::floor(per_reading)));
+}
+
 }  // namespace
 
 double relative_energy_change(double E0, double E_end, double energy_scale) {
@@ -67,9 +77,15 @@ Run::Run(std::unique_ptr<Engine> engine, const RunPlan& plan)
   E0_ = energy.kinetic + energy.potential;
   energy_scale_ = energy.kinetic + std::abs(energy.potential);
   samples_.push_back(sample_now());
-  if (plan_.expansion)
-    protocol_steps_ = plan_.expansion->stages * steps_per_stage(*plan_.expansion, plan_.dt);
-  else
+  if (plan_.expansion) {
+    const ExpansionProtocol& e = *plan_.expansion;
+    const long per_stage = steps_per_stage(e, plan_.dt);
+    protocol_steps_ = e.stages * per_stage;
+    const System& s = engine_->system();
+    kinetic_stride_ =
+        kinetic_stride(std::sqrt(std::abs(s.J) * total_mass(s)), plan_.dt,
+                       per_stage - std::lround(e.thermalize_fraction * double(per_stage)));
+  } else
     open_stage_by_hand();
 }
 
@@ -97,6 +113,7 @@ Run::Run(const Run& other)
       stage_meter_(other.stage_meter_),
       stage_kinetic_sum_(other.stage_kinetic_sum_),
       stage_kinetic_steps_(other.stage_kinetic_steps_),
+      kinetic_stride_(other.kinetic_stride_),
       samples_(other.samples_),
       stages_(other.stages_),
       failure_(other.failure_),
@@ -181,11 +198,13 @@ void Run::step_once() {
     const ExpansionProtocol& e = *plan_.expansion;
     const long per_stage = steps_per_stage(e, plan_.dt);
     const long in_stage = (steps_done_ - 1) % per_stage;  // index of the step just taken
-    if (in_stage >= std::lround(e.thermalize_fraction * double(per_stage))) {
+    const long window_start = std::lround(e.thermalize_fraction * double(per_stage));
+    if (in_stage >= window_start) {
       stage_meter_.add(tally, plan_.dt, area);
-      // Every step, as P and T: a swarm that breathes (J != 0) changes KE within a period.
-      stage_kinetic_sum_ += kinetic_temperature_of(engine_->system());
-      ++stage_kinetic_steps_;
+      if ((in_stage - window_start) % kinetic_stride_ == 0) {
+        stage_kinetic_sum_ += kinetic_temperature_of(engine_->system());
+        ++stage_kinetic_steps_;
+      }
     }
     if (in_stage == per_stage - 1) {
       const WallReading w = stage_meter_.reading();

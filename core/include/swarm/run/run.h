@@ -47,8 +47,9 @@ struct Stage {
   double E = 0;           ///< total energy at the end of the stage
   std::int64_t hits = 0;  ///< wall hits in the averaging window
   bool by_hand = false;   ///< ended by "Expand now" rather than by the protocol
-  /// (2/3) KE / N in the CM frame, averaged over the steps P and T are; a stage by hand's is
-  /// the value at its end (its steps are not kept)
+  /// (2/3) KE / N in the CM frame, averaged over the window P and T are (read at evenly
+  /// spaced steps of it: kinetic_stride in run.cpp); a stage by hand's is the value at its end
+  /// (its steps are not kept)
   double T_kinetic = 0;
 };
 
@@ -137,6 +138,7 @@ class Run {
   WallMeter sample_meter_, stage_meter_;
   double stage_kinetic_sum_ = 0;  // of (2/3) KE / N in the CM frame over the stage's window
   long stage_kinetic_steps_ = 0;
+  long kinetic_stride_ = 1;  // steps between those readings (kinetic_stride in run.cpp)
   std::vector<Sample> samples_;
   std::vector<Stage> stages_;
   std::string failure_;
