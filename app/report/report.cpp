@@ -216,7 +216,7 @@ NamedFigure stage_figure(const RunRecord& r, const StageColumn& y, const StageCo
       series(std::string(y.is_T() ? kWallT : y.symbol) + against + " at the end of each stage",
              x.values, y.values, y.is_T() ? orange : blue, Mark::line_and_points)};
   if (kinetic && y.is_T())
-    p.series.push_back(series(std::string(kKineticT) + ", over the same steps", x.values,
+    p.series.push_back(series(std::string(kKineticT) + ", over the same window", x.values,
                               kinetic->values, green, Mark::line_and_points));
   if (kinetic && x.is_T())
     p.series.push_back(series(std::string(y.symbol) + " against " + kKineticT, kinetic->values,

@@ -103,7 +103,7 @@ printf '{"J": 0, "particles": {"count": 1000, "position_radius": 1, "velocity": 
 "$bin" run "$work/maxwell.json" --plots "$work/maxwell" --out "$work/maxwell.result.json" --quiet &&
   ok || bad "J = 0 expansion run"
 python3 - "$work/maxwell.result.json" "$(series_of "$work/maxwell/wall-history.csv" "$kinetic")" \
-  "$(series_of "$work/maxwell/stages-T-V.csv" "$kinetic, over the same steps")" \
+  "$(series_of "$work/maxwell/stages-T-V.csv" "$kinetic, over the same window")" \
   "$(series_of "$work/maxwell/stages-T-V.csv" "T at the wall at the end of each stage")" <<'PY' &&
 import json, sys
 final = json.load(open(sys.argv[1]))["final"]["particles"]
