@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <variant>
 
@@ -191,8 +192,12 @@ struct StageColumn {
 /// V, P, T and, where the record has it, T kinetic (stage_figure draws it beside T).
 std::vector<StageColumn> stage_columns(const std::vector<swarm::Stage>& stages) {
   std::vector<double> V, P, T, T_kinetic;
+  // A stage without a wall hit has no wall T (the record's 0 means "none"): a gap in the line
+  // and "nan" in the CSV, never a point at T = 0. Its P of 0 is a measurement and stays.
   for (const swarm::Stage& s : stages)
-    V.push_back(s.V), P.push_back(s.P), T.push_back(s.T), T_kinetic.push_back(s.T_kinetic);
+    V.push_back(s.V), P.push_back(s.P),
+        T.push_back(s.hits > 0 ? s.T : std::numeric_limits<double>::quiet_NaN()),
+        T_kinetic.push_back(s.T_kinetic);
   std::vector<StageColumn> out = {{"V", {"volume V", "length³"}, V},
                                   {"P", {"pressure P", "force/area"}, P},
                                   {"T", {"temperature T", "energy"}, T}};

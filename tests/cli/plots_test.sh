@@ -158,6 +158,25 @@ PY
 "$bin" report "$work/old.result.json" --plots "$work/old" --quiet && ! grep -q "$kinetic" "$work/old"/*.csv &&
   has_figures "$work/old" wall-history stages-T-V && ok || bad "a RESULT.json without T_kinetic"
 
+# A stage without a wall hit has no wall T: a gap in the T-V line and "nan" in its CSV, not 0.
+python3 - "$work/short.result.json" "$work/no-hits.result.json" <<'PY'
+import json, sys
+j = json.load(open(sys.argv[1]))
+j["stages"][2]["hits"], j["stages"][2]["T"], j["stages"][2]["P"] = 0, 0, 0
+json.dump(j, open(sys.argv[2], "w"))
+PY
+"$bin" report "$work/no-hits.result.json" --plots "$work/no-hits" --quiet &&
+  python3 - "$work/no-hits/stages-T-V.csv" "$work/no-hits/stages-T-V.svg" "$work/no-hits.result.json" <<'PY' && ok || bad "a stage without hits drawn at T = 0"
+import csv, json, sys
+rows = [r for r in csv.reader(l for l in open(sys.argv[1]) if not l.startswith("#"))][1:]
+wall = [r[3] for r in rows if r[1].startswith("T at the wall")]
+hits = [s["hits"] for s in json.load(open(sys.argv[3]))["stages"]]
+assert len(wall) == 5 and wall[2] == "nan", wall
+assert all((w == "nan") == (h == 0) and (h == 0 or float(w) > 0) for w, h in zip(wall, hits)), (wall, hits)
+svg = open(sys.argv[2]).read()
+assert svg.count("<polyline") >= 3, svg.count("<polyline")  # the wall's T in two pieces, T kinetic whole
+PY
+
 # PNGs where rsvg-convert is installed (scripts/deps.sh native installs it).
 if command -v rsvg-convert >/dev/null; then
   "$bin" run "$presets/fig1-four-masses.json" --plots "$work/png" --png --quiet &&
