@@ -198,19 +198,7 @@ void wall_rows(const swarm::WallEstimate& w) {
 
 /// A warning while the read-outs' window is not yet in equilibrium by the virial balance
 /// (swarm/measure/virial_balance.h), where the balance applies; nothing once it holds.
-void virial_row(const swarm::Run& run, const swarm::WallEstimate& w) {
-  if (w.intervals == 0 || !swarm::virial_balance_applies(run.plan().engine)) return;
-  const auto& samples = run.samples();
-  const double from = samples.back().t - w.window;
-  // The sample at the window's start: the balance of this window alone, at the cost of its
-  // own samples.
-  const auto first = std::lower_bound(samples.begin(), samples.end(), from,
-                                      [](const swarm::Sample& s, double t) {
-                                        return s.t < t - 1e-9 * std::max(1.0, std::abs(t));
-                                      });
-  if (first == samples.end()) return;
-  const std::optional<swarm::VirialBalance> b = swarm::virial_balance(
-      swarm::virial_intervals(samples, std::size_t(first - samples.begin())), from);
+void virial_row(const std::optional<swarm::VirialBalance>& b, const swarm::WallEstimate& w) {
   if (!b || b->holds) return;
   char value[160], help[1200];
   std::snprintf(value, sizeof value, tr("not in equilibrium yet: the virial balance is off by %.2g %%"),
@@ -296,7 +284,7 @@ void draw_readouts(AppState& state) {
     std::snprintf(value, sizeof value, "%.4g   V = %.4g", *R, swarm::sphere_volume(*R));
     row("R", value, tr("Container radius and volume V = 4/3 \u03c0 R\u00b3."));
     wall_rows(state.instruments.wall);
-    virial_row(state.run->primary(), state.instruments.wall);
+    virial_row(state.instruments.virial, state.instruments.wall);
     std::snprintf(value, sizeof value, "%.4g", swarm::kinetic_temperature(s));
     row(tr("T kinetic"), value,
         tr("T kinetic = (2/3) KE / N in the centre of mass's frame (k_B = 1), now. The wall's "

@@ -1,5 +1,8 @@
 #include "ui/time/instruments.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "swarm/physics/system.h"
 
 namespace swarmlab {
@@ -52,6 +55,19 @@ void update_wall(Instruments& in, LiveRun& run, double average_window) {
   in.wall_samples = samples.size();
   in.wall_window = average_window;
   in.wall = swarm::wall_estimate(swarm::wall_intervals(samples), average_window);
+  in.virial.reset();
+  if (in.wall.intervals == 0 || !swarm::virial_balance_applies(run.primary().plan().engine))
+    return;
+  const double from = samples.back().t - in.wall.window;
+  // The sample at the window's start: the balance of this window alone, at the cost of its
+  // own samples.
+  const auto first = std::lower_bound(samples.begin(), samples.end(), from,
+                                      [](const swarm::Sample& s, double t) {
+                                        return s.t < t - 1e-9 * std::max(1.0, std::abs(t));
+                                      });
+  if (first != samples.end())
+    in.virial = swarm::virial_balance(
+        swarm::virial_intervals(samples, std::size_t(first - samples.begin())), from);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "swarm/measure/period_meter.h"
 #include "swarm/measure/stopwatch.h"
 #include "swarm/measure/thermometry.h"
+#include "swarm/measure/virial_balance.h"
 #include "ui/time/live_run.h"
 
 namespace swarmlab {
@@ -31,6 +32,9 @@ struct Instruments {
   std::optional<ParticleTrack> track;  ///< while a particle is selected
   /// P and T over the plots' averaging window, recomputed when a sample arrives.
   swarm::WallEstimate wall;
+  /// The virial balance over the same window, where it applies (swarm/measure/virial_balance.h);
+  /// recomputed with `wall`, not per frame: its cost grows with the window.
+  std::optional<swarm::VirialBalance> virial;
   long wall_run = 0;
   std::size_t wall_samples = 0;
   double wall_window = -1;
