@@ -323,10 +323,13 @@ PY
 "$bin" report "$work/with-nulls.json" --plots "$work/null-plots" --quiet 2>"$work/stderr" && ok ||
   bad "report refuses nulls: $(cat "$work/stderr")"
 
-# A big run shows its progress at least once a second (the bar once moved every steps/1000
-# steps: for 1e6 particles 1e9 particle-steps between draws). Watched for 10 s, then stopped.
+# A big run shows its progress about once a second (the bar once moved every steps/1000
+# steps: for 1e6 particles 1e9 particle-steps between draws, minutes apart). Watched for 10 s,
+# then stopped. The run sizes its chunks to 0.05-0.2 s and the bar draws after a second, so a
+# gap is about 1 s; on a machine whose two cores carry the suite's other lane it was 1.00 and
+# 1.14 s, so up to 2 s passes.
 printf '{"J":1,"particles":{"count":1000000,"position_radius":1,"velocity":{"speed":1}},"container":{"radius":1},"dt":1e-3,"duration":1000}' >"$work/big.json"
-python3 - "$bin" "$work/big.json" <<'PY' && ok || bad "big run: progress less often than once a second"
+python3 - "$bin" "$work/big.json" <<'PY' && ok || bad "big run: progress less often than every 2 s"
 import os, subprocess, sys, time, select
 p = subprocess.Popen([sys.argv[1], "run", sys.argv[2]], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
 start = time.monotonic(); draws = []
@@ -338,7 +341,7 @@ while time.monotonic() - start < 10:
 p.kill(); p.wait()
 gaps = [b - a for a, b in zip(draws, draws[1:])]
 print("progress draws at", ["%.2f" % t for t in draws[:3]], "largest gap %.2f s" % max(gaps or [99]))
-sys.exit(0 if draws and draws[0] < 8 and max(gaps or [99]) <= 1.0 else 1)
+sys.exit(0 if draws and draws[0] < 8 and max(gaps or [99]) <= 2.0 else 1)
 PY
 
 finish
