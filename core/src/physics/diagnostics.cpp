@@ -10,17 +10,6 @@ double kinetic_energy(const System& s) {
   return ke;
 }
 
-double kinetic_energy_cm(const System& s) {
-  double M = 0, twice_ke = 0;
-  Vec3 momentum = Vec3::Zero();
-  for (const auto& p : s.particles) {
-    M += p.m;
-    momentum += p.m * p.v;
-    twice_ke += p.m * p.v.squaredNorm();
-  }
-  return M > 0 ? 0.5 * (twice_ke - momentum.squaredNorm() / M) : 0.0;
-}
-
 double potential_energy_pairwise(const System& s) {
   double sum = 0;  // over i < k, which is half the double sum of eq. 8
   const auto& ps = s.particles;

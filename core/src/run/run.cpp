@@ -6,20 +6,18 @@
 #include <utility>
 
 #include "run/advance_to_end.h"
+#include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/diagnostics.h"
 #include "swarm/physics/gravity.h"
 
 namespace swarm {
 namespace {
 
-/// (2/3) KE / N from the CM-frame kinetic energy (kinetic_energy_cm): as measure's
-/// kinetic_temperature, in the one pass a step can afford.
+/// (2/3) KE / N from a sample's CM-frame kinetic energy (SwarmReading::kinetic_cm), which
+/// the sample's one pass over the particles already has; elsewhere measure's
+/// kinetic_temperature.
 double kinetic_temperature_of(double kinetic_cm, const System& s) {
   return s.particles.empty() ? 0.0 : 2 * kinetic_cm / (3 * double(s.particles.size()));
-}
-
-double kinetic_temperature_of(const System& s) {
-  return kinetic_temperature_of(kinetic_energy_cm(s), s);
 }
 
 /// Steps between the kinetic T's readings in a stage's window. A reading materialises the
@@ -139,7 +137,7 @@ void Run::expand_now(double factor) {
         hand_tallies_.reading(std::lround(f * double(length)), plan_.dt, wall_area(*R, *R));
     const System& s = engine_->system();
     stages_.push_back(
-        {*R, wall_volume(*R), w.P, w.T, total_energy(s), w.hits, true, kinetic_temperature_of(s)});
+        {*R, wall_volume(*R), w.P, w.T, total_energy(s), w.hits, true, kinetic_temperature(s)});
   }
   engine_->set_container_radius(*R * factor);
   if (stage_by_hand_open()) open_stage_by_hand();
@@ -202,7 +200,7 @@ void Run::step_once() {
     if (in_stage >= window_start) {
       stage_meter_.add(tally, plan_.dt, area);
       if ((in_stage - window_start) % kinetic_stride_ == 0) {
-        stage_kinetic_sum_ += kinetic_temperature_of(engine_->system());
+        stage_kinetic_sum_ += kinetic_temperature(engine_->system());
         ++stage_kinetic_steps_;
       }
     }

@@ -63,7 +63,6 @@ TEST_CASE("the kinetic energy in the CM frame: by hand, and as sum 1/2 m |v - V_
   // speeds^2 (3/4)^2 + (3/4)^2 = 9/8 and (1/4)^2 + (1/4)^2 = 1/8: KE_cm = 9/16 + 3/16 = 3/4.
   System two;
   two.particles = {{1.0, {0, 0, 0}, {1, 0, 0}}, {3.0, {2, 0, 0}, {0, 1, 0}}};
-  CHECK(kinetic_energy_cm(two) == Approx(0.75));
   CHECK(swarm_reading(two).kinetic_cm == Approx(0.75));
   // A swarm given a drift: KE_cm is the drift-free KE, whatever the drift.
   System s = testing::random_swarm(3000, 1.3, 17, 2.0);
@@ -71,7 +70,6 @@ TEST_CASE("the kinetic energy in the CM frame: by hand, and as sum 1/2 m |v - V_
   double direct = 0;
   for (const Particle& p : s.particles) direct += 0.5 * p.m * (p.v - V).squaredNorm();
   for (Particle& p : s.particles) p.v += Vec3(5, -3, 2);
-  CHECK(kinetic_energy_cm(s) == Approx(direct).epsilon(1e-11));
   CHECK(swarm_reading(s).kinetic_cm == Approx(direct).epsilon(1e-11));
   CHECK(kinetic_energy(s) > 2 * direct);  // the drift's share is left out
 }

@@ -6,9 +6,6 @@
 namespace swarm {
 
 double kinetic_energy(const System& s);
-/// The kinetic energy in the CM frame, sum 1/2 m |v - V_cm|^2, in one pass as KE - |p|^2 / 2M
-/// (p the total momentum): (2/3) of it over N is the kinetic temperature.
-double kinetic_energy_cm(const System& s);
 /// U = (J/4) sum_{i,k} m_i m_k |r_i - r_k|^2 (eq. 8), summed over every pair: O(N^2).
 double potential_energy_pairwise(const System& s);
 /// U = (1/2) J M sum_k m_k |r_k - R_cm|^2 (eq. 13 about the moving CM): O(N).
@@ -34,7 +31,7 @@ struct SwarmReading {
   Vec3 cm = Vec3::Zero();
   double size = 0;
   double G = 0;  ///< sum m r.v about the origin: the virial's G (swarm/measure/virial_balance.h)
-  double kinetic_cm = 0;  ///< as kinetic_energy_cm
+  double kinetic_cm = 0;  ///< sum 1/2 m |v - V_cm|^2, in the same pass as KE - |p|^2 / 2M
 };
 SwarmReading swarm_reading(const System& s);
 /// L = sum m (r - R_cm) x (v - V_cm).
