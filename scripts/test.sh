@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test suite, in two tiers (README, "Tests"):
+# The test suite, in two tiers (CONTRIBUTING.md, "The whole suite"):
 #   scripts/test.sh          everything, as CI runs it (.ci/run): builds natively and with
 #                            Emscripten, then the doctest suite natively and under node, the CLI
 #                            as a process, the desktop window under Xvfb, native == wasm, the
