@@ -22,7 +22,7 @@ constexpr double kOutputBytesPerSample = 2000;     // JSON tree and text, CSV, f
 /// An inelastic floor takes the analytic method off the fast engine (fast_engine_applies; drag
 /// b on chosen particles would too, but presets give it a numerical method only): the reference
 /// engine's particle-step costs about as much as 50 of the fast engine's (6e7 against 3e9 a
-/// second, README's Performance table). Gravity, mass-proportional drag and an elastic floor
+/// second, bench/RESULTS.md's Throughput table). Gravity, mass-proportional drag and an elastic floor
 /// stay on it, at about 1x (drag), 6-13x (gravity) and 12-24x (gravity and a floor) its plain
 /// cost per particle-step (bench/forces_bench.cpp, bench/RESULTS.md); with a moving or hot wall
 /// as well they are charged the same (not measured).
