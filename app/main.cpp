@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
       "a Slurm array, without running them");
   for (auto [cmd, o] : {std::pair{ensemble_cmd, &ensemble}, std::pair{plan_cmd, &plan}}) {
     cmd->add_option("preset", o->preset_path,
-                    "Preset file (JSON), or a sweep over some of a preset's keys (README)")
+                    "Preset file (JSON), or a sweep over some of a preset's keys (docs/command-line.md)")
         ->required();
     cmd->add_option("--seeds", o->seeds,
                     "How many independent runs (per sweep point; a sweep may give its own)")

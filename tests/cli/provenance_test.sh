@@ -98,7 +98,7 @@ check.lines_say(comments, "seeds: 5")
 assert rows[0] == ["panel", "series", "time t", "y"] and len(rows) > 10, rows[:2]
 assert all(len(r) == 4 for r in rows[1:]) and [float(r[3]) for r in rows[1:]]
 PY
-  # The samples CSV is a plain table: its header stays the first line (README, --csv).
+  # The samples CSV is a plain table: its header stays the first line (docs/command-line.md, --csv).
   head -1 "$work/samples.csv" | grep -q '^"t","P","T",' && ok || bad "samples CSV: the header is not the first line"
   if [ ${#png[@]} -gt 0 ]; then
     python3 - "$work/figures/equilibration.png" <<'PY' && ok || bad "run --png: text chunks"

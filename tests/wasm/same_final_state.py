@@ -33,7 +33,7 @@ def main():
                     for x, y in zip(p[key], q[key]):
                         worst = max(worst, abs(x - y) / scale)
             # The whole result, not only the final state: samples, stages and fits too; apart
-            # from what made each (README, "Provenance"): the wasm's names Emscripten and node.
+            # from what made each (docs/command-line.md, "Provenance"): the wasm's names Emscripten and node.
             made = a.pop("provenance"), b.pop("provenance")
             ok = a == b and made[1]["compiler"].startswith("Emscripten") and made[1]["host"]["os"] == "node"
             print(f"{'ok  ' if ok else 'FAIL'} {preset}: {len(pa)} particles, "

@@ -98,7 +98,7 @@ async function main(url) {
         `last t ${lastT}, shown ${shown}, reached ${reached}, sampling interval ${interval}`);
 
   // 6. A plot's Export SVG, CSV and PNG, pressed as a person does: each file says what made it
-  // (README, "Provenance"): this build's version, Emscripten, the browser, now, the seeds (the
+  // (docs/command-line.md, "Provenance"): this build's version, Emscripten, the browser, now, the seeds (the
   // link's preset lists its particles: none).
   const me = person(page, 'mouse');
   // The version of the build that made the page (scripts/web.sh builds it in build-wasm/), as

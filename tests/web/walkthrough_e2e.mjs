@@ -29,7 +29,7 @@ const lessons = readdirSync(lessonDir).filter((f) => f.endsWith('.json')).sort()
 
 // The physics a student would use for the right number (independent of the app's code), from
 // the preset's particles, or for a generated swarm of equal masses its count times its mass
-// (README, "Preset reference"; default 1). Random masses would leave M to the read-outs.
+// (docs/presets.md, "Preset reference"; default 1). Random masses would leave M to the read-outs.
 function physics(preset, M) {
   const ps = Array.isArray(preset.particles) ? preset.particles : null;
   const J = preset.J;

@@ -191,7 +191,7 @@ void wall_rows(const swarm::WallEstimate& w) {
                 tr("This ± is about this run: how far its window's mean may lie from what this "
                    "run would give if it went on for ever. Runs from other seeds differ by more "
                    "(their energies differ: 3 to 17 times more at long windows); for that "
-                   "spread, and a mean over seeds, run an ensemble (README, 'Ensembles: "
+                   "spread, and a mean over seeds, run an ensemble (docs/command-line.md, 'Ensembles: "
                    "numbers with error bars')."));
   row(tr("P, T over"), value, translator().numbers(help).c_str());
 }

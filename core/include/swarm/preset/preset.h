@@ -1,6 +1,6 @@
 #pragma once
 /// The shared preset format (JSON, version 1): one file runs the same in the CLI, the desktop
-/// app and the browser. The README's "Preset reference" documents every key.
+/// app and the browser. docs/presets.md, "Preset reference", documents every key.
 // Implemented in core/src/preset/preset_{read,rules,write,derived}.cpp, one idea each.
 
 #include <optional>
