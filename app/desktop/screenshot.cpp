@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "files/atomic_file.h"
-#include "ui/platform/gl_api.h"
+#include "ui/kit/gl_api.h"
 
 namespace swarmlab {
 

@@ -16,7 +16,7 @@
 #include "swarm/physics/system.h"
 #include "ui/classroom/presentation.h"
 #include "ui/input/shortcuts.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/touch_target.h"
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/panels/panels.h"

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "ui/platform/gl_api.h"
+#include "ui/kit/gl_api.h"
 
 namespace swarmlab {
 namespace {

@@ -14,11 +14,11 @@
 #include "i18n/speak.h"
 #include "i18n/translator.h"
 #include "ui/input/keyboard_regions.h"
+#include "ui/kit/gl_api.h"
 #include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/cjk_font.h"
 #include "ui/platform/fonts.h"
 #include "ui/platform/language_memory.h"
-#include "ui/platform/gl_api.h"
 #include "ui/plots/plot_export.h"
 
 namespace swarmlab {

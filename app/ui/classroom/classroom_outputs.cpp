@@ -5,7 +5,7 @@
 
 #include "i18n/translator.h"
 
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 #include "ui/lesson_player/input_kind.h"
 #include "ui/lesson_player/lesson_speech.h"
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 
 #include "i18n/translator.h"
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 #include "ui/parallel_dom/item_tooltip.h"
 
 namespace swarmlab {

@@ -8,9 +8,9 @@
 
 #include "i18n/translator.h"
 #include "ui/classroom/presentation.h"
-#include "ui/classroom/theme_style.h"
 #include "ui/input/keyboard_regions.h"
 #include "ui/input/shortcut_table.h"
+#include "ui/kit/theme_style.h"
 
 namespace swarmlab {
 namespace {

@@ -8,7 +8,7 @@
 #include "i18n/printed.h"
 #include "i18n/translator.h"
 #include "lessons/device_words.h"
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 #include "ui/lesson_player/input_kind.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "ui/parallel_dom/item_tooltip.h"

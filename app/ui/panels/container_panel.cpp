@@ -9,7 +9,7 @@
 
 #include "i18n/translator.h"
 #include "swarm/physics/wall.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "i18n/translator.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {

@@ -11,7 +11,7 @@
 #include "swarm/measure/stopwatch.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "i18n/translator.h"
-#include "ui/input/wrapping_tabs.h"
+#include "ui/kit/wrapping_tabs.h"
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/window_placement.h"

@@ -12,8 +12,8 @@
 #include "i18n/translator.h"
 #include "swarm/physics/regime.h"
 #include "swarm/physics/system.h"
-#include "ui/classroom/theme_style.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/theme_style.h"
+#include "ui/kit/touch_target.h"
 #include "ui/panels/panels.h"
 #include "ui/parallel_dom/item_tooltip.h"
 

@@ -3,7 +3,7 @@
 #include <imgui.h>
 
 #include "i18n/translator.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {

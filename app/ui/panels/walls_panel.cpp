@@ -12,7 +12,7 @@
 #include "i18n/translator.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/wall_motion.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/touch_target.h"
 #include "ui/panels/panels.h"
 
 namespace swarmlab {

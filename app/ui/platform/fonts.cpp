@@ -7,7 +7,7 @@
 #include <string_view>
 
 #include "i18n/translator.h"
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 #include "ui/platform/cjk_font.h"
 #include "ui/platform/font_file_check.h"
 

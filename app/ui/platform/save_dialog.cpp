@@ -10,8 +10,8 @@
 
 #include "i18n/translator.h"
 #include "report/run_csv.h"
-#include "ui/classroom/theme_style.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/theme_style.h"
+#include "ui/kit/touch_target.h"
 
 namespace swarmlab {
 namespace {

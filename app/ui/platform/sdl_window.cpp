@@ -4,8 +4,8 @@
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
 
+#include "ui/kit/gl_api.h"
 #include "ui/platform/fonts.h"
-#include "ui/platform/gl_api.h"
 
 namespace swarmlab {
 

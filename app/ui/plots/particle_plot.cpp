@@ -6,9 +6,9 @@
 #include <cstdio>
 
 #include "i18n/translator.h"
+#include "ui/kit/theme_style.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/plot_widget.h"
-#include "ui/classroom/theme_style.h"
 
 namespace swarmlab {
 

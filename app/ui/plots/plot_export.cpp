@@ -14,7 +14,7 @@
 #include "report/provenance.h"
 #include "report/svg_plot.h"
 #include "ui/app_state.h"
-#include "ui/platform/gl_api.h"
+#include "ui/kit/gl_api.h"
 #include "ui/platform/save_dialog.h"
 #include "ui/plots/plot_export_menu.h"
 

@@ -5,8 +5,8 @@
 #include <utility>
 
 #include "i18n/translator.h"
-#include "ui/classroom/theme_style.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/theme_style.h"
+#include "ui/kit/touch_target.h"
 #include "ui/plots/plot_figure.h"
 
 namespace swarmlab {

@@ -8,7 +8,7 @@
 
 #include "i18n/translator.h"
 #include "plotting/axis_ticks.h"
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 #include "ui/plots/plot_export_menu.h"
 
 namespace swarmlab {

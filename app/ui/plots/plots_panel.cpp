@@ -11,8 +11,8 @@
 
 #include "i18n/translator.h"
 #include "swarm/physics/regime.h"
-#include "ui/classroom/theme_style.h"
-#include "ui/input/wrapping_tabs.h"
+#include "ui/kit/theme_style.h"
+#include "ui/kit/wrapping_tabs.h"
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/fit_quality.h"

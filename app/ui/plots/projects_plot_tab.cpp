@@ -11,7 +11,7 @@
 
 #include "i18n/translator.h"
 #include "report/pv_loop.h"
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/plot_widget.h"
 #include "ui/plots/project_plots.h"

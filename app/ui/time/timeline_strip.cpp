@@ -8,8 +8,8 @@
 #include <string>
 
 #include "i18n/translator.h"
-#include "ui/classroom/theme_style.h"
-#include "ui/input/touch_target.h"
+#include "ui/kit/theme_style.h"
+#include "ui/kit/touch_target.h"
 #include "ui/time/time_controls.h"
 #include "ui/time/timeline_scale.h"
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "ui/platform/gl_api.h"
+#include "ui/kit/gl_api.h"
 #include "ui/view/camera.h"
 #include "ui/view/colour_map.h"
 

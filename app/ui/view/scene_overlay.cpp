@@ -11,7 +11,7 @@
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/physics/orbit_ahead.h"
 #include "swarm/physics/regime.h"
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 
 namespace swarmlab {
 namespace {

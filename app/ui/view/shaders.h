@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "ui/platform/gl_api.h"
+#include "ui/kit/gl_api.h"
 
 namespace swarmlab {
 

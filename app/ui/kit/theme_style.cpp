@@ -1,4 +1,4 @@
-#include "ui/classroom/theme_style.h"
+#include "ui/kit/theme_style.h"
 
 namespace swarmlab {
 namespace {

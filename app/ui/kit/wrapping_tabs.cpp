@@ -1,9 +1,9 @@
-#include "ui/input/wrapping_tabs.h"
+#include "ui/kit/wrapping_tabs.h"
 
 #include <imgui.h>
 #include <imgui_internal.h>
 
-#include "ui/input/touch_target.h"
+#include "ui/kit/touch_target.h"
 #include "ui/parallel_dom/parallel_dom.h"
 
 namespace swarmlab {
