@@ -52,8 +52,8 @@ void print_table(const swarm::RunSummary& s, swarm::SideBySide& runs) {
       "%-14s %ld\n%-14s %.6g\n",
       "M", s.M, "omega", s.omega, "E0", s.E0, "E_end", s.E_end, "energy_drift", s.energy_drift,
       "wall_hits", (long long)s.wall_hits, "steps", s.steps, "t_end", s.t_end);
-  // The kinetic T beside the wall's: they agree only for Maxwellian speeds (README, "What T
-  // means"), which the KS test's p-value says.
+  // The kinetic T beside the wall's: they agree only for Maxwellian speeds (docs/physics.md,
+  // "Wall thermometry"), which the KS test's p-value says.
   const swarm::SpeedCheck speeds = swarm::check_speeds(runs.primary().engine().system());
   std::printf("%-14s %.6g\n%-14s %.3g\n", "T_kinetic", speeds.T, "maxwellian_p", speeds.maxwellian_p);
   // Appendix B: the energy books and the floor, when energy comes or goes from outside.

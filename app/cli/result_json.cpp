@@ -20,7 +20,7 @@ json vec(const swarm::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 /// The final speeds against the Maxwellian: T_kinetic = (2/3) KE / N in the CM frame, and
 /// the p-value of the Kolmogorov-Smirnov test of the speeds against the Maxwellian at that T
-/// (README, "What T means": the wall's T is the kinetic T only for a Maxwellian gas).
+/// (docs/physics.md, "Wall thermometry": the wall's T is the kinetic T only for a Maxwellian gas).
 json speeds_json(const swarm::System& final_state) {
   const swarm::SpeedCheck c = swarm::check_speeds(final_state);
   return {{"T_kinetic", c.T},

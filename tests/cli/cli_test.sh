@@ -86,7 +86,7 @@ else
   bad "good run failed"
 fi
 
-# Two temperatures (README, "What T means"): the summary's T_kinetic is (2/3) KE / N in the CM
+# Two temperatures (docs/physics.md, "Wall thermometry"): the summary's T_kinetic is (2/3) KE / N in the CM
 # frame and maxwellian_p the KS test of the final speeds against the Maxwellian at that T, both
 # recomputed here from the final state. J = 0 with speeds uniform in a ball never relaxes (each
 # particle keeps its speed at a specular wall): p tiny, and the wall's T below T_kinetic

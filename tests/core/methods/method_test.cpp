@@ -30,10 +30,10 @@ double error_after(const MethodInfo& method, double t_end, int steps) {
   return (s.particles[0].r - exact).norm();
 }
 
-/// The README's method table: the lines after its header row, up to the first non-table line.
-std::vector<std::string> readme_method_rows() {
-  // The presets live in assets/presets/ of the repository, README.md at its top.
-  std::ifstream in(SWARM_PRESET_DIR "/../../README.md");
+/// docs/physics.md's method table: the lines after its header row, up to the first non-table line.
+std::vector<std::string> documented_method_rows() {
+  // The presets live in assets/presets/ of the repository, docs/physics.md beside them.
+  std::ifstream in(SWARM_PRESET_DIR "/../../docs/physics.md");
   REQUIRE(in);
   std::vector<std::string> rows;
   std::string line;
@@ -99,8 +99,8 @@ TEST_CASE("each step function has its stated order on a two-body circular orbit"
   }
 }
 
-TEST_CASE("README's method table lists exactly the descriptors, in their order") {
-  const std::vector<std::string> rows = readme_method_rows();
+TEST_CASE("docs/physics.md's method table lists exactly the descriptors, in their order") {
+  const std::vector<std::string> rows = documented_method_rows();
   const auto& table = method_table();
   REQUIRE(rows.size() == table.size());
   for (std::size_t i = 0; i < table.size(); ++i) {

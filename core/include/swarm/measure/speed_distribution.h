@@ -53,7 +53,7 @@ struct SpeedCheck {
   std::size_t n = 0;
   double ks_distance = 0;  ///< the KS distance; judge it by maxwellian_p (finite-n correct)
   /// ks_p_value of ks_distance: below 0.01, the speeds are not Maxwellian at the 1 % level
-  /// (and the wall's T is then not the kinetic T: README, "What T means").
+  /// (and the wall's T is then not the kinetic T: docs/physics.md, "Wall thermometry").
   double maxwellian_p = 1;
   SpeedHistogram histogram;
 };

@@ -1,7 +1,7 @@
 #pragma once
 /// The ways Swarm Lab can move a system forward in time, each described once in one table:
-/// the preset validator, the UI's menu, tooltips and plot colours and the README's method
-/// table all read it. Adding a method is an enum value, its step function (step_*.cpp), one
+/// the preset validator, the UI's menu, tooltips and plot colours and the method table of
+/// docs/physics.md all read it. Adding a method is an enum value, its step function (step_*.cpp), one
 /// row in method.cpp and its test.
 
 #include <array>
