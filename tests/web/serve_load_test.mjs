@@ -12,7 +12,7 @@
 // prints the bytes sent and the slowest client's time per round.
 //   node tests/web/serve_load_test.mjs           (after scripts/web.sh --build-only)
 //   node tests/web/serve_load_test.mjs --nginx   the same against Debian's nginx with
-//        web/serve/nginx.conf (the README's lines for a school's server; needs nginx and
+//        web/serve/nginx.conf (docs/teacher-guide.md's lines for a school's server; needs nginx and
 //        libnginx-mod-http-brotli-static; its temporary files go to build/serve/nginx)
 import { spawn, spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync, mkdirSync } from 'node:fs';
