@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("preset", run.preset_path, "Preset file (JSON)")->required();
   run_cmd->add_option("--out", run.out_path,
                       "Write RESULT.json: summary, samples, stages, fits and the final state");
-  run_cmd->add_option("--csv", run.csv_path, "Write the samples as CSV (t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size)");
+  run_cmd->add_option("--csv", run.csv_path, "Write the samples as CSV (t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size,T_kinetic)");
   CLI::Option* plots = run_cmd->add_option(
       "--plots", run.plots_dir,
       "Write the run's figures into this directory: SVG, and the CSV behind each");

@@ -28,13 +28,13 @@ std::string samples_csv(const std::vector<swarm::Sample>& samples) {
   std::string out = header_row(kSamplesCsvHeader);
   for (const swarm::Sample& x : samples)
     out += number_row({x.t, x.P, x.T, x.KE, x.PE, x.E, double(x.hits), x.R, x.books.wall_work,
-                       x.books.wall_heat, x.books.drag_loss, x.cm_height, x.size});
+                       x.books.wall_heat, x.books.drag_loss, x.cm_height, x.size, x.T_kinetic});
   return out;
 }
 
 std::string stages_csv(const std::vector<swarm::Stage>& stages) {
   std::string out = header_row(kStagesCsvHeader);
-  for (const swarm::Stage& x : stages) out += number_row({x.R, x.V, x.P, x.T, x.E, double(x.hits)});
+  for (const swarm::Stage& x : stages) out += number_row({x.R, x.V, x.P, x.T, x.E, double(x.hits), x.T_kinetic});
   return out;
 }
 

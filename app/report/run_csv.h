@@ -13,10 +13,14 @@
 namespace swarmlab::report {
 
 /// The samples' column names, in order: t,P,T,KE,PE,E,hits,R, then the energy books
-/// (work, heat, drag_loss since t = 0), the CM's height and the swarm's rms size.
-inline constexpr const char* kSamplesCsvHeader = "t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size";
-/// The stages' column names, in order: the keys of RESULT.json's "stages", in its order.
-inline constexpr const char* kStagesCsvHeader = "R,V,P,T,E,hits";
+/// (work, heat, drag_loss since t = 0), the CM's height, the swarm's rms size and T_kinetic,
+/// (2/3) KE / N in the CM frame beside the wall's T. T_kinetic came last so that a sheet
+/// written for the earlier columns reads them where they were.
+inline constexpr const char* kSamplesCsvHeader =
+    "t,P,T,KE,PE,E,hits,R,work,heat,drag_loss,cm_height,size,T_kinetic";
+/// The stages' column names, in order: the values of RESULT.json's "stages", T_kinetic last
+/// (as in the samples).
+inline constexpr const char* kStagesCsvHeader = "R,V,P,T,E,hits,T_kinetic";
 
 /// One row per sample, full precision (17 significant digits) so the file re-reads exactly.
 std::string samples_csv(const std::vector<swarm::Sample>& samples);

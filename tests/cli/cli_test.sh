@@ -80,7 +80,7 @@ assert all(set(x) >= {"t", "P", "T", "KE", "PE", "E"} for x in d["samples"])
 assert len(d["final"]["particles"]) == 2 and abs(d["final"]["t"] - 2) < 1e-9
 assert "stages" in d
 PY
-  head -1 "$work/samples.csv" | grep -q '^"t","P","T","KE","PE","E","hits","R","work","heat","drag_loss","cm_height","size"$' && ok || bad "csv header"
+  head -1 "$work/samples.csv" | grep -q '^"t","P","T","KE","PE","E","hits","R","work","heat","drag_loss","cm_height","size","T_kinetic"$' && ok || bad "csv header"
   [ ! -s "$work/stdout" ] && ok || bad "--quiet printed to stdout"
 else
   bad "good run failed"

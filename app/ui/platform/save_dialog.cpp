@@ -129,7 +129,7 @@ std::string request_samples_csv(AppState& state) {
 }
 
 std::string request_stages_csv(AppState& state) {
-  return request_csv(state, tr("the expansion stages as CSV (R,V,P,T,E,hits)"), "-stages.csv",
+  return request_csv(state, tr("the expansion stages as CSV (R,V,P,T,E,hits,T_kinetic)"), "-stages.csv",
                      report::stages_csv(state.run->primary().stages()));
 }
 
