@@ -19,6 +19,7 @@ constexpr double kNoteSpace = 20;  // above a panel that carries a note
 constexpr double kSubtitleSpace = 18;
 constexpr double kTickLength = 5;
 constexpr double kLegendRow = 19, kLegendPad = 8, kLegendSample = 26;
+constexpr double kLegendGap = 12;  // under a legend drawn below its panel
 constexpr double kCharWidth = 6.9;  // an average 12 px DejaVu Sans character, for sizing boxes
 
 // The matplotlib palette, which the paper's own figures appear to use (blue solid, orange
@@ -154,61 +155,73 @@ void draw_series(std::ostringstream& svg, const Series& s, const PlotArea& area)
   }
 }
 
-/// The corner of the panel whose legend box would cover the fewest drawn points.
-void place_legend(std::ostringstream& svg, const Panel& panel, const PlotArea& area,
-                  const Ink& ink) {
+/// Where a panel's legend goes: the corner of the plot area that covers no drawn point, or,
+/// when every corner would cover one, a box under the panel (the figure grows to hold it),
+/// so that no point is hidden.
+struct LegendPlace {
   std::vector<const Series*> entries;
+  double x = 0, y = 0, w = 0, h = 0;
+  bool below = false;  ///< under the panel's axis labels, outside the plot area
+};
+
+/// How many of the panel's drawn points and line pieces fall inside the box.
+long covered_in(const Panel& panel, const PlotArea& area, double x, double y, double w, double h) {
+  long covered = 0;
+  for (const Series& s : panel.series)
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      if (!usable(s.x[i], area.xlog) || !usable(s.y[i], area.ylog)) continue;
+      // Lines cover the space between their points too: look along each segment.
+      const bool segment = s.mark != Mark::points && i + 1 < s.x.size() &&
+                           usable(s.x[i + 1], area.xlog) && usable(s.y[i + 1], area.ylog);
+      const int samples = segment ? 12 : 1;
+      for (int k = 0; k < samples; ++k) {
+        const double a = double(k) / samples;
+        const double X =
+            segment ? (1 - a) * area.x(s.x[i]) + a * area.x(s.x[i + 1]) : area.x(s.x[i]);
+        const double Y =
+            segment ? (1 - a) * area.y(s.y[i]) + a * area.y(s.y[i + 1]) : area.y(s.y[i]);
+        if (X >= x && X <= x + w && Y >= y && Y <= y + h) ++covered;
+      }
+    }
+  return covered;
+}
+
+/// The legend's entries and box; `below_at` is the y where a legend under the panel starts.
+LegendPlace place_legend(const Panel& panel, const PlotArea& area, double below_at) {
+  LegendPlace place;
   double text_width = 0;
   for (const Series& s : panel.series)
     if (!s.name.empty()) {
-      entries.push_back(&s);
+      place.entries.push_back(&s);
       text_width = std::max(text_width, kCharWidth * double(glyph_count(s.name)));
     }
-  if (entries.empty()) return;
-  const double w = kLegendPad * 3 + kLegendSample + text_width;
-  const double h = kLegendPad * 2 + kLegendRow * double(entries.size()) - 4;
+  if (place.entries.empty()) return place;
+  place.w = kLegendPad * 3 + kLegendSample + text_width;
+  place.h = kLegendPad * 2 + kLegendRow * double(place.entries.size()) - 4;
   const double inset = 8;
-  struct Corner {
-    double x, y;
-  };
-  const Corner corners[] = {
-      {area.left + area.width - w - inset, area.top + inset},
-      {area.left + inset, area.top + inset},
-      {area.left + area.width - w - inset, area.top + area.height - h - inset},
-      {area.left + inset, area.top + area.height - h - inset}};
-  std::size_t best = 0;
-  long fewest = std::numeric_limits<long>::max();
-  for (std::size_t c = 0; c < 4; ++c) {
-    long covered = 0;
-    for (const Series& s : panel.series)
-      for (std::size_t i = 0; i < s.x.size(); ++i) {
-        if (!usable(s.x[i], area.xlog) || !usable(s.y[i], area.ylog)) continue;
-        // Lines cover the space between their points too: look along each segment.
-        const bool segment = s.mark != Mark::points && i + 1 < s.x.size() &&
-                             usable(s.x[i + 1], area.xlog) && usable(s.y[i + 1], area.ylog);
-        const int samples = segment ? 12 : 1;
-        for (int k = 0; k < samples; ++k) {
-          const double a = double(k) / samples;
-          const double X =
-              segment ? (1 - a) * area.x(s.x[i]) + a * area.x(s.x[i + 1]) : area.x(s.x[i]);
-          const double Y =
-              segment ? (1 - a) * area.y(s.y[i]) + a * area.y(s.y[i + 1]) : area.y(s.y[i]);
-          if (X >= corners[c].x && X <= corners[c].x + w && Y >= corners[c].y &&
-              Y <= corners[c].y + h)
-            ++covered;
-        }
-      }
-    if (covered < fewest) fewest = covered, best = c;
-  }
-  const Corner at = corners[best];
-  svg << "<rect x=\"" << px(at.x) << "\" y=\"" << px(at.y) << "\" width=\"" << px(w)
-      << "\" height=\"" << px(h)
+  const double right = area.left + area.width - place.w - inset, left = area.left + inset;
+  const double top = area.top + inset, bottom = area.top + area.height - place.h - inset;
+  const double corners[4][2] = {{right, top}, {left, top}, {right, bottom}, {left, bottom}};
+  for (const auto& corner : corners)
+    if (covered_in(panel, area, corner[0], corner[1], place.w, place.h) == 0) {
+      place.x = corner[0], place.y = corner[1];
+      return place;
+    }
+  place.below = true;
+  place.x = area.left, place.y = below_at;
+  return place;
+}
+
+void draw_legend(std::ostringstream& svg, const LegendPlace& place, const Ink& ink) {
+  if (place.entries.empty()) return;
+  svg << "<rect x=\"" << px(place.x) << "\" y=\"" << px(place.y) << "\" width=\"" << px(place.w)
+      << "\" height=\"" << px(place.h)
       << "\" fill=\"" << ink.background << "\" fill-opacity=\"0.88\" stroke=\""
       << ink.legend_border << "\" rx=\"3\"/>\n";
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const Series& s = *entries[i];
-    const double row = at.y + kLegendPad + kLegendRow * (double(i) + 0.5) - 2;
-    const double x0 = at.x + kLegendPad, x1 = x0 + kLegendSample;
+  for (std::size_t i = 0; i < place.entries.size(); ++i) {
+    const Series& s = *place.entries[i];
+    const double row = place.y + kLegendPad + kLegendRow * (double(i) + 0.5) - 2;
+    const double x0 = place.x + kLegendPad, x1 = x0 + kLegendSample;
     if (s.mark != Mark::points)
       svg << "<line x1=\"" << px(x0) << "\" y1=\"" << px(row) << "\" x2=\"" << px(x1) << "\" y2=\""
           << px(row) << "\" stroke=\"" << colour_of(s) << "\" stroke-width=\""
@@ -222,8 +235,8 @@ void place_legend(std::ostringstream& svg, const Panel& panel, const PlotArea& a
   }
 }
 
-void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& area, bool x_labels,
-                int index, const Ink& ink) {
+void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& area,
+                const LegendPlace& legend, bool x_labels, int index, const Ink& ink) {
   const plotting::AxisTicks xt = plotting::ticks_for(area.xr, area.xlog),
                             yt = plotting::ticks_for(area.yr, area.ylog);
   const std::string clip = "plot" + std::to_string(index);
@@ -283,7 +296,7 @@ void draw_panel(std::ostringstream& svg, const Panel& panel, const PlotArea& are
     svg << "<text x=\"" << px(area.left) << "\" y=\"" << px(area.top - 6)
         << "\" font-size=\"12\" fill=\"" << ink.dim_text << "\">" << escaped(panel.note)
         << "</text>\n";
-  place_legend(svg, panel, area, ink);
+  draw_legend(svg, legend, ink);
 }
 
 }  // namespace
@@ -300,6 +313,7 @@ std::string svg_of(const Figure& figure) {
     }
 
   std::vector<PlotArea> areas;
+  std::vector<LegendPlace> legends;
   double y = kTop + (figure.subtitle.empty() ? 0 : kSubtitleSpace);
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const Panel& p = figure.panels[i];
@@ -316,6 +330,8 @@ std::string svg_of(const Figure& figure) {
     areas.push_back(area);
     const bool last = i + 1 == figure.panels.size();
     y += area.height + (figure.shared_x && !last ? kSharedGap : kBottom);
+    legends.push_back(place_legend(p, area, y));
+    if (legends.back().below) y += legends.back().h + kLegendGap;
   }
   const double height = y + 6;
 
@@ -337,7 +353,7 @@ std::string svg_of(const Figure& figure) {
         << "fill=\"" << figure.ink.dim_text << "\">" << escaped(figure.subtitle) << "</text>\n";
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
     const bool x_labels = !figure.shared_x || i + 1 == figure.panels.size();
-    draw_panel(svg, figure.panels[i], areas[i], x_labels, int(i), figure.ink);
+    draw_panel(svg, figure.panels[i], areas[i], legends[i], x_labels, int(i), figure.ink);
   }
   svg << "</svg>\n";
   return svg.str();
