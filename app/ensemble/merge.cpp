@@ -182,8 +182,8 @@ struct PointRuns {
   std::map<std::string, std::vector<double>> values;  // one per run, NAN where a run lacks it
   std::map<std::string, std::vector<double>> errors;  // within-run se of P and T
   std::vector<double> starts;
-  Band P_t, T_t;
-  std::vector<std::vector<double>> stage_V, stage_P, stage_T;
+  Band P_t, T_t, T_kinetic_t;
+  std::vector<std::vector<double>> stage_V, stage_P, stage_T, stage_T_kinetic;
   bool bands_agree = true;
 
   void add(const RunRecord& r) {
@@ -203,18 +203,21 @@ struct PointRuns {
       }
     }
     if (n == 0) {
-      P_t.x = T_t.x = r.t;
+      P_t.x = T_t.x = T_kinetic_t.x = r.t;
       P_t.values.assign(r.t.size(), {});
       T_t.values.assign(r.t.size(), {});
+      T_kinetic_t.values.assign(r.t.size(), {});
     }
     if (r.t.size() != P_t.x.size()) bands_agree = false;
     for (std::size_t i = 0; bands_agree && i < r.t.size(); ++i) {
       P_t.values[i].push_back(r.P[i]);
       T_t.values[i].push_back(r.T[i]);
+      T_kinetic_t.values[i].push_back(r.T_kinetic[i]);
     }
     stage_V.push_back(r.stage_V);
     stage_P.push_back(r.stage_P);
     stage_T.push_back(r.stage_T);
+    stage_T_kinetic.push_back(r.stage_T_kinetic);
   }
 };
 
@@ -341,22 +344,28 @@ json point_equilibrium(const PointRuns& p, std::string& table) {
 json point_bands(const PointRuns& p) {
   json bands = json::object();
   if (p.bands_agree && !p.P_t.x.empty())
-    bands["time"] = {{"t", p.P_t.x}, {"P", p.P_t.to_json("bands.time.P")},
-                     {"T", p.T_t.to_json("bands.time.T")}};
+    bands["time"] = {{"t", p.P_t.x},
+                     {"P", p.P_t.to_json("bands.time.P")},
+                     {"T", p.T_t.to_json("bands.time.T")},
+                     {"T_kinetic", p.T_kinetic_t.to_json("bands.time.T_kinetic")}};
   if (!p.stage_V.front().empty()) {
-    Band sP, sT;
+    Band sP, sT, sTk;
     sP.x = p.stage_V.front();
     sP.values.assign(sP.x.size(), {});
     sT.values.assign(sP.x.size(), {});
+    sTk.values.assign(sP.x.size(), {});
     bool agree = true;
     for (std::size_t r = 0; r < p.stage_V.size(); ++r) {
       if (p.stage_P[r].size() != sP.x.size()) agree = false;
       for (std::size_t s = 0; agree && s < sP.x.size(); ++s)
-        sP.values[s].push_back(p.stage_P[r][s]), sT.values[s].push_back(p.stage_T[r][s]);
+        sP.values[s].push_back(p.stage_P[r][s]), sT.values[s].push_back(p.stage_T[r][s]),
+            sTk.values[s].push_back(p.stage_T_kinetic[r][s]);
     }
     if (agree)
-      bands["stages"] = {{"V", sP.x}, {"P", sP.to_json("bands.stages.P")},
-                         {"T", sT.to_json("bands.stages.T")}};
+      bands["stages"] = {{"V", sP.x},
+                         {"P", sP.to_json("bands.stages.P")},
+                         {"T", sT.to_json("bands.stages.T")},
+                         {"T_kinetic", sTk.to_json("bands.stages.T_kinetic")}};
   }
   return bands;
 }

@@ -30,6 +30,9 @@ void fill_series(RunRecord& r, const std::vector<swarm::Sample>& samples) {
     r.P.push_back(w.P);
     r.T.push_back(w.hits > 0 ? w.T : NAN);  // no hits: no temperature (null in the file)
     r.R.push_back(samples[last].R);
+    double T_kinetic = 0;  // interval i runs from sample i to sample i + 1
+    for (std::size_t i = first; i < last; ++i) T_kinetic += samples[i + 1].T_kinetic;
+    r.T_kinetic.push_back(T_kinetic / double(last - first));
   }
 }
 
@@ -128,6 +131,12 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
         swarm::wall_estimate({all.end() - a.intervals, all.end()}, 0);
     if (a.P) put(r, "P", a.P->mean, e.P_stderr);
     if (a.T) put(r, "T", a.T->mean, e.T_stderr);
+    if (a.intervals > 0) {
+      double T_kinetic = 0;  // the samples that end the window's intervals
+      for (std::size_t i = samples.size() - std::size_t(a.intervals); i < samples.size(); ++i)
+        T_kinetic += samples[i].T_kinetic;
+      put(r, "T_kinetic", T_kinetic / double(a.intervals));
+    }
   }
   if (samples.size() > 1) fill_series(r, samples);
   for (std::size_t k = 0; k < run.stages().size(); ++k) {
@@ -140,6 +149,7 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
     r.stage_V.push_back(st.V);
     r.stage_P.push_back(st.P);
     r.stage_T.push_back(T);
+    r.stage_T_kinetic.push_back(st.T_kinetic);
   }
   if (!run.stages().empty()) {
     const swarm::StageFits f = run.fits();
@@ -175,9 +185,11 @@ std::string canonical_text(const RunRecord& r) {
     out += "value " + canonical_text_item(name) + " " + canonical_number(v.value) + " " +
            (v.se ? canonical_number(*v.se) : std::string("-")) + "\n";
   out += canonical_list("series.t", r.t) + canonical_list("series.P", r.P) +
-         canonical_list("series.T", r.T) + canonical_list("series.R", r.R);
+         canonical_list("series.T", r.T) + canonical_list("series.R", r.R) +
+         canonical_list("series.T_kinetic", r.T_kinetic);
   out += canonical_list("stages.V", r.stage_V) + canonical_list("stages.P", r.stage_P) +
-         canonical_list("stages.T", r.stage_T);
+         canonical_list("stages.T", r.stage_T) +
+         canonical_list("stages.T_kinetic", r.stage_T_kinetic);
   return out;
 }
 
@@ -201,8 +213,9 @@ std::string record_json(const RunRecord& r) {
             {"equilibration_start", r.equilibration_start},
             {"provenance", report::provenance_json(r.made_by)},
             {"values", values},
-            {"series", {{"t", r.t}, {"P", r.P}, {"T", r.T}, {"R", r.R}}},
-            {"stages", {{"V", r.stage_V}, {"P", r.stage_P}, {"T", r.stage_T}}},
+            {"series", {{"t", r.t}, {"P", r.P}, {"T", r.T}, {"R", r.R}, {"T_kinetic", r.T_kinetic}}},
+            {"stages",
+             {{"V", r.stage_V}, {"P", r.stage_P}, {"T", r.stage_T}, {"T_kinetic", r.stage_T_kinetic}}},
             {"digest", record_digest(r)}};
   return j.dump() + "\n";
 }
@@ -279,10 +292,13 @@ RecordRead parse_record(const std::string& text) {
       !read_array(*series, "T", r.T, e, "series.") || !read_array(*series, "R", r.R, e, "series.") ||
       !read_array(*stages, "V", r.stage_V, e, "stages.") ||
       !read_array(*stages, "P", r.stage_P, e, "stages.") ||
-      !read_array(*stages, "T", r.stage_T, e, "stages."))
+      !read_array(*stages, "T", r.stage_T, e, "stages.") ||
+      !read_array(*series, "T_kinetic", r.T_kinetic, e, "series.") ||
+      !read_array(*stages, "T_kinetic", r.stage_T_kinetic, e, "stages."))
     return out;
   if (r.P.size() != r.t.size() || r.T.size() != r.t.size() || r.R.size() != r.t.size() ||
-      r.stage_P.size() != r.stage_V.size() || r.stage_T.size() != r.stage_V.size()) {
+      r.T_kinetic.size() != r.t.size() || r.stage_P.size() != r.stage_V.size() ||
+      r.stage_T.size() != r.stage_V.size() || r.stage_T_kinetic.size() != r.stage_V.size()) {
     e = "series, stages: arrays of different lengths";
     return out;
   }

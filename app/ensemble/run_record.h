@@ -2,7 +2,7 @@
 // One run of an ensemble, written whole to DIR/runs/<k>.json by `swarmlab run --record` (and by
 // `swarmlab ensemble`): who it is (index, seed, preset hash, program version), the numbers the
 // merge compares across runs, each with its within-run error where it has one, and the wall's
-// P(t), T(t) and the stages for the merge's bands. Small and of one size whatever the run's
+// P(t), T(t), T kinetic(t) and the stages for the merge's bands. Small and of one size whatever the run's
 // length, so that a merge of thousands of runs reads little. Sealed by a SHA-256 digest of all
 // of this (record_digest): a record edited by hand or damaged is refused like a cut one. The
 // digest catches a change, it does not prove who wrote the record (anyone with swarmlab or
@@ -20,7 +20,7 @@
 namespace swarmlab::ensemble {
 
 inline constexpr const char* kRunFormat = "swarmlab ensemble run";
-inline constexpr int kRunFormatVersion = 3;  ///< 2: the digest; 3: the provenance
+inline constexpr int kRunFormatVersion = 4;  ///< 2: the digest; 3: the provenance; 4: T kinetic
 /// The P(t), T(t) series hold at most this many points, each the wall average of a stretch
 /// of consecutive samples (exact: impulses and hits add up).
 inline constexpr std::size_t kSeriesPoints = 200;
@@ -48,7 +48,8 @@ struct RunRecord {
   report::Provenance made_by;
   std::string failure;  ///< "" for a finished run; the reason a run stopped otherwise
   double equilibration_start = 0;  ///< time from which P and T are averaged
-  /// "P", "T" (time averages after the equilibration start), "energy_drift", "wall_hits",
+  /// "P", "T" (time averages after the equilibration start), "T_kinetic" ((2/3) KE / N in
+  /// the CM frame, averaged over the samples of the same window), "energy_drift", "wall_hits",
   /// with outside work or heat (EngineConfig::exchanges_energy) "work", "heat" (the books
   /// at the end), "KE_start" and "KE_end",
   /// and for expansions "stage<k>.P", "stage<k>.T" (k from 1), "fit.P_V", "fit.T_V",
@@ -61,9 +62,11 @@ struct RunRecord {
   /// equilibrium).
   std::map<std::string, RunValue> values;
   /// The wall series, at most kSeriesPoints; T is NAN (null in the file) where nothing hit.
-  std::vector<double> t, P, T, R;
-  /// Expansions: one per stage; T is NAN (null in the file) for a stage without hits.
-  std::vector<double> stage_V, stage_P, stage_T;
+  /// T_kinetic: the mean of the samples' (2/3) KE / N that end each stretch's intervals.
+  std::vector<double> t, P, T, R, T_kinetic;
+  /// Expansions: one per stage; T is NAN (null in the file) for a stage without hits;
+  /// T_kinetic is the stage's (swarm::Stage::T_kinetic).
+  std::vector<double> stage_V, stage_P, stage_T, stage_T_kinetic;
 };
 
 /// The record of a finished (or failed) run, made here and now.
@@ -72,15 +75,15 @@ std::string record_json(const RunRecord& r);
 
 /// The canonical text the digest is taken over: independent of how the JSON is laid out, so
 /// only a change of a value changes it. One line per item, each ending in "\n", in this order:
-///   swarmlab ensemble run 2
+///   swarmlab ensemble run 4
 ///   swarmlab TEXT / preset_hash TEXT / index INT / seed INT / perturbation NUM /
 ///   failure TEXT / equilibration_start NUM
 ///   provenance TEXT TEXT CLEAN TEXT TEXT TEXT TEXT   (version, commit, clean, compiler,
 ///   host.os, host.machine, date; CLEAN is true, false or null)
 ///   provenance.seeds INT-or-- INT-or-- INT   (seeds.seed, seeds.base, seeds.runs or 0)
 ///   value TEXT NUM NUM-or--   (each of "values": name, value, se; names in byte order)
-///   series.t LIST / series.P LIST / series.T LIST / series.R LIST /
-///   stages.V LIST / stages.P LIST / stages.T LIST
+///   series.t LIST / series.P LIST / series.T LIST / series.R LIST / series.T_kinetic LIST /
+///   stages.V LIST / stages.P LIST / stages.T LIST / stages.T_kinetic LIST
 /// where TEXT is the byte count, ':' and the bytes (so any text is unambiguous), INT is
 /// decimal, NUM is C's printf("%.17g") of the double (which reads back to the same double)
 /// or "null" for a number that is not finite (JSON's null), and LIST is the count followed by

@@ -54,7 +54,8 @@ void add_band_figures(std::vector<NamedFigure>& out, const json& bands, long run
     Panel P{{"time t", "time"}, {"pressure P", "", false, true}};
     add_band(P, t, b.at("P"), "P", 0, false);
     Panel T{{"time t", "time"}, {"temperature T", "energy", false, true}};
-    add_band(T, t, b.at("T"), "T", 1, false);
+    add_band(T, t, b.at("T"), "T at the wall", 1, false);
+    add_band(T, t, b.at("T_kinetic"), "T kinetic, (2/3) KE/N", 2, false);
     f.panels = {P, T};
     out.push_back({prefix + "ensemble-time", f});
   }
@@ -65,7 +66,8 @@ void add_band_figures(std::vector<NamedFigure>& out, const json& bands, long run
     Panel P{{"volume V", "length³", true}, {"pressure P", "", true}};
     add_band(P, V, b.at("P"), "P", 0, true);
     Panel T{{"volume V", "length³", true}, {"temperature T", "energy", true}};
-    add_band(T, V, b.at("T"), "T", 1, true);
+    add_band(T, V, b.at("T"), "T at the wall", 1, true);
+    add_band(T, V, b.at("T_kinetic"), "T kinetic, (2/3) KE/N", 2, true);
     f.panels = {P, T};
     out.push_back({prefix + "ensemble-stages", f});
   }

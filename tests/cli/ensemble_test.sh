@@ -200,7 +200,7 @@ def text(s):
     b = s.encode()
     return b"%d:" % len(b) + b
 def canonical(r):
-    out = [b"swarmlab ensemble run 3"]
+    out = [b"swarmlab ensemble run 4"]
     out.append(b"swarmlab " + text(r["swarmlab"]))
     out.append(b"preset_hash " + text(r["preset_hash"]))
     out.append(b"index %d" % r["index"])
@@ -218,7 +218,7 @@ def canonical(r):
         v = r["values"][name]
         se = num(v["se"]) if "se" in v else "-"
         out.append(b"value " + text(name) + (" %s %s" % (num(v["value"]), se)).encode())
-    for group, keys in (("series", "tPTR"), ("stages", "VPT")):
+    for group, keys in (("series", ["t", "P", "T", "R", "T_kinetic"]), ("stages", ["V", "P", "T", "T_kinetic"])):
         for k in keys:
             xs = r[group][k]
             out.append(("%s.%s %d" % (group, k, len(xs)) + "".join(" " + num(x) for x in xs)).encode())

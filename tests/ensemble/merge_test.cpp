@@ -10,6 +10,7 @@
 
 #include "ensemble/ensemble_member.h"
 #include "files/atomic_file.h"
+#include "files/text_file.h"
 #include "swarm/physics/wall.h"
 #include "swarm/preset/ensemble_seed.h"
 
@@ -115,6 +116,21 @@ TEST_CASE("merge: the report's numbers are the runs' numbers, summarised") {
   CHECK(P["sd"].get<double>() == doctest::Approx(sd).epsilon(1e-12));
   // t(0.975, 4) = 2.776445 (printed tables).
   CHECK(P["ci95"][1].get<double>() - mean == doctest::Approx(2.776445 * sd / std::sqrt(5.0)).epsilon(1e-6));
+  // T kinetic beside the wall's T: a quantity, and a band whose mean is the runs' mean.
+  double last_T_kinetic = 0;
+  for (long k = 0; k < 5; ++k) {
+    std::string error;
+    const RecordRead rec = parse_record(swarmlab::read_text_file(run_path(dir, k), error));
+    REQUIRE(rec.record);
+    last_T_kinetic += rec.record->T_kinetic.back() / 5;
+  }
+  const auto& band = r["bands"]["time"]["T_kinetic"]["mean"];
+  CHECK(band.back().get<double>() == doctest::Approx(last_T_kinetic).epsilon(1e-12));
+  // A Maxwellian gas at T = 1 with its CM at rest: (2/3) KE / N is (1 - 1/N) T on average
+  // (the CM's 3 degrees of freedom removed), which the 95 % interval holds.
+  const auto& Tk = r["quantities"]["T_kinetic"]["ci95"];
+  CHECK(Tk[0].get<double>() < 1 - 1.0 / 60);
+  CHECK(Tk[1].get<double>() > 1 - 1.0 / 60);
   // A run deleted: listed as missing, the others still merged.
   fs::remove(run_path(dir, 2));
   const nlohmann::json partial = nlohmann::json::parse(merge_ensemble(dir).json);

@@ -44,6 +44,17 @@ TEST_CASE("run record: written and read back whole, the series an exact thinning
   CHECK(r.P[0] == doctest::Approx(P).epsilon(1e-12));
   CHECK(r.t[0] == doctest::Approx(0.01));
   CHECK(r.t.back() == doctest::Approx(2.0));
+  // T kinetic: each point the mean of the (2/3) KE / N of the samples ending its intervals;
+  // the window's value, for an ideal gas whose speeds the walls keep, (2/3) KE / N less the
+  // CM's share (|p|^2 / 2M, of order KE / N: 1 % with 100 particles).
+  double T_kinetic = 0;
+  for (int i = 1; i <= 5; ++i) T_kinetic += run.samples()[std::size_t(i)].T_kinetic / 5;
+  CHECK(r.T_kinetic[0] == doctest::Approx(T_kinetic).epsilon(1e-12));
+  REQUIRE(r.T_kinetic.size() == kSeriesPoints);
+  REQUIRE(r.values.count("T_kinetic"));
+  const double KE = run.samples().front().KE;  // J = 0 and specular walls: constant
+  CHECK(r.values.at("T_kinetic").value == doctest::Approx(2.0 / 3 * KE / 100).epsilon(0.03));
+  CHECK(r.values.at("T_kinetic").value < 2.0 / 3 * KE / 100);
 
   const RecordRead back = parse_record(record_json(r));
   REQUIRE(back.record);
@@ -52,6 +63,7 @@ TEST_CASE("run record: written and read back whole, the series an exact thinning
   CHECK(back.record->values.at("P").value == r.values.at("P").value);  // to the bit
   CHECK(*back.record->values.at("P").se == *r.values.at("P").se);
   CHECK(back.record->P == r.P);
+  CHECK(back.record->T_kinetic == r.T_kinetic);
 }
 
 TEST_CASE("run record: a cut or altered file is refused, naming what is wrong") {
@@ -60,7 +72,7 @@ TEST_CASE("run record: a cut or altered file is refused, naming what is wrong") 
   CHECK(parse_record(text.substr(0, text.size() / 2)).error.find("not a complete JSON object") == 0);
   CHECK(parse_record("{\"format\": \"something else\"}").error.find("format:") == 0);
   std::string other = text;
-  other.replace(other.find("\"format_version\":3"), 18, "\"format_version\":7");
+  other.replace(other.find("\"format_version\":4"), 18, "\"format_version\":7");
   CHECK(parse_record(other).error.find("format_version: 7") == 0);
   std::string bad_seed = text;
   // The record's own seed (keys in byte order: "series" follows), not provenance.seeds'.
@@ -79,11 +91,12 @@ TEST_CASE("run record: the digest is over the documented canonical text") {
   r.P = {0.5, 1e300};
   r.T = {NAN, 2};
   r.R = {1, 1};
+  r.T_kinetic = {0.25, NAN};
   r.made_by = {"v1", "c0ffee", false, "GCC 1", "Linux 6", "x86_64", "2026-12-07T18:00:00Z",
                {18446744073709551615ULL, std::nullopt, 0}};
   // The text run_record.h describes, written out by hand.
   CHECK(canonical_text(r) ==
-        "swarmlab ensemble run 3\n"
+        "swarmlab ensemble run 4\n"
         "swarmlab 2:v1\n"
         "preset_hash 4:00ff\n"
         "index 4\n"
@@ -99,11 +112,13 @@ TEST_CASE("run record: the digest is over the documented canonical text") {
         "series.P 2 0.5 1.0000000000000001e+300\n"
         "series.T 2 null 2\n"
         "series.R 2 1 1\n"
+        "series.T_kinetic 2 0.25 null\n"
         "stages.V 0\n"
         "stages.P 0\n"
-        "stages.T 0\n");
+        "stages.T 0\n"
+        "stages.T_kinetic 0\n");
   // sha256 of that text, from Python's hashlib.
-  CHECK(record_digest(r) == "sha256:45b47ed406423ff6c1cc9bd8c6c60af91b0e97f9aa7a7cb424d91123d03b0d96");
+  CHECK(record_digest(r) == "sha256:7611cd72b3024786e98b38a2fbcb2b69aa16164f22cddea51841c5ddac20732e");
 }
 
 TEST_CASE("run record: an edited value is refused by its digest, a re-laid-out file is not") {
