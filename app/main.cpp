@@ -7,7 +7,7 @@
 #include "cli/cli_bench.h"
 #include "ensemble/ensemble_plan.h"
 #include "swarm/engine/engine.h"
-#include "ui/plots/plot_tab.h"
+#include "ui/state/plot_tab.h"
 #ifdef SWARMLAB_HAS_DESKTOP
 #include "desktop/desktop.h"
 #endif

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "ui/platform/preset_store.h"
+#include "ui/state/preset_store.h"
 
 namespace swarmlab {
 

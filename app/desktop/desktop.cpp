@@ -11,6 +11,7 @@
 
 #include "desktop/screenshot.h"
 #include "files/atomic_file.h"
+#include "files/text_file.h"
 #include "i18n/language.h"
 #include "lessons/lesson_file.h"
 #include "ui/classroom/presentation.h"
@@ -20,8 +21,7 @@
 #include "ui/parallel_dom/items_json.h"
 #include "ui/parallel_dom/parallel_dom.h"
 #include "ui/platform/language_memory.h"
-#include "ui/platform/preset_store.h"
-#include "files/text_file.h"
+#include "ui/state/preset_store.h"
 
 namespace swarmlab {
 namespace {

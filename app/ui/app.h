@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "ui/app_state.h"
 #include "ui/input/pointer_press.h"
 #include "ui/input/touch_gestures.h"
 #include "ui/panels/windows.h"
 #include "ui/platform/save_dialog.h"
+#include "ui/state/app_state.h"
 #include "ui/view/particle_renderer.h"
 
 namespace swarmlab {

@@ -10,8 +10,8 @@
 
 #include "access/announcement.h"
 #include "access/wall_clicks.h"
-#include "ui/app_state.h"
 #include "ui/platform/wall_sound.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

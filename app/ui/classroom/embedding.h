@@ -5,7 +5,7 @@
 // through the postMessage bridge or a link) and the welcome window. The run, the panels, the
 // lesson panel and the parallel DOM stay as they are.
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

@@ -3,7 +3,7 @@
 // and one plot, the controls tucked away), the theme on its own, fullscreen and sound. These
 // switch what AppState asks for; classroom_outputs.h carries it out on the window.
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

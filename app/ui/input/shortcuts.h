@@ -1,7 +1,7 @@
 #pragma once
 // The keyboard: one table of shortcuts that both runs them and lists them in the help window.
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

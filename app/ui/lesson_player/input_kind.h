@@ -3,7 +3,7 @@
 // for that device ({tap|click|press Space}) on the screen and in what the live region says.
 
 #include "lessons/device_words.h"
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

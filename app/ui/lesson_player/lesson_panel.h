@@ -2,7 +2,7 @@
 // The lesson panel (the open lesson's step, its task, feedback, back and next) and the
 // welcome window (what is on the screen, three things to try, the lessons).
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

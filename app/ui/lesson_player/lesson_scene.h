@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

@@ -1,6 +1,6 @@
 #include "ui/lesson_player/lesson_speech.h"
 
-#include "ui/lesson_player/lesson_session.h"
+#include "ui/state/lesson_session.h"
 
 #include <cstdio>
 

@@ -2,7 +2,7 @@
 // The panels of the window. Each draws one part of the controls into the current ImGui window
 // and edits the AppState; edits to the preset go through AppState::apply_draft.
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

@@ -2,7 +2,7 @@
 // Placing a window on its rectangle of the screen layout, and recording it once drawn for
 // swarmlab.state() (the browser's tests and the parallel page read where each panel is).
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <utility>
 
-#include "ui/app_state.h"
 #include "ui/input/touch_gestures.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

@@ -5,7 +5,7 @@
 #include "files/atomic_file.h"
 #include "files/preset_file.h"
 #include "i18n/translator.h"
-#include "ui/platform/preset_store.h"
+#include "ui/state/preset_store.h"
 
 namespace swarmlab {
 namespace {

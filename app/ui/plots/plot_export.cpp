@@ -13,10 +13,10 @@
 #include "report/png_text.h"
 #include "report/provenance.h"
 #include "report/svg_plot.h"
-#include "ui/app_state.h"
 #include "ui/kit/gl_api.h"
 #include "ui/platform/save_dialog.h"
 #include "ui/plots/plot_export_menu.h"
+#include "ui/state/app_state.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC

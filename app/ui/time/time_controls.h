@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

@@ -3,7 +3,7 @@
 // stage boundaries, the present and the furthest time reached; and the transport bar's time
 // buttons (step back, fast-forward to the end of the stage or of the run).
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "ui/kit/gl_api.h"
-#include "ui/view/camera.h"
-#include "ui/view/colour_map.h"
+#include "ui/state/camera.h"
+#include "ui/state/colour_map.h"
 
 namespace swarmlab {
 

@@ -4,7 +4,7 @@
 // particle, the springs of the paper's Fig. 1, the axes and the colour legend. ImGui's
 // anti-aliased thick lines work the same in OpenGL 3.3 and WebGL2 (GL line widths do not).
 
-#include "ui/app_state.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 

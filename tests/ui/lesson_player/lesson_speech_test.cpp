@@ -5,8 +5,8 @@
 #include <string>
 
 #include "lessons/lesson_file.h"
-#include "ui/lesson_player/lesson_session.h"
-#include "ui/time/live_run.h"
+#include "ui/state/lesson_session.h"
+#include "ui/state/live_run.h"
 
 namespace swarmlab {
 namespace {

@@ -1,4 +1,4 @@
-#include "ui/view/camera.h"
+#include "ui/state/camera.h"
 
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/time/live_run.h"
+#include "ui/state/live_run.h"
 
 #include <algorithm>
 #include <cmath>

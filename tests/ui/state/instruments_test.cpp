@@ -1,4 +1,4 @@
-#include "ui/time/instruments.h"
+#include "ui/state/instruments.h"
 
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/lesson_player/lesson_session.h"
+#include "ui/state/lesson_session.h"
 
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-#include "ui/view/colour_map.h"
+#include "ui/state/colour_map.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "ui/lesson_player/progress_record.h"
+#include "ui/state/progress_record.h"
 
 #include <doctest/doctest.h>
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "lessons/lesson.h"
-#include "ui/lesson_player/progress_record.h"
-#include "ui/time/live_run.h"
+#include "ui/state/live_run.h"
+#include "ui/state/progress_record.h"
 
 namespace swarmlab {
 

@@ -10,16 +10,16 @@
 #include <vector>
 
 #include "access/theme_palette.h"
-#include "ui/classroom/screen_layout.h"
-#include "ui/lesson_player/lesson_session.h"
-#include "ui/platform/preset_store.h"
-#include "ui/platform/save_request.h"
-#include "ui/plots/plot_tab.h"
-#include "ui/time/instruments.h"
-#include "ui/time/live_run.h"
-#include "ui/time/time_travel.h"
-#include "ui/view/camera.h"
-#include "ui/view/colour_map.h"
+#include "ui/state/camera.h"
+#include "ui/state/colour_map.h"
+#include "ui/state/instruments.h"
+#include "ui/state/lesson_session.h"
+#include "ui/state/live_run.h"
+#include "ui/state/plot_tab.h"
+#include "ui/state/preset_store.h"
+#include "ui/state/save_request.h"
+#include "ui/state/screen_layout.h"
+#include "ui/state/time_travel.h"
 
 namespace swarmlab {
 

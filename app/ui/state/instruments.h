@@ -12,7 +12,7 @@
 #include "swarm/measure/stopwatch.h"
 #include "swarm/measure/thermometry.h"
 #include "swarm/measure/virial_balance.h"
-#include "ui/time/live_run.h"
+#include "ui/state/live_run.h"
 
 namespace swarmlab {
 

@@ -1,4 +1,4 @@
-#include "ui/classroom/screen_layout.h"
+#include "ui/state/screen_layout.h"
 
 #include <doctest/doctest.h>
 
