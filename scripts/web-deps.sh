@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Prepares everything the browser (wasm) build of Swarm Lab needs, cached under build/web-deps:
 #   build/web-deps/sdl2-prefix   SDL2 2.26.x built for wasm from Debian's own source package
-#   build/web-deps/imgui         Dear ImGui 1.86 sources: a link to build/imgui-src (scripts/imgui-sources.sh)
+#   build/web-deps/imgui         Dear ImGui 1.86 sources, patched: a link to build/imgui-src (scripts/imgui-sources.sh)
 #   build/web-deps/include       symlinks nlohmann -> /usr/include/nlohmann, doctest -> /usr/include/doctest
 #                                (never put /usr/include itself on the wasm include path)
 # Idempotent: a second run only checks stamp files and takes about a second.
@@ -38,6 +38,7 @@ mk_includes() {
 }
 
 if [ -f "$stamp" ] && [ -f "$prefix/lib/libSDL2.a" ] && [ -f "$deps/imgui/imgui.cpp" ]; then
+  "$root/scripts/imgui-sources.sh"  # makes the patched copy again if a patch changed (seconds)
   mk_includes
   say "up to date ($(cat "$stamp"))"
   exit 0

@@ -1,7 +1,7 @@
 // Dear ImGui's item hooks (IMGUI_ENABLE_TEST_ENGINE, as imgui_test_engine uses them) feeding
-// the parallel DOM, and the value hook that imgui_hooks.cmake adds to the widgets whose state
-// the stock hooks do not report. ImGui is built from Debian's sources with the hooks on the
-// desktop and in the page alike (imgui_hooks.cmake).
+// the parallel DOM, and the value hook that third_party/imgui/patches add to the widgets whose
+// state the stock hooks do not report. ImGui is built from Debian's sources with the hooks on,
+// on the desktop and in the page alike (third_party/imgui/README.md).
 #include <imgui.h>
 #include <imgui_internal.h>
 

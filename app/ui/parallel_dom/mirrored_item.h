@@ -26,7 +26,7 @@ enum class ItemRole {
 };
 
 /// What an item's value hook says it is (the calls added to Dear ImGui's widgets in
-/// app/ui/parallel_dom/imgui_hooks.cmake pass these numbers).
+/// third_party/imgui/patches/01-parallel-dom-item-hooks.patch pass these numbers).
 enum class ValueKind { none = 0, text = 1, number = 2, slider = 3, radio = 4, combo = 5, option = 6 };
 
 /// What ImGui's hooks report of one item while it is drawn.

@@ -34,12 +34,12 @@ class ParallelDom {
   /// The tooltip of the item last drawn (its description, or its name when the label is an icon).
   void item_tooltip(unsigned id, std::string_view tooltip);
   /// ImGui drew `text` at (x0, y0)-(x1, y1) (the size it needs) in the room (rx0, ry0)-(rx1, ry1)
-  /// it could show in (imgui_hooks.cmake): text wider than its room is cut off. It belongs to
-  /// the item last added, or is plain text.
+  /// it could show in (third_party/imgui/patches/01-*): text wider than its room is cut off. It
+  /// belongs to the item last added, or is plain text.
   void text_drawn(ImGuiContext& g, std::string_view text, float x0, float y0, float x1, float y1,
                   float rx0, float ry0, float rx1, float ry1);
   /// Whether an item out of sight still needs drawing once for its name (ImGui's clipping asks;
-  /// imgui_hooks.cmake): true once for an item not yet named, then false.
+  /// third_party/imgui/patches/02-*): true once for an item not yet named, then false.
   bool unnamed(unsigned id);
   /// The item just drawn is a tab (a selectable of a wrapping tab strip, wrapping_tabs.h).
   void item_tab(unsigned id, bool selected);
