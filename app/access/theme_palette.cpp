@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <iterator>
 
 namespace swarmlab {
 namespace {
@@ -10,171 +12,113 @@ constexpr Colour rgb(int r, int g, int b, int a = 255) {
   return {std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), std::uint8_t(a)};
 }
 
-Palette dark_palette() {
-  Palette p;
-  p.window = rgb(23, 26, 33);
-  p.popup = rgb(20, 22, 28);
-  p.menu_bar = rgb(31, 33, 43);
-  p.title = rgb(15, 17, 22);
-  p.title_active = rgb(30, 52, 84);
-  p.frame = rgb(41, 46, 61);
-  p.frame_hovered = rgb(52, 62, 86);
-  p.frame_active = rgb(60, 76, 110);
-  p.button = rgb(38, 70, 115);
-  p.button_hovered = rgb(48, 92, 150);
-  p.button_active = rgb(30, 60, 110);
-  p.header = rgb(51, 82, 122);
-  p.header_hovered = rgb(42, 74, 116);
-  p.header_active = rgb(45, 75, 120);
-  p.tab = rgb(35, 52, 80);
-  p.tab_hovered = rgb(55, 95, 150);
-  p.tab_active = rgb(48, 82, 130);
-  p.selected_row = rgb(120, 85, 20);  // amber, as the selected particle's mark in the view
-  p.text = rgb(240, 242, 245);
-  p.text_disabled = rgb(190, 192, 200);
-  p.text_error = rgb(255, 120, 110);
-  p.text_warning = rgb(255, 200, 110);
-  p.text_ok = rgb(140, 230, 150);
-  p.text_key = rgb(255, 217, 115);
-  p.lesson_title = rgb(255, 217, 115);
-  p.lesson_keyword = rgb(255, 204, 90);
-  p.feedback_right = rgb(140, 230, 150);
-  p.feedback_wrong = rgb(255, 150, 130);
-  p.feedback_note = rgb(166, 204, 255);
-  p.slider_grab = rgb(120, 170, 240);
-  p.check_mark = rgb(130, 190, 255);
-  p.nav_highlight = rgb(255, 200, 60);
-  p.border = rgb(110, 110, 128);
-  p.scrollbar_grab = rgb(105, 108, 120);
-  p.view_background = rgb(9, 10, 15);
-  p.view_text = rgb(220, 225, 235);
-  p.legend_background = rgb(10, 12, 18, 200);
-  p.container = rgb(150, 195, 240, 150);
-  p.trail = rgb(200, 210, 255);
-  p.selected = rgb(255, 235, 120);
-  p.orbit_ahead = rgb(255, 225, 90, 110);
-  p.centre_of_mass = rgb(255, 255, 255);
-  p.spring_attractive = rgb(90, 220, 200, 150);
-  p.spring_repulsive = rgb(255, 110, 90, 150);
-  p.ghost = rgb(235, 240, 255);
-  p.axis_x = rgb(240, 90, 90);
-  p.axis_y = rgb(110, 220, 110);
-  p.axis_z = rgb(110, 160, 255);
-  p.wall_hot = rgb(255, 90, 60, 180);
-  p.wall_neutral = rgb(235, 235, 240, 180);
-  p.wall_cold = rgb(110, 170, 255, 180);
-  p.floor_grid = rgb(200, 180, 130, 170);
-  p.gravity_arrow = rgb(120, 230, 140, 230);
-  p.plot_background = rgb(22, 26, 34);
-  p.plot_grid = rgb(255, 255, 255, 28);
-  p.plot_axis = rgb(200, 205, 215, 200);
-  p.plot_text = rgb(215, 220, 230);
-  p.plot_dim_text = rgb(170, 176, 190);
-  p.crosshair = rgb(255, 255, 255, 110);
-  p.pressure = rgb(255, 150, 50);
-  // The raw samples are drawn fainter than their running average, but no fainter than 3:1.
-  p.pressure_each_sample = rgb(255, 150, 50, 150);
-  p.temperature = rgb(90, 180, 255);
-  p.temperature_each_sample = rgb(90, 180, 255, 150);
-  p.kinetic = rgb(255, 205, 70);
-  p.potential = rgb(120, 200, 255);
-  p.total_energy = rgb(240, 240, 240);
-  p.fit = rgb(255, 255, 255, 200);
-  p.pressure_against_temperature = rgb(230, 120, 255);
-  p.energy_books_sum = rgb(230, 120, 255);
-  p.particle_track = rgb(120, 230, 140);
-  p.particle_start = rgb(255, 90, 90);
-  p.starting_value = rgb(255, 255, 255, 110);
-  p.residual = rgb(255, 255, 255, 220);
-  p.timeline_track = rgb(98, 103, 116);
-  p.timeline_reached = rgb(150, 210, 255);
-  p.timeline_stage = rgb(230, 190, 90);
-  p.timeline_present = rgb(255, 255, 255);
-  p.timeline_target = rgb(255, 160, 80);
-  return p;
-}
+/// One colour of the palette in both themes. Both columns are required: a row with one colour
+/// does not compile.
+struct NamedColour {
+  constexpr NamedColour(Colour Palette::*field, Colour dark, Colour light)
+      : field(field), dark(dark), light(light) {}
+  Colour Palette::*field;
+  Colour dark, light;
+};
 
-/// Near-black on near-white: the projector washes out mid-tones, so nothing is pale.
-Palette light_palette() {
+/// Every colour of Palette (theme_palette.h, which groups and explains them), in its order, for
+/// the dark theme (a screen) and the light one (a projector: near-black on near-white, since the
+/// projector washes out mid-tones, so nothing is pale).
+constexpr NamedColour kColours[] = {
+    {&Palette::window, rgb(23, 26, 33), rgb(250, 250, 250)},
+    {&Palette::popup, rgb(20, 22, 28), rgb(255, 255, 255)},
+    {&Palette::menu_bar, rgb(31, 33, 43), rgb(232, 234, 238)},
+    {&Palette::title, rgb(15, 17, 22), rgb(225, 228, 234)},
+    {&Palette::title_active, rgb(30, 52, 84), rgb(200, 212, 235)},
+    {&Palette::frame, rgb(41, 46, 61), rgb(228, 231, 238)},
+    {&Palette::frame_hovered, rgb(52, 62, 86), rgb(208, 218, 235)},
+    {&Palette::frame_active, rgb(60, 76, 110), rgb(186, 204, 232)},
+    {&Palette::button, rgb(38, 70, 115), rgb(205, 218, 242)},
+    {&Palette::button_hovered, rgb(48, 92, 150), rgb(175, 198, 238)},
+    {&Palette::button_active, rgb(30, 60, 110), rgb(150, 180, 232)},
+    {&Palette::header, rgb(51, 82, 122), rgb(196, 210, 238)},
+    {&Palette::header_hovered, rgb(42, 74, 116), rgb(176, 196, 236)},
+    {&Palette::header_active, rgb(45, 75, 120), rgb(160, 186, 232)},
+    {&Palette::tab, rgb(35, 52, 80), rgb(214, 222, 238)},
+    {&Palette::tab_hovered, rgb(55, 95, 150), rgb(176, 198, 238)},
+    {&Palette::tab_active, rgb(48, 82, 130), rgb(160, 186, 232)},
+    // Amber, as the selected particle's mark in the view.
+    {&Palette::selected_row, rgb(120, 85, 20), rgb(250, 215, 140)},
+    {&Palette::text, rgb(240, 242, 245), rgb(12, 12, 16)},
+    {&Palette::text_disabled, rgb(190, 192, 200), rgb(70, 72, 80)},
+    {&Palette::text_error, rgb(255, 120, 110), rgb(170, 20, 20)},
+    {&Palette::text_warning, rgb(255, 200, 110), rgb(135, 75, 0)},
+    {&Palette::text_ok, rgb(140, 230, 150), rgb(20, 110, 40)},
+    {&Palette::text_key, rgb(255, 217, 115), rgb(120, 60, 0)},
+    {&Palette::lesson_title, rgb(255, 217, 115), rgb(20, 50, 130)},
+    {&Palette::lesson_keyword, rgb(255, 204, 90), rgb(120, 60, 0)},
+    {&Palette::feedback_right, rgb(140, 230, 150), rgb(20, 110, 40)},
+    {&Palette::feedback_wrong, rgb(255, 150, 130), rgb(170, 20, 20)},
+    {&Palette::feedback_note, rgb(166, 204, 255), rgb(20, 70, 150)},
+    {&Palette::slider_grab, rgb(120, 170, 240), rgb(30, 80, 170)},
+    {&Palette::check_mark, rgb(130, 190, 255), rgb(20, 70, 160)},
+    {&Palette::nav_highlight, rgb(255, 200, 60), rgb(200, 60, 0)},
+    {&Palette::border, rgb(110, 110, 128), rgb(110, 112, 120)},
+    {&Palette::scrollbar_grab, rgb(105, 108, 120), rgb(120, 122, 130)},
+    {&Palette::view_background, rgb(9, 10, 15), rgb(248, 248, 246)},
+    {&Palette::view_text, rgb(220, 225, 235), rgb(20, 20, 25)},
+    {&Palette::legend_background, rgb(10, 12, 18, 200), rgb(255, 255, 255, 220)},
+    {&Palette::container, rgb(150, 195, 240, 150), rgb(40, 90, 160, 200)},
+    {&Palette::trail, rgb(200, 210, 255), rgb(70, 70, 120)},
+    {&Palette::selected, rgb(255, 235, 120), rgb(170, 60, 0)},
+    {&Palette::orbit_ahead, rgb(255, 225, 90, 110), rgb(150, 100, 0, 200)},
+    {&Palette::centre_of_mass, rgb(255, 255, 255), rgb(10, 10, 10)},
+    {&Palette::spring_attractive, rgb(90, 220, 200, 150), rgb(0, 120, 105, 210)},
+    {&Palette::spring_repulsive, rgb(255, 110, 90, 150), rgb(190, 40, 20, 210)},
+    {&Palette::ghost, rgb(235, 240, 255), rgb(60, 60, 70)},
+    {&Palette::axis_x, rgb(240, 90, 90), rgb(190, 30, 30)},
+    {&Palette::axis_y, rgb(110, 220, 110), rgb(20, 120, 20)},
+    {&Palette::axis_z, rgb(110, 160, 255), rgb(30, 70, 200)},
+    {&Palette::wall_hot, rgb(255, 90, 60, 180), rgb(190, 30, 20, 200)},
+    {&Palette::wall_neutral, rgb(235, 235, 240, 180), rgb(60, 60, 70, 200)},
+    {&Palette::wall_cold, rgb(110, 170, 255, 180), rgb(20, 60, 190, 200)},
+    {&Palette::floor_grid, rgb(200, 180, 130, 170), rgb(100, 80, 40, 190)},
+    {&Palette::gravity_arrow, rgb(120, 230, 140, 230), rgb(20, 120, 40)},
+    {&Palette::plot_background, rgb(22, 26, 34), rgb(255, 255, 255)},
+    {&Palette::plot_grid, rgb(255, 255, 255, 28), rgb(0, 0, 0, 36)},
+    {&Palette::plot_axis, rgb(200, 205, 215, 200), rgb(60, 62, 70)},
+    {&Palette::plot_text, rgb(215, 220, 230), rgb(15, 15, 20)},
+    {&Palette::plot_dim_text, rgb(170, 176, 190), rgb(75, 78, 88)},
+    {&Palette::crosshair, rgb(255, 255, 255, 110), rgb(0, 0, 0, 140)},
+    {&Palette::pressure, rgb(255, 150, 50), rgb(170, 60, 0)},
+    // The raw samples are drawn fainter than their running average, but no fainter than 3:1.
+    {&Palette::pressure_each_sample, rgb(255, 150, 50, 150), rgb(220, 120, 40)},
+    {&Palette::temperature, rgb(90, 180, 255), rgb(0, 80, 180)},
+    {&Palette::temperature_each_sample, rgb(90, 180, 255, 150), rgb(70, 140, 220)},
+    {&Palette::kinetic, rgb(255, 205, 70), rgb(150, 100, 0)},
+    {&Palette::potential, rgb(120, 200, 255), rgb(0, 110, 170)},
+    {&Palette::total_energy, rgb(240, 240, 240), rgb(25, 25, 30)},
+    {&Palette::fit, rgb(255, 255, 255, 200), rgb(0, 0, 0, 200)},
+    {&Palette::pressure_against_temperature, rgb(230, 120, 255), rgb(140, 40, 180)},
+    {&Palette::energy_books_sum, rgb(230, 120, 255), rgb(140, 40, 180)},
+    {&Palette::particle_track, rgb(120, 230, 140), rgb(20, 120, 50)},
+    {&Palette::particle_start, rgb(255, 90, 90), rgb(190, 30, 30)},
+    {&Palette::starting_value, rgb(255, 255, 255, 110), rgb(0, 0, 0, 120)},
+    {&Palette::residual, rgb(255, 255, 255, 220), rgb(0, 0, 0, 220)},
+    {&Palette::timeline_track, rgb(98, 103, 116), rgb(135, 135, 142)},
+    {&Palette::timeline_reached, rgb(150, 210, 255), rgb(15, 45, 115)},
+    {&Palette::timeline_stage, rgb(230, 190, 90), rgb(150, 100, 0)},
+    {&Palette::timeline_present, rgb(255, 255, 255), rgb(10, 10, 10)},
+    {&Palette::timeline_target, rgb(255, 160, 80), rgb(200, 60, 0)},
+};
+
+constexpr bool each_colour_once() {
+  for (std::size_t i = 0; i < std::size(kColours); ++i)
+    for (std::size_t j = i + 1; j < std::size(kColours); ++j)
+      if (kColours[i].field == kColours[j].field) return false;
+  return true;
+}
+static_assert(std::size(kColours) == sizeof(Palette) / sizeof(Colour) && each_colour_once(),
+              "kColours has one row for each of Palette's colours");
+
+Palette palette_column(Colour NamedColour::*column) {
   Palette p;
-  p.window = rgb(250, 250, 250);
-  p.popup = rgb(255, 255, 255);
-  p.menu_bar = rgb(232, 234, 238);
-  p.title = rgb(225, 228, 234);
-  p.title_active = rgb(200, 212, 235);
-  p.frame = rgb(228, 231, 238);
-  p.frame_hovered = rgb(208, 218, 235);
-  p.frame_active = rgb(186, 204, 232);
-  p.button = rgb(205, 218, 242);
-  p.button_hovered = rgb(175, 198, 238);
-  p.button_active = rgb(150, 180, 232);
-  p.header = rgb(196, 210, 238);
-  p.header_hovered = rgb(176, 196, 236);
-  p.header_active = rgb(160, 186, 232);
-  p.tab = rgb(214, 222, 238);
-  p.tab_hovered = rgb(176, 198, 238);
-  p.tab_active = rgb(160, 186, 232);
-  p.selected_row = rgb(250, 215, 140);
-  p.text = rgb(12, 12, 16);
-  p.text_disabled = rgb(70, 72, 80);
-  p.text_error = rgb(170, 20, 20);
-  p.text_warning = rgb(135, 75, 0);
-  p.text_ok = rgb(20, 110, 40);
-  p.text_key = rgb(120, 60, 0);
-  p.lesson_title = rgb(20, 50, 130);
-  p.lesson_keyword = rgb(120, 60, 0);
-  p.feedback_right = rgb(20, 110, 40);
-  p.feedback_wrong = rgb(170, 20, 20);
-  p.feedback_note = rgb(20, 70, 150);
-  p.slider_grab = rgb(30, 80, 170);
-  p.check_mark = rgb(20, 70, 160);
-  p.nav_highlight = rgb(200, 60, 0);
-  p.border = rgb(110, 112, 120);
-  p.scrollbar_grab = rgb(120, 122, 130);
-  p.view_background = rgb(248, 248, 246);
-  p.view_text = rgb(20, 20, 25);
-  p.legend_background = rgb(255, 255, 255, 220);
-  p.container = rgb(40, 90, 160, 200);
-  p.trail = rgb(70, 70, 120);
-  p.selected = rgb(170, 60, 0);
-  p.orbit_ahead = rgb(150, 100, 0, 200);
-  p.centre_of_mass = rgb(10, 10, 10);
-  p.spring_attractive = rgb(0, 120, 105, 210);
-  p.spring_repulsive = rgb(190, 40, 20, 210);
-  p.ghost = rgb(60, 60, 70);
-  p.axis_x = rgb(190, 30, 30);
-  p.axis_y = rgb(20, 120, 20);
-  p.axis_z = rgb(30, 70, 200);
-  p.wall_hot = rgb(190, 30, 20, 200);
-  p.wall_neutral = rgb(60, 60, 70, 200);
-  p.wall_cold = rgb(20, 60, 190, 200);
-  p.floor_grid = rgb(100, 80, 40, 190);
-  p.gravity_arrow = rgb(20, 120, 40);
-  p.plot_background = rgb(255, 255, 255);
-  p.plot_grid = rgb(0, 0, 0, 36);
-  p.plot_axis = rgb(60, 62, 70);
-  p.plot_text = rgb(15, 15, 20);
-  p.plot_dim_text = rgb(75, 78, 88);
-  p.crosshair = rgb(0, 0, 0, 140);
-  p.pressure = rgb(170, 60, 0);
-  p.pressure_each_sample = rgb(220, 120, 40);
-  p.temperature = rgb(0, 80, 180);
-  p.temperature_each_sample = rgb(70, 140, 220);
-  p.kinetic = rgb(150, 100, 0);
-  p.potential = rgb(0, 110, 170);
-  p.total_energy = rgb(25, 25, 30);
-  p.fit = rgb(0, 0, 0, 200);
-  p.pressure_against_temperature = rgb(140, 40, 180);
-  p.energy_books_sum = rgb(140, 40, 180);
-  p.particle_track = rgb(20, 120, 50);
-  p.particle_start = rgb(190, 30, 30);
-  p.starting_value = rgb(0, 0, 0, 120);
-  p.residual = rgb(0, 0, 0, 220);
-  p.timeline_track = rgb(135, 135, 142);
-  p.timeline_reached = rgb(15, 45, 115);
-  p.timeline_stage = rgb(150, 100, 0);
-  p.timeline_present = rgb(10, 10, 10);
-  p.timeline_target = rgb(200, 60, 0);
+  for (const NamedColour& c : kColours) p.*c.field = c.*column;
   return p;
 }
 
@@ -196,7 +140,8 @@ Colour plot_line_colour(Colour c, Theme theme) {
 const char* theme_name(Theme theme) { return theme == Theme::light ? "light" : "dark"; }
 
 const Palette& palette(Theme theme) {
-  static const Palette dark = dark_palette(), light = light_palette();
+  static const Palette dark = palette_column(&NamedColour::dark),
+                       light = palette_column(&NamedColour::light);
   return theme == Theme::light ? light : dark;
 }
 
