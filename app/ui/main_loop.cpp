@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
-#include <deque>
 
 #include "i18n/language.h"
 #include "i18n/speak.h"
@@ -25,15 +24,6 @@ namespace swarmlab {
 namespace {
 
 constexpr float kMaxUiFrameSeconds = 0.1f;  // s
-
-// ImGui 1.86 sees a key as held or not once a frame, and within a frame a text field takes
-// typed characters before shortcuts: a key pressed and released between two frames would
-// never be seen pressed (Enter in a lesson's answer field did nothing), and "Ctrl+A, 4.4,
-// Enter" arriving in one frame of a busy machine typed 4.4 before selecting all. So the
-// keyboard trickles, as ImGui's later input queue does: once a key other than a modifier has
-// gone down (or a character arrived) in a frame, every later keyboard event waits, in order,
-// for the frames after. A modifier's release waits too, so Ctrl+A stays Ctrl+A.
-std::deque<SDL_Event> waiting_keys;
 
 /// The frontmost of last frame's ImGui windows (a panel, a strip, the welcome, a menu, a popup)
 /// at x, y, or none: a finger there acts on it, never on the 3D view behind.
@@ -119,7 +109,7 @@ void process_event(SDL_Event& event) {
 
 bool frame_wanted(Frontend& f) {
   SDL_PumpEvents();
-  if (!waiting_keys.empty() || SDL_HasEvents(SDL_FIRSTEVENT, SDL_LASTEVENT)) f.demand.wake();
+  if (!f.waiting_keys.empty() || SDL_HasEvents(SDL_FIRSTEVENT, SDL_LASTEVENT)) f.demand.wake();
   if (f.demand.wanted(steady_seconds())) return true;
   f.last_frame = std::chrono::steady_clock::now();
   return false;
@@ -136,15 +126,23 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
         (e.type == SDL_KEYDOWN && !is_modifier(e.key.keysym.scancode)))
       typed = true;
   };
-  while (!waiting_keys.empty() && !typed) {
-    take_key(waiting_keys.front());
-    waiting_keys.pop_front();
+  // ImGui 1.86 sees a key as held or not once a frame, and within a frame a text field takes
+  // typed characters before shortcuts: a key pressed and released between two frames would
+  // never be seen pressed (Enter in a lesson's answer field did nothing), and "Ctrl+A, 4.4,
+  // Enter" arriving in one frame of a busy machine typed 4.4 before selecting all. So the
+  // keyboard trickles, as ImGui's later input queue does: once a key other than a modifier has
+  // gone down (or a character arrived) in a frame, every later keyboard event waits, in order,
+  // for the frames after, in Frontend::waiting_keys. A modifier's release waits too, so Ctrl+A
+  // stays Ctrl+A.
+  while (!f.waiting_keys.empty() && !typed) {
+    take_key(f.waiting_keys.front());
+    f.waiting_keys.pop_front();
   }
   SDL_Event event;
   while (SDL_PollEvent(&event)) {
     if (keyboard_event(event)) {
-      if (typed || !waiting_keys.empty())
-        waiting_keys.push_back(event);
+      if (typed || !f.waiting_keys.empty())
+        f.waiting_keys.push_back(event);
       else
         take_key(event);
       continue;
@@ -201,7 +199,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
     // Numbers in fields and on sliders as the language writes them (imgui_hooks.cmake).
     ImGui::GetCurrentContext()->PlatformLocaleDecimalPoint = translator().language().decimal_separator;
     layout.resize_panels = true;
-    apply_ui_scale(layout.ui_scale);
+    apply_ui_scale(layout.ui_scale, f.app->state().presentation.theme);
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
   }

@@ -3,6 +3,7 @@
 // browser (emscripten_set_main_loop_arg calling run_frame).
 
 #include <chrono>
+#include <deque>
 #include <memory>
 
 #include "ui/app.h"
@@ -19,6 +20,9 @@ struct Frontend {
   bool running = true;
   ClassroomOutputs outputs;  ///< theme, fullscreen, title and live region, sound
   FrameDemand demand;        ///< whether a frame is due, or the window idles
+  /// Keyboard events held for the frames after this one (main_loop.cpp: ImGui 1.86 sees a key
+  /// once a frame).
+  std::deque<SDL_Event> waiting_keys;
 };
 
 /// Whether run_frame has anything to do now: an event waits, or the demand wants a frame (a

@@ -78,7 +78,7 @@ Situation situation_of(AppState& state) {
 void ClassroomOutputs::apply_theme(AppState& state) {
   if (state.presentation.theme == theme_) return;
   theme_ = state.presentation.theme;
-  use_theme(theme_);
+  apply_style(state.layout.ui_scale, theme_);
 }
 
 void ClassroomOutputs::update(AppState& state, SDL_Window* window, double seconds) {

@@ -80,7 +80,8 @@ void draw_sound_toggle(AppState& state) {
   item_tooltip("%s", tr("M: a click at each wall hit, thinned to a rate you can hear"));
   if (!p.sound_status.empty()) {
     ImGui::SameLine();
-    ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", p.sound_status.c_str());
+    ImGui::TextColored(colour_vec4(palette(state.presentation.theme).text_warning), "%s",
+                       p.sound_status.c_str());
   }
 }
 

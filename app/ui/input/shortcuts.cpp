@@ -93,7 +93,7 @@ void draw_help_window(AppState& state) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       // The table is English (shortcut_table.cpp marks its texts for the string tables).
-      ImGui::TextColored(colour_vec4(current_palette().text_key), "%s", tr(s.keys));
+      ImGui::TextColored(colour_vec4(palette(state.presentation.theme).text_key), "%s", tr(s.keys));
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(tr(s.action));
     }
@@ -109,7 +109,7 @@ void draw_help_window(AppState& state) {
     for (const auto& m : mouse) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextColored(colour_vec4(current_palette().text_key), "%s", m[0]);
+      ImGui::TextColored(colour_vec4(palette(state.presentation.theme).text_key), "%s", m[0]);
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(m[1]);
     }

@@ -3,9 +3,6 @@
 namespace swarmlab {
 namespace {
 
-Theme theme_in_use = Theme::dark;
-float scale_in_use = 1.0f;
-
 void set_colours(ImGuiStyle& style, const Palette& p, Theme theme) {
   if (theme == Theme::light)
     ImGui::StyleColorsLight(&style);
@@ -55,10 +52,9 @@ void set_colours(ImGuiStyle& style, const Palette& p, Theme theme) {
 
 }  // namespace
 
-void apply_style(float scale) {
-  scale_in_use = scale;
+void apply_style(float scale, Theme theme) {
   ImGuiStyle style;
-  set_colours(style, palette(theme_in_use), theme_in_use);
+  set_colours(style, palette(theme), theme);
   style.WindowRounding = 4;
   style.FrameRounding = 3;
   style.GrabRounding = 3;
@@ -66,7 +62,7 @@ void apply_style(float scale) {
   style.WindowBorderSize = 0;
   style.FramePadding = ImVec2(6, 4);
   style.ItemSpacing = ImVec2(8, 5);
-  if (theme_in_use == Theme::light) {
+  if (theme == Theme::light) {
     // On a washed-out projector, outlines keep fields and buttons apart from the page.
     style.WindowBorderSize = 1;
     style.FrameBorderSize = 1;
@@ -74,14 +70,5 @@ void apply_style(float scale) {
   style.ScaleAllSizes(scale);
   ImGui::GetStyle() = style;
 }
-
-void use_theme(Theme theme) {
-  theme_in_use = theme;
-  apply_style(scale_in_use);
-}
-
-Theme current_theme() { return theme_in_use; }
-
-const Palette& current_palette() { return palette(theme_in_use); }
 
 }  // namespace swarmlab

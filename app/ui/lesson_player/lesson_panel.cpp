@@ -51,7 +51,7 @@ void keep_inside_viewport() {
 
 // [SECTION] prose ------------------------------------------------------------------------------
 
-void draw_prose(const std::string& text) {
+void draw_prose(const AppState& state, const std::string& text) {
   // A screen reader reads it where it stands (the parallel DOM).
   mirror_text(ItemRole::paragraph, without_emphasis(text));
   struct Piece {
@@ -131,7 +131,8 @@ void draw_prose(const std::string& text) {
           if (!first) ImGui::SameLine(0, 0);
           first = false;
           if (p.emphasis)
-            ImGui::TextColored(colour_vec4(current_palette().lesson_keyword), "%s", p.text.c_str());
+            ImGui::TextColored(colour_vec4(palette(state.presentation.theme).lesson_keyword), "%s",
+                               p.text.c_str());
           else
             ImGui::TextUnformatted(p.text.c_str());
         }
@@ -153,24 +154,24 @@ std::string lesson_words(const AppState& state, const std::string& text) {
 }
 
 void draw_lesson_prose(const AppState& state, const std::string& text) {
-  draw_prose(lesson_words(state, text));
+  draw_prose(state, lesson_words(state, text));
 }
 
-ImVec4 marking_colour(const std::optional<bool>& correct) {
-  const Palette& p = current_palette();
+ImVec4 marking_colour(const AppState& state, const std::optional<bool>& correct) {
+  const Palette& p = palette(state.presentation.theme);
   return colour_vec4(!correct ? p.feedback_note : *correct ? p.feedback_right : p.feedback_wrong);
 }
 
 void draw_feedback(const AppState& state, const Marking& m) {
-  ImGui::PushStyleColor(ImGuiCol_Text, marking_colour(m.correct));
+  ImGui::PushStyleColor(ImGuiCol_Text, marking_colour(state, m.correct));
   draw_lesson_prose(state, m.feedback);
   ImGui::PopStyleColor();
 }
 
 /// A heading in the lesson's title colour, also a heading for a screen reader.
-void heading(const char* text) {
+void heading(const AppState& state, const char* text) {
   mirror_text(ItemRole::heading, text);
-  ImGui::TextColored(colour_vec4(current_palette().lesson_title), "%s", text);
+  ImGui::TextColored(colour_vec4(palette(state.presentation.theme).lesson_title), "%s", text);
 }
 
 /// A short line in a colour, read as a paragraph.
@@ -200,7 +201,7 @@ bool enter_pressed() {
 /// in view. Returns whether feedback was drawn.
 bool draw_task(AppState& state, const LessonTask& task) {
   LessonSession& lessons = state.lessons;
-  const Palette& palette = current_palette();
+  const Palette& palette = swarmlab::palette(state.presentation.theme);
   draw_lesson_prose(state, task.prompt);
   if (task.kind == LessonTask::Kind::measure) {
     ImGui::SetNextItemWidth(8 * ImGui::GetFontSize());
@@ -275,7 +276,7 @@ void draw_summary(AppState& state, float box_height) {
   const Lesson& lesson = *lessons.open_lesson();
   const LessonProgress* progress = lessons.progress_of(lesson.id);
   const std::string finished = lessons.finished_line();
-  heading(tr("Summary"));
+  heading(state, tr("Summary"));
   mirror_text(ItemRole::paragraph, finished);
   ImGui::PushTextWrapPos(0);  // a narrow panel wraps it rather than cut it off
   ImGui::TextUnformatted(finished.c_str());
@@ -287,7 +288,7 @@ void draw_summary(AppState& state, float box_height) {
     if (!step.task) continue;
     ImGui::PushID(int(i));
     ++number;
-    heading(printed(tr("Task %zu (step %zu)"), number, i + 1).c_str());
+    heading(state, printed(tr("Task %zu (step %zu)"), number, i + 1).c_str());
     draw_lesson_prose(state, step.task->prompt);
     const StepAnswer* a = nullptr;
     if (progress) {
@@ -314,8 +315,8 @@ void draw_summary(AppState& state, float box_height) {
                  : *a->correct ? tr("Your answer: %s \u2014 right")
                                : tr("Your answer: %s \u2014 not right yet");
       const std::string text = printed(format, answer.c_str(), a->tries);
-      ImGui::PushStyleColor(ImGuiCol_Text, marking_colour(a->correct));
-      draw_prose(text);
+      ImGui::PushStyleColor(ImGuiCol_Text, marking_colour(state, a->correct));
+      draw_prose(state, text);
       ImGui::PopStyleColor();
     }
     ImGui::Spacing();
@@ -354,7 +355,7 @@ void draw_lesson(AppState& state, float height) {
   LessonSession& lessons = state.lessons;
   const Lesson* lesson = lessons.open_lesson();
   if (!lesson) return;
-  const Palette& palette = current_palette();
+  const Palette& palette = swarmlab::palette(state.presentation.theme);
   const float font = ImGui::GetFontSize();
   ImGui::PushID("lesson");
   const float top = ImGui::GetCursorPosY();
@@ -382,7 +383,7 @@ void draw_lesson(AppState& state, float height) {
   }
   if (!lessons.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette.feedback_wrong));
-    draw_prose(lessons.error);
+    draw_prose(state, lessons.error);
     ImGui::PopStyleColor();
   }
   // The text box takes what the task area, the buttons and the title leave, and at least four
@@ -468,25 +469,28 @@ void draw_welcome_window(AppState& state) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     keep_inside_viewport();
     ImGui::PushTextWrapPos(0);
-    heading(tr("Welcome to Swarm Lab"));
-    draw_prose(tr(
-        "Particles that pull on each other like springs (F = J m\u2081 m\u2082 r), solved "
-        "exactly. The *3D view*: drag to turn it, scroll or pinch to zoom, right-drag or "
-        "drag two fingers to slide it, click or tap a particle to follow it. Above it the "
-        "play buttons and the clock, below it the "
-        "*read-outs* (hover one for its equation) and the timeline. Beside it (on a phone, in "
-        "the tabs below) the *Controls* (the scenario, the masses, the container, the method) "
-        "and live *Plots* with the *Instruments*: a stopwatch and a period meter."));
+    heading(state, tr("Welcome to Swarm Lab"));
+    draw_prose(
+        state,
+        tr("Particles that pull on each other like springs (F = J m\u2081 m\u2082 r), solved "
+           "exactly. The *3D view*: drag to turn it, scroll or pinch to zoom, right-drag or "
+           "drag two fingers to slide it, click or tap a particle to follow it. Above it the "
+           "play buttons and the clock, below it the "
+           "*read-outs* (hover one for its equation) and the timeline. Beside it (on a phone, in "
+           "the tabs below) the *Controls* (the scenario, the masses, the container, the method) "
+           "and live *Plots* with the *Instruments*: a stopwatch and a period meter."));
     ImGui::Spacing();
-    heading(tr("Three things to try"));
-    draw_prose(tr("1. Press *Space* to pause and play; click a ball and watch all four close "
+    heading(state, tr("Three things to try"));
+    draw_prose(state,
+               tr("1. Press *Space* to pause and play; click a ball and watch all four close "
                   "their orbits together."));
-    draw_prose(tr("2. Open *Scenario* and pick the repulsive fireball: the push turns into a gas "
+    draw_prose(state,
+               tr("2. Open *Scenario* and pick the repulsive fireball: the push turns into a gas "
                   "pressing on its wall."));
-    draw_prose(tr("3. In *Controls \u2192 System*, change a mass and see the period in the "
-                  "read-outs change."));
+    draw_prose(state, tr("3. In *Controls \u2192 System*, change a mass and see the period in the "
+                         "read-outs change."));
     ImGui::Spacing();
-    heading(tr("Lessons (10 to 20 minutes each)"));
+    heading(state, tr("Lessons (10 to 20 minutes each)"));
     for (const Lesson& l : lessons.shipped()) {
       ImGui::PushID(l.id.c_str());
       if (ImGui::Button(tr_id("Start"))) {

@@ -26,6 +26,6 @@ void draw_progress_notice(AppState& state);
 bool draw_hidden_by_lesson(const AppState& state, LessonHidden what);
 /// Lesson text: paragraphs split by a blank line, *emphasis* in the accent colour, wrapped
 /// to the window.
-void draw_prose(const std::string& text);
+void draw_prose(const AppState& state, const std::string& text);
 
 }  // namespace swarmlab

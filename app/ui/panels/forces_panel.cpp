@@ -3,6 +3,7 @@
 // CLI's message and the running preset carries on.
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -122,17 +123,17 @@ void draw_forces_panel(AppState& state) {
   } else if (d.drag) {
     ImGui::SetNextItemWidth(width);
     changed |= input_double(tr_id("b (mass/time)"), &d.drag->b);
-    static char text[256];
-    static std::string shown;
+    std::string& text = state.controls_memory.drag_particles;
+    std::string& shown = state.controls_memory.drag_particles_shown;
     if (shown != listed(d.drag->particles)) {
       shown = listed(d.drag->particles);
-      std::snprintf(text, sizeof text, "%s", shown.c_str());
+      text = shown;
     }
     ImGui::SetNextItemWidth(width);
-    ImGui::InputText(tr_id("particles"), text, sizeof text);
+    ImGui::InputText(tr_id("particles"), &text);
     if (committed()) {
       std::vector<std::size_t> indices;
-      if (parse_indices(text, indices)) {
+      if (parse_indices(text.c_str(), indices)) {
         d.drag->particles = indices;
         changed = true;
       } else {

@@ -127,7 +127,7 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
       // A lesson that opens or moves to another step brings its tab to the front.
       const bool lesson_to_front = step.first && step != *lesson_tab_step;
       *lesson_tab_step = step;
-      static std::string open_part;  // the English name of the part open, across both ways
+      std::string& open_part = s.layout.drawer_open;
       if (lesson_to_front) open_part = "Lesson";
       auto body = [&](const Part& part) {
         const char* name = english_of(part.label);
@@ -146,7 +146,7 @@ void draw_panel_windows(AppState& state, const ScreenLayout& layout, const Touch
       std::vector<const char*> labels;
       for (const Part& part : parts) labels.push_back(part.label);
       // Where the tabs do not fit in one row they wrap onto more (wrapping_tabs.h).
-      static bool wrapped_last = false;
+      bool& wrapped_last = s.layout.drawer_tabs_wrapped;
       if (!tabs_fit(labels)) {
         int open = 0;
         for (int i = 0; i < int(parts.size()); ++i)

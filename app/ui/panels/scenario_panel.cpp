@@ -23,7 +23,7 @@ namespace swarmlab {
 
 void show_refusal(AppState& state, Section section) {
   if (state.draft_error.empty() || state.draft_error_section != section) return;
-  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette(state.presentation.theme).text_error));
   // The preset rules' message stays English (the CLI's), after a translated sentence.
   ImGui::TextWrapped(tr("Not applied: %s"), state.draft_error.c_str());
   ImGui::PopStyleColor();
@@ -93,7 +93,7 @@ void draw_scenario_panel(AppState& state) {
   }
 
   ImGui::Spacing();
-  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_key));
+  ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(palette(state.presentation.theme).text_key));
   ImGui::TextWrapped("%s", labels::title(state.preset, state.modified).c_str());
   ImGui::PopStyleColor();
   // The description was written for the preset as shipped; after an edit it may no longer hold.
@@ -159,7 +159,7 @@ void draw_scenario_panel(AppState& state) {
     if (ImGui::Button(tr_id("Export stages CSV"))) request_stages_csv(state);
   }
   if (!state.status.empty()) {
-    const Palette& colours = current_palette();
+    const Palette& colours = palette(state.presentation.theme);
     ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(state.status_is_error ? colours.text_error
                                                                            : colours.text_ok));
     ImGui::TextWrapped("%s", state.status.c_str());

@@ -115,7 +115,8 @@ void draw_simulation_panel(AppState& state) {
       swarm::is_pairwise(state.preset.method) ||
       std::any_of(state.preset.compare.begin(), state.preset.compare.end(), swarm::is_pairwise);
   if (pairwise && state.run->system().particles.size() > 2000) {
-    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
+    ImGui::PushStyleColor(ImGuiCol_Text,
+                          colour_vec4(palette(state.presentation.theme).text_warning));
     ImGui::TextWrapped(tr("The numerical methods sum over all %zu^2 / 2 pairs every step: expect a "
                           "slow simulation. The analytic method is O(N)."),
                        state.run->system().particles.size());
@@ -174,12 +175,13 @@ void draw_transport_bar(AppState& state) {
                "wall changes the motion and neither applies."));
   if (state.run->finished()) {
     same_line_if_fits(ImGui::CalcTextSize(tr("end of run")).x);
-    ImGui::TextColored(colour_vec4(current_palette().text_warning), "%s", tr("end of run"));
+    ImGui::TextColored(colour_vec4(palette(state.presentation.theme).text_warning), "%s",
+                       tr("end of run"));
     item_tooltip("%s", tr("Continue (Space) runs on for as long again."));
   } else if (state.playing && state.stats.speed_ratio < 0.97) {
     same_line_if_fits(ImGui::CalcTextSize(tr("(%.0f%% of the speed)")).x);
-    ImGui::TextColored(colour_vec4(current_palette().text_warning), tr("(%.0f%% of the speed)"),
-                       100 * state.stats.speed_ratio);
+    ImGui::TextColored(colour_vec4(palette(state.presentation.theme).text_warning),
+                       tr("(%.0f%% of the speed)"), 100 * state.stats.speed_ratio);
     item_tooltip("%s", tr("The steps of this speed do not fit in a frame on this machine."));
   }
 }

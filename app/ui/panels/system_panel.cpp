@@ -57,7 +57,7 @@ void draw_coupling(AppState& state) {
          "this is one spring k_i = J M m_i to the centre of mass: all particles share "
          "omega = sqrt(J M) (J > 0) or run away as exp(Omega t), Omega = sqrt(-J M) (J < 0)."));
   // The magnitude survives a trip through J = 0, so "zero" and back restores the old value.
-  static double magnitude = 1.0;
+  double& magnitude = state.controls_memory.coupling_magnitude;
   if (d.J != 0) magnitude = std::abs(d.J);
   int sign = d.J > 0 ? 0 : d.J == 0 ? 1 : 2;
   bool changed = false;
@@ -104,7 +104,8 @@ void draw_table(AppState& state, ParticleList& list) {
       ImGui::TableNextRow();
       // The selected particle's row stands out, as its card does among the instruments.
       if (state.selected == i)
-        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, current_palette().selected_row.packed());
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1,
+                               palette(state.presentation.theme).selected_row.packed());
       ImGui::TableNextColumn();
       if (ImGui::Button("x", ImVec2(target_width("x"), 0))) remove = i;
       item_tooltip(tr("Remove particle %zu"), i + 1);

@@ -46,7 +46,7 @@ bool build_atlas(float scale, std::string_view cjk) {
 
 }  // namespace
 
-void apply_ui_scale(float scale) {
+void apply_ui_scale(float scale, Theme theme) {
   // The glyphs of the languages' names, built in; the whole subset for Chinese.
   const std::string_view names(reinterpret_cast<const char*>(noto_sans_sc_names_otf),
                                noto_sans_sc_names_otf_size);
@@ -60,13 +60,13 @@ void apply_ui_scale(float scale) {
     if (problem.empty() && !build_atlas(scale, cjk))
       problem = "stb_truetype could not read the font";
     if (problem.empty()) {
-      apply_style(scale);
+      apply_style(scale, theme);
       return;
     }
     refuse_cjk_font(problem);
   }
   build_atlas(scale, names);
-  apply_style(scale);
+  apply_style(scale, theme);
 }
 
 }  // namespace swarmlab

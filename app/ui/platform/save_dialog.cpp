@@ -200,7 +200,8 @@ void draw_save_dialogs(AppState& state) {
       ImGui::TextDisabled("%s", location.c_str());
       ImGui::PopTextWrapPos();
       if (!d.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_error));
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              colour_vec4(palette(state.presentation.theme).text_error));
         ImGui::TextWrapped("%s", d.error.c_str());
         ImGui::PopStyleColor();
       }

@@ -57,7 +57,7 @@ SdlWindow open_window(const char* title, int width, int height, std::string& err
   // Every control reachable from the keyboard: arrows move, Space activates, Enter types into
   // a field, Escape backs out; F6 goes to the next region (input/keyboard_regions.h).
   ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
-  apply_ui_scale(1.0f);
+  apply_ui_scale(1.0f, Theme::dark);  // the app's first theme; ClassroomOutputs applies another
   ImGui_ImplSDL2_InitForOpenGL(w.window, w.context);
   ImGui_ImplOpenGL3_Init(kGlslVersion);
   return w;

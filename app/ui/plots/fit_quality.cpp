@@ -1,4 +1,3 @@
-#include "ui/parallel_dom/item_tooltip.h"
 #include "ui/plots/fit_quality.h"
 
 #include <imgui.h>
@@ -7,12 +6,14 @@
 
 #include "i18n/translator.h"
 #include "ui/kit/theme_style.h"
+#include "ui/parallel_dom/item_tooltip.h"
 #include "ui/plots/plot_widget.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 
 void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm::PowerLawFit& fit,
-                      bool log_x, float height) {
+                      bool log_x, float height, AppState& state) {
   if (!fit.valid) return;
   const swarm::PowerLawAdequacy judged = swarm::judge_power_law(fit);
   static std::vector<double> used_x;
@@ -25,9 +26,9 @@ void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm:
   r.x = {"", log_x, std::nullopt, std::nullopt};
   r.y = {tr("ln y \u2212 fit"), false, std::nullopt, std::nullopt};
   r.y_from_zero = true;  // the zero line is in view: a wave or a trend about it shows
-  r.series = {{tr("residual"), &used_x, &fit.residuals, current_palette().residual.packed(), true,
-               2.0f}};
-  draw_plot(id, r, height);
+  r.series = {{tr("residual"), &used_x, &fit.residuals,
+               palette(state.presentation.theme).residual.packed(), true, 2.0f}};
+  draw_plot(id, r, height, state);
 
   char line[256];
   std::snprintf(line, sizeof line, tr("R\u00b2 = %.4f   Durbin-Watson = %.2f   (%zu stages)"),
@@ -38,7 +39,8 @@ void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm:
         "when the residuals scatter at random, near 0 when neighbours share their sign (a wave "
         "or a trend the power law does not follow)."));
   if (judged.poor()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, colour_vec4(current_palette().text_warning));
+    ImGui::PushStyleColor(ImGuiCol_Text,
+                          colour_vec4(palette(state.presentation.theme).text_warning));
     ImGui::TextWrapped("%s",
                        judged.systematic
                            ? tr("The residuals wave or trend: a power law does not describe "

@@ -9,8 +9,10 @@
 
 namespace swarmlab {
 
+struct AppState;
+
 /// x: the stages' x values the fit was made over (fit.used indexes them).
 void draw_fit_quality(const char* id, const std::vector<double>& x, const swarm::PowerLawFit& fit,
-                      bool log_x, float height);
+                      bool log_x, float height, AppState& state);
 
 }  // namespace swarmlab

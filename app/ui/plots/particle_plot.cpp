@@ -34,12 +34,12 @@ void draw_particle_tab(AppState& state, float plot_height) {
   p.file_title = "Particle " + std::to_string(track->particle + 1) + ": x(t) \u2212 X_cm(t)";
   p.x = {tr("t (time)"), false, std::nullopt, std::nullopt};
   p.y = {tr("x about the CM (length)"), false, std::nullopt, std::nullopt};
-  const Palette& colours = current_palette();
+  const Palette& colours = palette(state.presentation.theme);
   p.series = {
       {tr("starting value"), &level_t, &level_x, colours.starting_value.packed(), false, 1.0f},
       {"x(t)", &track->t, &track->x, colours.particle_track.packed(), false, 2.0f},
       {tr("start"), &start_t, &start_x, colours.particle_start.packed(), true, 2.0f}};
-  draw_plot("particle_x", p, plot_height);
+  draw_plot("particle_x", p, plot_height, state);
   ImGui::TextWrapped("%s", tr(
       "Each time x(t) crosses its starting value in the same direction, one period has passed. "
       "The period meter (Instruments, above the plots) times these returns."));

@@ -15,7 +15,6 @@
 #include "report/svg_plot.h"
 #include "ui/kit/gl_api.h"
 #include "ui/platform/save_dialog.h"
-#include "ui/plots/plot_export_menu.h"
 #include "ui/state/app_state.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -24,9 +23,6 @@
 
 namespace swarmlab {
 namespace {
-
-std::optional<PlotExport> png_capture;  // a PNG waiting for a frame without the menu
-int png_frames_to_wait = 0;
 
 /// `format` (translated, with one %s) with the plot's title.
 std::string with_title(const char* format, const std::string& title) {
@@ -45,7 +41,7 @@ std::vector<std::string> made_by(const AppState& state) {
 }  // namespace
 
 void handle_plot_export(AppState& state) {
-  std::optional<PlotExport> pending = take_plot_export();
+  std::optional<PlotExport> pending = std::exchange(state.plot_exports.asked, std::nullopt);
   if (!pending) return;
   const std::string stem =
       file_stem_of(state.preset.name) + "-" + file_stem_of(pending->file_title);
@@ -63,23 +59,24 @@ void handle_plot_export(AppState& state) {
       break;
     case PlotExport::Kind::png:
       // The menu was drawn in this frame; the next one is drawn without it.
-      png_capture = std::move(pending);
-      png_frames_to_wait = 1;
+      state.plot_exports.png = std::move(pending);
+      state.plot_exports.png_frames_to_wait = 1;
       return;
   }
   request_save(state, std::move(r));
 }
 
 void capture_plot_png(AppState& state) {
+  std::optional<PlotExport>& png_capture = state.plot_exports.png;
   if (!png_capture) return;
-  if (png_frames_to_wait-- > 0) return;
+  if (state.plot_exports.png_frames_to_wait-- > 0) return;
   const ImGuiIO& io = ImGui::GetIO();
   const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
   const int fb_height = int(io.DisplaySize.y * sy);
-  const int x = int(png_capture->min.x * sx),
-            w = int((png_capture->max.x - png_capture->min.x) * sx);
-  const int h = int((png_capture->max.y - png_capture->min.y) * sy);
-  const int y = fb_height - int(png_capture->max.y * sy);  // GL counts rows from the bottom
+  const int x = int(png_capture->min_x * sx),
+            w = int((png_capture->max_x - png_capture->min_x) * sx);
+  const int h = int((png_capture->max_y - png_capture->min_y) * sy);
+  const int y = fb_height - int(png_capture->max_y * sy);  // GL counts rows from the bottom
   std::vector<unsigned char> pixels(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)) * 4);
   std::string png;
   if (w > 0 && h > 0) {

@@ -10,6 +10,7 @@
 #include "plotting/axis_ticks.h"
 #include "ui/kit/theme_style.h"
 #include "ui/plots/plot_export_menu.h"
+#include "ui/state/app_state.h"
 
 namespace swarmlab {
 namespace {
@@ -94,10 +95,10 @@ void value_text(const char* format, ...) {
 
 }  // namespace
 
-bool draw_plot(const char* id, const PlotSpec& spec, float height) {
+bool draw_plot(const char* id, const PlotSpec& spec, float height, AppState& state) {
   ImGui::PushID(id);
   // The theme's colours (access/theme_palette.h, held to WCAG AA by its test).
-  const Palette& colours = current_palette();
+  const Palette& colours = palette(state.presentation.theme);
   const ImU32 kPlotBackground = colours.plot_background.packed();
   const ImU32 kGrid = colours.plot_grid.packed(), kAxis = colours.plot_axis.packed();
   const ImU32 kText = colours.plot_text.packed(), kDimText = colours.plot_dim_text.packed();
@@ -347,8 +348,8 @@ bool draw_plot(const char* id, const PlotSpec& spec, float height) {
     ImGui::EndTooltip();
   }
   const ImVec2 corner(origin.x + width, origin.y + height);
-  plot_export_menu(spec, origin, corner, right_clicked);
-  plot_export_buttons(spec, origin, corner);
+  plot_export_menu(spec, origin, corner, right_clicked, state);
+  plot_export_buttons(spec, origin, corner, state);
   ImGui::PopID();
   return hovered;
 }

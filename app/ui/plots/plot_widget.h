@@ -7,9 +7,12 @@
 
 namespace swarmlab {
 
-/// Draws the plot at the cursor, full available width and the given height, with its export
-/// buttons on a line under it (within that height). A height too small for a readable plot is
-/// raised to the least that is (the panel scrolls). Returns whether the plot is hovered.
-bool draw_plot(const char* id, const PlotSpec& spec, float height);
+struct AppState;
+
+/// Draws the plot at the cursor, full available width and the given height, in the app's
+/// theme, with its export buttons on a line under it (within that height); an export asked for
+/// waits in `state.plot_exports`. A height too small for a readable plot is raised to the least
+/// that is (the panel scrolls). Returns whether the plot is hovered.
+bool draw_plot(const char* id, const PlotSpec& spec, float height, AppState& state);
 
 }  // namespace swarmlab

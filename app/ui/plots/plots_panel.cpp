@@ -21,14 +21,14 @@
 namespace swarmlab {
 namespace {
 
-/// The series colours of the current theme (access/theme_palette.h).
-const Palette& colours() { return current_palette(); }
+/// The series colours of the app's theme (access/theme_palette.h).
+const Palette& colours(const AppState& state) { return palette(state.presentation.theme); }
 
 /// A method's plot colour, from the core's method table.
-std::uint32_t colour_of(swarm::Method m) {
+std::uint32_t colour_of(swarm::Method m, const AppState& state) {
   const auto& [r, g, b] = swarm::info_of(m).colour;
   return plot_line_colour(Colour{std::uint8_t(r), std::uint8_t(g), std::uint8_t(b), 255},
-                          current_theme())
+                          state.presentation.theme)
       .packed();
 }
 
@@ -107,30 +107,29 @@ void draw_wall_tab(AppState& state, float plot_height) {
   p.y = {tr("P (force/area)"), false, std::nullopt, std::nullopt};
   p.y_from_zero = true;
   p.empty_message = empty;
-  p.series = {
-      {tr("each sample"), &series.t, &series.P, colours().pressure_each_sample.packed(), false,
-       1.0f},
-      {tr("running average"), &series.t, &series.P_mean, colours().pressure.packed(), false,
-       2.5f}};
-  draw_plot("pressure", p, plot_height);
+  p.series = {{tr("each sample"), &series.t, &series.P,
+               colours(state).pressure_each_sample.packed(), false, 1.0f},
+              {tr("running average"), &series.t, &series.P_mean, colours(state).pressure.packed(),
+               false, 2.5f}};
+  draw_plot("pressure", p, plot_height, state);
 
   PlotSpec t = p;
   t.title = tr("Wall temperature");
   t.file_title = "Wall temperature";
   t.y = {tr("T (energy, k_B = 1)"), false, std::nullopt, std::nullopt};
-  t.series = {
-      {tr("each sample"), &series.t, &series.T, colours().temperature_each_sample.packed(), false,
-       1.0f},
-      {tr("running average"), &series.t, &series.T_mean, colours().temperature.packed(), false, 2.5f}};
-  draw_plot("temperature", t, plot_height);
+  t.series = {{tr("each sample"), &series.t, &series.T,
+               colours(state).temperature_each_sample.packed(), false, 1.0f},
+              {tr("running average"), &series.t, &series.T_mean,
+               colours(state).temperature.packed(), false, 2.5f}};
+  draw_plot("temperature", t, plot_height, state);
 }
 
 void draw_energy_tab(AppState& state, float plot_height) {
   series.update(*state.run, state.plots.average_window);
   // Timing the energy plot's swings gives half the period, a trap worth naming.
   if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)
-    ImGui::TextColored(colour_vec4(colours().text_warning),
-                       "%s", tr("KE and PE swing at 2ω: one swing is half a period."));
+    ImGui::TextColored(colour_vec4(colours(state).text_warning), "%s",
+                       tr("KE and PE swing at 2ω: one swing is half a period."));
   const std::vector<double>& t_all = series.t_all;
   PlotSpec e;
   e.title = tr("KE, PE and E");
@@ -138,10 +137,11 @@ void draw_energy_tab(AppState& state, float plot_height) {
   e.x = {tr("t (time)"), false, window_start(state, state.run->time()), std::nullopt};
   e.y = {tr("energy"), false, std::nullopt, std::nullopt};
   e.y_from_zero = true;
-  e.series = {{"KE", &t_all, &series.KE, colours().kinetic.packed(), false, 2.0f},
-              {"PE", &t_all, &series.PE, colours().potential.packed(), false, 2.0f},
-              {"E = KE + PE", &t_all, &series.E, colours().total_energy.packed(), false, 2.5f}};
-  draw_plot("energies", e, plot_height);
+  e.series = {
+      {"KE", &t_all, &series.KE, colours(state).kinetic.packed(), false, 2.0f},
+      {"PE", &t_all, &series.PE, colours(state).potential.packed(), false, 2.0f},
+      {"E = KE + PE", &t_all, &series.E, colours(state).total_energy.packed(), false, 2.5f}};
+  draw_plot("energies", e, plot_height, state);
 
   PlotSpec d;
   d.title = tr("Energy change");
@@ -149,8 +149,8 @@ void draw_energy_tab(AppState& state, float plot_height) {
   d.x = e.x;
   d.y = {"(E - E\u2080) / |E\u2080|", false, std::nullopt, std::nullopt};
   d.series = {{std::string(swarm::name_of(state.preset.method)), &t_all, &series.drift,
-               colour_of(state.preset.method), false, 2.0f}};
-  draw_plot("drift", d, plot_height);
+               colour_of(state.preset.method, state), false, 2.0f}};
+  draw_plot("drift", d, plot_height, state);
 }
 
 void draw_expansion_tab(AppState& state, float plot_height) {
@@ -197,9 +197,10 @@ void draw_expansion_tab(AppState& state, float plot_height) {
     if (fit.valid) {
       char label[96];
       std::snprintf(label, sizeof label, "%s^%.3f \u00b1 %.3f", law, fit.slope, fit.slope_stderr);
-      s.fits.push_back({translator().numbers(label), std::exp(fit.intercept), fit.slope, colours().fit.packed()});
+      s.fits.push_back({translator().numbers(label), std::exp(fit.intercept), fit.slope,
+                        colours(state).fit.packed()});
     }
-    if (draw_plot(id, s, plot_height) && fit.valid) {
+    if (draw_plot(id, s, plot_height, state) && fit.valid) {
       ImGui::BeginTooltip();
       char line[256];
       std::snprintf(line, sizeof line,
@@ -208,14 +209,15 @@ void draw_expansion_tab(AppState& state, float plot_height) {
       ImGui::TextUnformatted(translator().numbers(line).c_str());
       ImGui::EndTooltip();
     }
-    draw_fit_quality((std::string(id) + " residuals").c_str(), x, fit, log, 0.45f * plot_height);
+    draw_fit_quality((std::string(id) + " residuals").c_str(), x, fit, log, 0.45f * plot_height,
+                     state);
   };
   plot("pv", tr("P against V"), "P against V", tr("V (length\u00b3)"), V, tr("P (force/area)"), P,
-       fits.P_V, "P \u221d V", colours().pressure.packed());
+       fits.P_V, "P \u221d V", colours(state).pressure.packed());
   plot("tv", tr("T against V"), "T against V", tr("V (length\u00b3)"), V, tr("T (energy)"), T,
-       fits.T_V, "T \u221d V", colours().temperature.packed());
+       fits.T_V, "T \u221d V", colours(state).temperature.packed());
   plot("pt", tr("P against T"), "P against T", tr("T (energy)"), T, tr("P (force/area)"), P,
-       fits.P_T, "P \u221d T", colours().pressure_against_temperature.packed());
+       fits.P_T, "P \u221d T", colours(state).pressure_against_temperature.packed());
 }
 
 void draw_compare_tab(AppState& state, float plot_height) {
@@ -245,10 +247,10 @@ void draw_compare_tab(AppState& state, float plot_height) {
       energy_t[k].push_back(s.t);
       energy[k].push_back(swarm::relative_energy_change(run.samples().front(), s.E));
     }
-    e.series.push_back(
-        {std::string(swarm::name_of(m)), &energy_t[k], &energy[k], colour_of(m), false, 2.0f});
+    e.series.push_back({std::string(swarm::name_of(m)), &energy_t[k], &energy[k],
+                        colour_of(m, state), false, 2.0f});
   }
-  draw_plot("energy_error", e, plot_height);
+  draw_plot("energy_error", e, plot_height, state);
 
   PlotSpec p;
   p.title = tr("Position error");
@@ -259,8 +261,8 @@ void draw_compare_tab(AppState& state, float plot_height) {
   p.empty_message = tr("tick 'analytic' under Side by side to measure position errors");
   for (const swarm::ErrorFromExact& track : errors)
     p.series.push_back({std::string(swarm::name_of(track.method)), &track.t, &track.position_error,
-                        colour_of(track.method), false, 2.0f});
-  draw_plot("position_error", p, plot_height);
+                        colour_of(track.method, state), false, 2.0f});
+  draw_plot("position_error", p, plot_height, state);
 }
 
 /// A plot tab: its label, the rows of options above its plots, how many plots share its height
@@ -316,16 +318,16 @@ void draw_plots_panel(AppState& state) {
   // Where the tabs do not fit in one row they wrap onto more (wrapping_tabs.h).
   std::vector<const char*> labels;
   for (const PlotTabDescriptor& d : kPlotTabs) labels.push_back(d.label());
-  static bool wrapped_last = false;
   if (!tabs_fit(labels)) {
     const PlotTab open = state.plots.tab.value_or(state.plots.shown_tab.value_or(PlotTab::wall));
     draw_tab(kPlotTabs[draw_wrapping_tabs(labels, int(open))]);
     state.plots.tab.reset();
-    wrapped_last = true;
+    state.plots.tabs_wrapped = true;
     return;
   }
-  if (wrapped_last && !state.plots.tab) state.plots.tab = state.plots.shown_tab;  // the same tab
-  wrapped_last = false;
+  // Back from wrapped tabs: the same tab.
+  if (state.plots.tabs_wrapped && !state.plots.tab) state.plots.tab = state.plots.shown_tab;
+  state.plots.tabs_wrapped = false;
   if (!ImGui::BeginTabBar("plots", ImGuiTabBarFlags_FittingPolicyScroll)) return;
   for (const PlotTabDescriptor& d : kPlotTabs) {
     const ImGuiTabItemFlags flags = state.plots.tab == d.tab ? ImGuiTabItemFlags_SetSelected : 0;

@@ -70,7 +70,7 @@ void draw_projects_tab(AppState& state, float plot_height) {
     return;
   }
   cache.update(state, plots);
-  const Palette& c = current_palette();
+  const Palette& c = palette(state.presentation.theme);
   const ProjectSeries& s = cache.series;
   const PlotAxis time{tr("t (time)"), false, std::nullopt, std::nullopt};
 
@@ -84,7 +84,7 @@ void draw_projects_tab(AppState& state, float plot_height) {
     m.series = {
         {tr("CM height z"), &s.t, &s.cm_height, line(c.pressure), false, 2.0f},
         {tr("size: rms distance from the CM"), &s.t, &s.size, line(c.temperature), false, 2.0f}};
-    draw_plot("project_motion", m, plot_height);
+    draw_plot("project_motion", m, plot_height, state);
   }
   if (plots.books) {
     PlotSpec b;
@@ -101,7 +101,7 @@ void draw_projects_tab(AppState& state, float plot_height) {
         {tr("work by the walls"), &s.t, &s.wall_work, line(c.pressure), false, 1.5f},
         {tr("heat from the wall"), &s.t, &s.wall_heat, line(c.temperature), false, 1.5f},
         {tr("drag loss"), &s.t, &s.drag_loss, line(c.kinetic), false, 1.5f}};
-    draw_plot("project_books", b, plot_height);
+    draw_plot("project_books", b, plot_height, state);
   }
   if (plots.pv_loop) {
     const report::PvLoop& l = cache.loop;
@@ -116,7 +116,7 @@ void draw_projects_tab(AppState& state, float plot_height) {
         {tr("wall moving in (P: running mean)"), &l.V_in, &l.P_in, line(c.pressure), false, 2.0f}};
     if (!l.V_out.empty())
       p.series.push_back({tr("wall moving out"), &l.V_out, &l.P_out, line(c.temperature), false, 2.0f});
-    draw_plot("project_pv", p, plot_height);
+    draw_plot("project_pv", p, plot_height, state);
   }
   if (plots.speeds) {
     const HistogramSeries& h = cache.histogram;
@@ -131,7 +131,7 @@ void draw_projects_tab(AppState& state, float plot_height) {
     v.empty_message = tr("no motion yet: T = 0");
     v.series = {{tr("the particles now"), &h.x, &h.measured, line(c.kinetic), true, 2.0f},
                 {translator().numbers(maxwell), &h.x, &h.maxwell, line(c.fit), false, 2.0f}};
-    draw_plot("project_speeds", v, plot_height);
+    draw_plot("project_speeds", v, plot_height, state);
   }
 }
 

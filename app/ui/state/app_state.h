@@ -15,6 +15,7 @@
 #include "ui/state/instruments.h"
 #include "ui/state/lesson_session.h"
 #include "ui/state/live_run.h"
+#include "ui/state/plot_exports.h"
 #include "ui/state/plot_tab.h"
 #include "ui/state/preset_store.h"
 #include "ui/state/save_request.h"
@@ -46,6 +47,7 @@ struct PlotOptions {
   std::optional<PlotTab> tab;        ///< tab to select on the next frame; none: leave as is
   std::optional<PlotTab> shown_tab;  ///< the tab open in the last frame
   unsigned tab_window = 0;    ///< an ImGui id of the window that drew the tabs last frame
+  bool tabs_wrapped = false;  ///< the last frame drew the tabs wrapped (wrapping_tabs.h)
 };
 
 struct Layout {
@@ -85,6 +87,10 @@ struct Layout {
     float scroll = 0;        ///< pixels scrolled down
   };
   std::vector<FloatingWindow> windows;
+  /// The compact layouts' drawer of tabs: the part open (its English name), kept across the two
+  /// ways of drawing the tabs, and whether the last frame drew them wrapped (wrapping_tabs.h).
+  std::string drawer_open;
+  bool drawer_tabs_wrapped = false;
 
   /// One step larger (+1) or smaller (-1), within the limits (menu and Ctrl +/-).
   void step_ui_scale(int direction) {
@@ -131,6 +137,13 @@ struct LanguageChoice {
   bool remember = true;
 };
 
+/// What the controls remember between frames beside the draft they edit.
+struct ControlsMemory {
+  double coupling_magnitude = 1.0;   ///< |J|, kept through a trip to J = 0 ("zero" and back)
+  std::string drag_particles;        ///< the drag's particle list as typed
+  std::string drag_particles_shown;  ///< the draft's list the field was last filled from
+};
+
 /// Which part of the controls an edit came from, to show a refusal next to it.
 enum class Section { none, scenario, system, container, simulation, forces, walls };
 
@@ -143,6 +156,7 @@ struct AppState {
   swarm::Preset draft;   ///< edited in the panels; applied only when valid
   std::string draft_error;
   Section draft_error_section = Section::none;
+  ControlsMemory controls_memory;
   bool modified = false;   ///< preset differs from origin
   std::string location;    ///< the path field of open and save
   std::string shipped_id;  ///< the shipped preset opened last, empty after opening a file
@@ -176,6 +190,7 @@ struct AppState {
   ColourScale colour_scale;
   ViewOptions view;
   PlotOptions plots;
+  PlotExports plot_exports;  ///< a plot's export on its way to the save dialog (plot_exports.h)
   SaveDialog save_dialog;  ///< save, export and quit dialogs (save_request.h)
   Layout layout;
   Presentation presentation;

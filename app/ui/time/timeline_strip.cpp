@@ -95,7 +95,7 @@ void draw_timeline_strip(AppState& state, float x, float y, float width, float h
   }
   name_item(tr("Timeline: the present and the time reached; drag to go back to any moment"));
 
-  const Palette& colours = current_palette();
+  const Palette& colours = palette(state.presentation.theme);
   const ImU32 track = colours.timeline_track.packed(), reached = colours.timeline_reached.packed(),
               stage = colours.timeline_stage.packed(), present = colours.timeline_present.packed(),
               target = colours.timeline_target.packed();

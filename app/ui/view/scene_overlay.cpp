@@ -25,6 +25,7 @@ struct Painter {
   ImDrawList* draw;
   const OrbitCamera& camera;
   const ViewRect& rect;
+  const Palette& colours;  ///< the app's theme
 
   ImVec2 at(const ScreenPoint& p) const { return ImVec2(p.x, p.y); }
   ScreenPoint project(const Vec3f& p) const { return camera.project(p, rect); }
@@ -56,9 +57,8 @@ ImU32 with_alpha(ImU32 colour, float alpha) {
 
 /// A hot wall's colour: red when it is hotter than the gas, blue when colder, white when the
 /// two agree; the ratio Tw / T sets how far (fully saturated at a factor of 4).
-ImU32 wall_temperature_colour(double Tw, double T_gas) {
+ImU32 wall_temperature_colour(double Tw, double T_gas, const Palette& p) {
   const double x = T_gas > 0 ? std::clamp(std::log(Tw / T_gas) / std::log(4.0), -1.0, 1.0) : 1.0;
-  const Palette& p = current_palette();
   const Colour& end = x > 0 ? p.wall_hot : p.wall_cold;
   const auto mix = [&](std::uint8_t neutral, std::uint8_t far) {
     return std::uint8_t(std::lround(neutral + std::abs(x) * (double(far) - neutral)));
@@ -75,7 +75,7 @@ ImU32 wall_temperature_colour(double Tw, double T_gas) {
 void draw_container(const Painter& paint, double radius, std::optional<ImU32> tint = {}) {
   const float R = float(radius);
   const Vec3f eye = paint.camera.eye();
-  const ImU32 near_colour = tint ? *tint : current_palette().container.packed();
+  const ImU32 near_colour = tint ? *tint : paint.colours.container.packed();
   const ImU32 far_colour = with_alpha(near_colour, 0.36f);
   constexpr int kSegments = 72;
   auto circle_segments = [&](auto point_at) {
@@ -121,8 +121,8 @@ void draw_container(const Painter& paint, double radius, std::optional<ImU32> ti
 void draw_springs(const Painter& paint, const swarm::System& s, SpringOverlay mode) {
   const std::size_t n = s.particles.size();
   if (mode == SpringOverlay::off || n > kSpringLimit || s.J == 0) return;
-  const ImU32 colour = s.J > 0 ? current_palette().spring_attractive.packed()
-                               : current_palette().spring_repulsive.packed();
+  const ImU32 colour =
+      s.J > 0 ? paint.colours.spring_attractive.packed() : paint.colours.spring_repulsive.packed();
   const double M = swarm::total_mass(s);
   const Vec3f cm = swarm::cm_position(s).cast<float>();
   double k_max = 0;
@@ -171,7 +171,7 @@ void draw_axes(const AppState& state, ImDrawList* draw) {
   const ImVec2 origin(rect.x + rect.width - 3.0f * font, rect.y + rect.height - 3.0f * font);
   const Eigen::Matrix4f view = state.camera.view();
   const char* names[] = {"x", "y", "z"};
-  const Palette& theme = current_palette();
+  const Palette& theme = palette(state.presentation.theme);
   const ImU32 colours[] = {theme.axis_x.packed(), theme.axis_y.packed(), theme.axis_z.packed()};
   for (int a = 0; a < 3; ++a) {
     const Eigen::Vector3f d = view.block<3, 3>(0, 0).col(a);
@@ -188,14 +188,15 @@ void draw_legend(AppState& state, ImDrawList* draw) {
   const ImVec2 low(rect.x + 1.0f * font, rect.y + rect.height - 2.2f * font);
   draw->AddRectFilled(ImVec2(low.x - 0.5f * font, low.y - 1.6f * font),
                       ImVec2(low.x + width + 0.5f * font, low.y + height + 1.5f * font),
-                      current_palette().legend_background.packed(), 4.0f);
+                      palette(state.presentation.theme).legend_background.packed(), 4.0f);
   constexpr int kSteps = 48;
   for (int k = 0; k < kSteps; ++k) {
     const float x0 = low.x + width * float(k) / kSteps, x1 = low.x + width * float(k + 1) / kSteps;
-    draw->AddRectFilled(ImVec2(x0, low.y), ImVec2(x1 + 0.5f, low.y + height),
-                        particle_colour(float(k + 0.5f) / kSteps, current_theme()).packed());
+    draw->AddRectFilled(
+        ImVec2(x0, low.y), ImVec2(x1 + 0.5f, low.y + height),
+        particle_colour(float(k + 0.5f) / kSteps, state.presentation.theme).packed());
   }
-  const ImU32 text_colour = current_palette().view_text.packed();
+  const ImU32 text_colour = palette(state.presentation.theme).view_text.packed();
   draw->AddText(ImVec2(low.x, low.y - 1.3f * font), text_colour,
                 legend_title(state.view.colour_by));
   char text[32];
@@ -213,7 +214,7 @@ void draw_legend(AppState& state, ImDrawList* draw) {
 void draw_floor(const Painter& paint, double h, const swarm::Vec3& cm, float extent) {
   const float z = float(h), x0 = float(cm.x()), y0 = float(cm.y());
   constexpr int kLines = 8;
-  const ImU32 colour = current_palette().floor_grid.packed();
+  const ImU32 colour = paint.colours.floor_grid.packed();
   for (int k = -kLines; k <= kLines; ++k) {
     const float o = extent * float(k) / kLines;
     paint.line(Vec3f(x0 - extent, y0 + o, z), Vec3f(x0 + extent, y0 + o, z), colour, 1.0f);
@@ -229,7 +230,7 @@ void draw_gravity_arrow(const Painter& paint, const swarm::Vec3& g, const swarm:
   const Vec3f side = dir.cross(std::abs(dir.z()) < 0.9f ? Vec3f::UnitZ() : Vec3f::UnitX()).normalized();
   const Vec3f start = cm.cast<float>() + side * (0.8f * extent) - dir * (0.15f * extent);
   const Vec3f end = start + dir * (0.35f * extent);
-  const ImU32 colour = current_palette().gravity_arrow.packed();
+  const ImU32 colour = paint.colours.gravity_arrow.packed();
   paint.line(start, end, colour, 2.5f);
   const ScreenPoint a = paint.project(start), b = paint.project(end);
   if (!a.visible || !b.visible) return;
@@ -252,15 +253,16 @@ void draw_scene_overlay(AppState& state) {
   const ViewRect& rect = state.layout.view;
   draw->PushClipRect(ImVec2(rect.x, rect.y), ImVec2(rect.x + rect.width, rect.y + rect.height),
                      false);
-  const Painter paint{draw, state.camera, rect};
+  const Painter paint{draw, state.camera, rect, palette(state.presentation.theme)};
   const swarm::System& s = state.run->system();
   const float font = ImGui::GetFontSize();
-  const Palette& theme = current_palette();
+  const Palette& theme = paint.colours;
 
   if (state.view.container)
     if (const auto R = state.run->primary().engine().container_radius()) {
       if (const auto Tw = state.preset.wall_temperature)
-        draw_container(paint, *R, wall_temperature_colour(*Tw, swarm::kinetic_temperature(s)));
+        draw_container(paint, *R,
+                       wall_temperature_colour(*Tw, swarm::kinetic_temperature(s), theme));
       else
         draw_container(paint, *R);
     }
