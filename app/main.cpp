@@ -6,6 +6,7 @@
 #include "cli/cli.h"
 #include "cli/cli_bench.h"
 #include "ensemble/ensemble_plan.h"
+#include "i18n/language.h"
 #include "swarm/engine/engine.h"
 #include "ui/state/plot_tab.h"
 #ifdef SWARMLAB_HAS_DESKTOP
@@ -48,8 +49,9 @@ int main(int argc, char** argv) {
 
   std::string lang;
   app.add_option("--lang", lang,
-                 "Speak this language: en, es, de, fr, pt-BR or zh-CN (default: the one chosen "
-                 "last in View > Language, else the system's; English with --frames)");
+                 "Speak this language: " + swarmlab::language_codes() +
+                     " (default: the one chosen last in View > Language, else the system's; "
+                     "English with --frames)");
 
   int window_threads = 0;
   app.add_option("--threads", window_threads,

@@ -2,11 +2,12 @@
 """Subsets of Noto Sans CJK SC (Debian's fonts-noto-cjk) holding only the characters Swarm Lab
 shows, made with pyftsubset (Debian's fonttools) at build time (docs/i18n.md):
 
-  NAMES: the characters of the languages' own names (the View > Language menu shows
-         "中文（简体）" in every language), a few kB built into every binary;
-  SUBSET: every character of the Chinese table, plus those, loaded only for Chinese.
+  NAMES: the characters of the languages' own names (languages.json's native_name: the View >
+         Language menu shows "中文（简体）" in every language), a few kB built into every binary;
+  SUBSET: every character of the tables of the languages whose font is Noto Sans CJK SC (in
+         languages.json), plus those, loaded only for such a language.
 
-Usage: cjk_font_subset.py TABLE_DIR LANGUAGE_CPP NAMES.otf SUBSET.otf
+Usage: cjk_font_subset.py TABLE_DIR NAMES.otf SUBSET.otf
 """
 import json
 import pathlib
@@ -34,16 +35,19 @@ def subset(characters, out):
 
 
 def main():
-    tables, language_cpp, names_out, subset_out = sys.argv[1:5]
+    tables, names_out, subset_out = sys.argv[1:4]
     if not pathlib.Path(SOURCE).exists():
         sys.exit(f"cjk_font_subset: {SOURCE} is missing (apt-get install fonts-noto-cjk fonttools, "
                  "or scripts/deps.sh desktop)")
-    names = wide(pathlib.Path(language_cpp).read_text(encoding="utf-8"))
-    table = pathlib.Path(tables) / "zh-CN.json"
+    # The table is checked where it is read (scripts/i18n.py, app/i18n/language_table.cpp).
+    languages = json.loads((pathlib.Path(tables) / "languages.json").read_text(encoding="utf-8"))
+    names = set().union(*(wide(l["native_name"]) for l in languages))
     chinese = set()
-    if table.exists():
-        for value in json.loads(table.read_text(encoding="utf-8")).values():
-            chinese |= wide(value)
+    for language in languages:
+        table = pathlib.Path(tables) / f"{language['code']}.json"
+        if language["font"] == "Noto Sans CJK SC" and table.exists():
+            for value in json.loads(table.read_text(encoding="utf-8")).values():
+                chinese |= wide(value)
     subset(names, names_out)
     subset(names | chinese, subset_out)
     print(f"cjk_font_subset: {len(names)} name characters, {len(names | chinese)} in all",

@@ -10,8 +10,14 @@
                             something visible, no control character but a line break); exit 1
                             with one line per problem
   scripts/i18n.py missing LANG   the keys LANG lacks or has stale, as a JSON object to translate
-  scripts/i18n.py page OUT  write OUT (build/web/page_texts.js): for each table, only the keys
-                            the page itself uses (pageText('...') in web/*.js and web/shell.html)
+  scripts/i18n.py page OUT  write OUT (build/web/page_texts.js): the language table (each
+                            language's code, decimal separator, aliases, whether it is the
+                            pseudo-language), and for each table only the keys the page itself
+                            uses (pageText('...') in web/*.js and web/shell.html)
+
+The languages are the rows of assets/i18n/languages.json, the one table the C++ (built in,
+app/i18n/language_table.cpp) and the page (through `page`) read; `check` and `page` refuse a
+malformed one, naming the row and the field.
 
 The keys are the English texts themselves (as gettext's msgid): tr("Pause") in the C++ and
 "Pause" in the table. A string's English changing leaves its old translations stale: `check`
@@ -72,6 +78,75 @@ def from_sources():
     return found
 
 
+fields = ("code", "native_name", "decimal_separator", "aliases", "pseudo", "font", "same_as_english")
+fonts = ("DejaVu Sans", "Noto Sans CJK SC")  # the UI's font; Chinese glyphs (app/ui/platform/fonts.cpp)
+language_tag = re.compile(r"[A-Za-z]{1,8}(-[A-Za-z0-9]{1,8})*")
+primary_subtag = re.compile(r"[a-z]{2,3}")
+
+
+class BadTable(Exception):
+    pass
+
+
+def read_languages(folder=tables):
+    """The rows of FOLDER/languages.json, checked by the rules of app/i18n/language_table.cpp:
+    BadTable names the row, the field and the rule."""
+    path = folder / "languages.json"
+    try:
+        rows = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as e:
+        raise BadTable(f"{path.name}: not valid JSON ({e})")
+    if not isinstance(rows, list) or not rows:
+        raise BadTable(f"{path.name}: must be a JSON array of languages, one object each, the language of "
+                       "the texts first")
+    aliases = {}
+    for i, row in enumerate(rows):
+        where = f"{path.name}: [{i}]"
+        if not isinstance(row, dict):
+            raise BadTable(f"{where}: must be an object with the fields {', '.join(fields)}")
+        for name in row:
+            if name not in fields:
+                raise BadTable(f"{where}.{name}: not a field of a language ({', '.join(fields)})")
+        for name in fields:
+            if name not in row:
+                raise BadTable(f"{where}.{name}: missing (every language has all seven fields)")
+        code = row["code"]
+        if not isinstance(code, str) or not language_tag.fullmatch(code):
+            raise BadTable(f"{where}.code: must be a BCP 47 language tag such as \"pt-BR\"")
+        if any(r["code"] == code for r in rows[:i]):
+            raise BadTable(f"{where}.code: {code!r} is another row's code already")
+        if not isinstance(row["native_name"], str) or not row["native_name"] or control_character(row["native_name"]):
+            raise BadTable(f"{where}.native_name: must be the language's name as its readers write it")
+        if row["decimal_separator"] not in (".", ","):
+            raise BadTable(f"{where}.decimal_separator: must be \".\" or \",\"")
+        if not isinstance(row["aliases"], list):
+            raise BadTable(f"{where}.aliases: must be an array of primary language subtags such as [\"pt\"]")
+        for k, alias in enumerate(row["aliases"]):
+            if not isinstance(alias, str) or not primary_subtag.fullmatch(alias):
+                raise BadTable(f"{where}.aliases[{k}]: must be a primary language subtag in lower case, 2 or 3 letters")
+            if alias in aliases:
+                raise BadTable(f"{where}.aliases: {alias!r} is an alias of {aliases[alias]} already")
+            aliases[alias] = code
+        if not isinstance(row["pseudo"], bool):
+            raise BadTable(f"{where}.pseudo: must be true or false")
+        if row["pseudo"] and row["aliases"]:
+            raise BadTable(f"{where}.aliases: must be [] for the pseudo-language, which only its code chooses")
+        if row["font"] not in fonts:
+            raise BadTable(f"{where}.font: must be one of {', '.join(fonts)}")
+        if not isinstance(row["same_as_english"], list) or not all(isinstance(t, str) for t in row["same_as_english"]):
+            raise BadTable(f"{where}.same_as_english: must be an array of English texts")
+    pseudo = [i for i, r in enumerate(rows) if r["pseudo"]]
+    if len(pseudo) != 1 or pseudo[0] == 0:
+        raise BadTable(f"{path.name}: pseudo: one language, not the first, must be the pseudo-language")
+    return rows
+
+
+def translations(rows):
+    """The languages with a table of their own: neither the first (its texts are the keys) nor
+    the pseudo-language (it makes its texts)."""
+    return [r for r in rows[1:] if not r["pseudo"]]
+
+
 # pageText('...') and pageText("..."): the page's own texts (web/page_text.js), one literal each.
 page_call = re.compile(r"""\bpageText\s*\(\s*('(?:[^'\\\n]|\\.)*'|"(?:[^"\\\n]|\\.)*")\s*[,)]""")
 page_files = ["web/*.js", "web/shell.html"]
@@ -89,17 +164,20 @@ def from_page():
 
 
 def page_tables(out):
-    """Writes the page's tables: window.swarmlabPageTexts = {code: {english: text}}, each with
-    only the keys the page uses (a few KB, loaded before the wasm)."""
+    """Writes the page's part of assets/i18n (a few KB, loaded before web/page_text.js and the
+    wasm): window.swarmlabLanguages, the rows of languages.json the page needs, and
+    window.swarmlabPageTexts = {code: {english: text}}, each table with only the keys the page uses."""
+    rows = read_languages()
+    languages = [{k: r[k] for k in ("code", "decimal_separator", "aliases", "pseudo")} for r in rows]
     keys = from_page()
     page = {}
-    for path in sorted(tables.glob("*.json")):
-        if path.name == "en.json":
-            continue  # the keys are the English
-        table = json.loads(path.read_text())
-        page[path.stem] = {k: table[k] for k in sorted(keys) if isinstance(table.get(k), str) and table[k]}
-    text = ("// Generated by scripts/i18n.py page from assets/i18n/*.json: the page's own texts "
-            "(web/page_text.js).\nwindow.swarmlabPageTexts = " +
+    for row in translations(rows):
+        table = json.loads((tables / f"{row['code']}.json").read_text())
+        page[row["code"]] = {k: table[k] for k in sorted(keys) if isinstance(table.get(k), str) and table[k]}
+    text = ("// Generated by scripts/i18n.py page from assets/i18n/: the languages (languages.json) and the\n"
+            "// page's own texts in each (web/page_text.js reads both).\n"
+            "window.swarmlabLanguages = " + json.dumps(languages, ensure_ascii=False) + ";\n"
+            "window.swarmlabPageTexts = " +
             json.dumps(page, ensure_ascii=False, indent=0, sort_keys=True) + ";\n")
     out = pathlib.Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
@@ -153,16 +231,6 @@ names = {"Swarm Lab", "CSV", "PNG", "SVG", "JSON", "OK", "FPS", "Euler", "Euler-
          "[log]", "factor"}
 
 
-# Words a language writes as English does (checked by the second reading, docs/i18n.md).
-same_word = {
-    "de": {"Pause", "Simulation", "System", "Expansion", "Start", "Energie"},
-    "fr": {"Simulation", "Pause", "Instruments", "Masses", "axes", "Options", "Message"},
-    "es": {"Error: %s"},
-    "pt-BR": set(),
-    "zh-CN": set(),
-}
-
-
 # A lesson's title is at most this long in every language (app/lessons/lesson.cpp).
 max_title_bytes = 120
 
@@ -190,24 +258,40 @@ def draws_nothing(text):
     return invisible.fullmatch(text) is not None
 
 
-def is_name(text, code=None):
+def is_name(text, same_as_english=()):
+    """Whether a text may read the same as its English: a name, a text without a word of three
+    letters, or one of the words the language writes as English does (languages.json's
+    same_as_english, checked by the second reading, docs/i18n.md)."""
     return (not re.search(r"[A-Za-z]{3,}", text) or text.strip() in names
-            or text.strip() in same_word.get(code, set()))
+            or text.strip() in same_as_english)
 
 
 def check(folder=tables):
-    english = json.loads((folder / "en.json").read_text())
+    try:
+        rows = read_languages(folder)
+    except BadTable as e:
+        print(e)
+        return 1
+    source = rows[0]["code"]
+    english = json.loads((folder / f"{source}.json").read_text())
     problems = []
     current = from_sources() | from_assets() | from_page()
     if set(english) != current or any(english[k] != k for k in english):
-        problems.append(f"en.json is out of date ({len(current - set(english))} texts new, "
+        problems.append(f"{source}.json is out of date ({len(current - set(english))} texts new, "
                         f"{len(set(english) - current)} gone): run scripts/i18n.py extract")
+    files = {p.stem for p in folder.glob("*.json")} - {"languages"}
+    listed = {r["code"] for r in rows if not r["pseudo"]}
+    for code in sorted(listed - files):
+        problems.append(f"{code}: in languages.json, but {code}.json is missing")
+    for code in sorted(files - listed):
+        problems.append(f"{code}.json: not a language of languages.json (add its row)")
     titles = lesson_titles()
-    for path in sorted(folder.glob("*.json")):
-        if path.name == "en.json":
+    for row in translations(rows):
+        code = row["code"]
+        path = folder / f"{code}.json"
+        if not path.exists():
             continue
         table = json.loads(path.read_text())
-        code = path.stem
         for key in english:
             if key not in table:
                 problems.append(f"{code}: missing: {key[:70]!r}")
@@ -227,14 +311,14 @@ def check(folder=tables):
             elif placeholders(value) != placeholders(key):
                 problems.append(f"{code}: placeholders differ ({placeholders(key)} in English, "
                                 f"{placeholders(value)} here): {key[:60]!r}")
-            elif value == key and not is_name(key, code):
+            elif value == key and not is_name(key, row["same_as_english"]):
                 problems.append(f"{code}: left in English: {key[:70]!r}")
         for key in table:
             if key not in english:
                 problems.append(f"{code}: not in en.json (stale): {key[:70]!r}")
     for p in problems:
         print(p)
-    print(f"i18n check: {len(english)} keys, {len(list(folder.glob('*.json'))) - 1} languages, "
+    print(f"i18n check: {len(english)} keys, {len(translations(rows))} translations, "
           f"{len(problems)} problems", file=sys.stderr)
     return 1 if problems else 0
 
@@ -243,18 +327,22 @@ def main():
     command = sys.argv[1] if len(sys.argv) > 1 else "check"
     if command == "extract":
         texts = sorted(from_sources() | from_assets() | from_page())
-        tables.mkdir(parents=True, exist_ok=True)
-        (tables / "en.json").write_text(
+        source = read_languages()[0]["code"]
+        (tables / f"{source}.json").write_text(
             json.dumps({t: t for t in texts}, ensure_ascii=False, indent=1) + "\n")
-        print(f"assets/i18n/en.json: {len(texts)} texts", file=sys.stderr)
+        print(f"assets/i18n/{source}.json: {len(texts)} texts", file=sys.stderr)
         return 0
     if command == "check":
         return check(pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else tables)
     if command == "page" and len(sys.argv) > 2:
-        page_tables(sys.argv[2])
+        try:
+            page_tables(sys.argv[2])
+        except BadTable as e:
+            print(f"scripts/i18n.py page: assets/i18n/{e}", file=sys.stderr)
+            return 1
         return 0
     if command == "missing":
-        english = json.loads((tables / "en.json").read_text())
+        english = json.loads((tables / f"{read_languages()[0]['code']}.json").read_text())
         path = tables / f"{sys.argv[2]}.json"
         table = json.loads(path.read_text()) if path.exists() else {}
         todo = {k: k for k in english if k not in table}

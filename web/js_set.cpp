@@ -20,7 +20,7 @@ using swarmlab::AppState;
 
 struct Key {
   const char* name;
-  const char* rule;                  ///< what a good value is, for the error message
+  std::string rule;                  ///< what a good value is, for the error message
   bool (*valid)(const AppState&, const json&);
   void (*apply)(AppState&, const json&);
 };
@@ -65,7 +65,7 @@ const Key kKeys[] = {
     // The projector and the classroom (app/ui/classroom/presentation.h). Presentation comes after the
     // theme, so {presentation: true, theme: "dark"} is presentation mode, light.
     // Applied between frames (a new font atlas); state().language follows on the next frame.
-    {"language", "must be a language code: \"en\", \"es\", \"de\", \"fr\", \"pt-BR\" or \"zh-CN\"",
+    {"language", "must be a language code: " + swarmlab::language_codes("\""),
      [](const AppState&, const json& v) {
        return v.is_string() && swarmlab::find_language(v.get<std::string>()) != nullptr;
      },

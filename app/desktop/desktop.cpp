@@ -72,8 +72,8 @@ int run_desktop(const DesktopOptions& options) {
         return 1;
       }
   if (!options.language.empty() && !find_language(options.language)) {
-    std::fprintf(stderr, "error: --lang: \"%s\" is not a language Swarm Lab speaks (en, es, de, "
-                 "fr, pt-BR, zh-CN)\n", options.language.c_str());
+    std::fprintf(stderr, "error: --lang: \"%s\" is not a language Swarm Lab speaks (%s)\n",
+                 options.language.c_str(), language_codes().c_str());
     return 2;
   }
   std::string error;

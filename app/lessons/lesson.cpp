@@ -391,12 +391,12 @@ std::vector<LessonText> lesson_texts(const Lesson& l) {
 void read_translations(const Fields& f, Lesson& l) {
   const json& all = f.at("translations");
   require(all.is_object(), "translations",
-          "must be an object of language codes (es, de, fr, pt-BR, zh-CN) to tables");
+          "must be an object of language codes (" + language_codes("", true) + ") to tables");
   const std::vector<LessonText> texts = lesson_texts(l);
   for (const auto& [code, table] : all.items()) {
     const std::string path = "translations." + swarm::printable(code);
-    require(find_language(code) && code != "en" && code != pseudo_language().code, path,
-            "not a language the app speaks (es, de, fr, pt-BR, zh-CN)");
+    require(find_language(code) && code != source_language().code && code != pseudo_language().code, path,
+            "not a language the app speaks (" + language_codes("", true) + ")");
     require(table.is_object(), path, "must be an object of this lesson's English texts to their translations");
     for (const auto& [english, shown] : table.items()) {
       const std::string key = path + ".\"" + swarm::printable(english.substr(0, 40)) + "\"";

@@ -2,6 +2,7 @@
 # scripts/i18n.py check on tables a hostile translator wrote: each translation is held to the
 # rules of its English field (a lesson title's length, something visible, no control character),
 # one line per problem naming the language, the rule and the text, and exit 1.
+# The language table (languages.json) is held to its rules and to the folder's tables too.
 # Usage: i18n_test.sh (from anywhere; uses the repository's scripts/i18n.py and assets/i18n/)
 set -u
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -43,5 +44,26 @@ expect "fr: shows nothing (only spaces or invisible characters such as U+200B): 
 expect "pt-BR: control character U+007F (only line breaks are allowed): 'Pause'"
 expect "zh-CN: control character U+0085 (only line breaks are allowed): 'Pause'"
 [ "$(wc -l <"$work/out")" -eq 5 ] || bad "five problems, one line each: $(cat "$work/out")"
+
+# The language table and the folder agree (docs/i18n.md, "Adding a language"): a table without
+# its row, and a row with a malformed field, each named.
+cp "$root"/assets/i18n/*.json "$work/"
+cp "$work/es.json" "$work/it.json"
+python3 "$root/scripts/i18n.py" check "$work" >"$work/out" 2>/dev/null
+code=$?
+[ $code -eq 1 ] || bad "a table without its language: exit $code, expected 1"
+expect "it.json: not a language of languages.json (add its row)"
+rm "$work/it.json"
+python3 - "$work" <<'PY'
+import json, pathlib, sys
+path = pathlib.Path(sys.argv[1]) / "languages.json"
+rows = json.loads(path.read_text())
+rows[2]["decimal_separator"] = ";"
+path.write_text(json.dumps(rows, ensure_ascii=False))
+PY
+python3 "$root/scripts/i18n.py" check "$work" >"$work/out" 2>/dev/null
+code=$?
+[ $code -eq 1 ] || bad "a malformed languages.json: exit $code, expected 1"
+expect 'languages.json: [2].decimal_separator: must be "." or ","'
 [ $failed -eq 0 ] && echo "i18n check: hostile tables refused" 
 exit $((failed > 0))

@@ -10,7 +10,7 @@ namespace swarmlab {
 /// The language to start in: on the desktop the one chosen last (View > Language), else the
 /// system locale's (LC_ALL, LC_MESSAGES, LANG); in the browser the one the page chose before
 /// the app started (the address's #lang=, else the one chosen last, else the browser's
-/// languages: web/page_text.js). A code of app/i18n/language.h; "en" when nothing fits.
+/// languages: web/page_text.js). A code of app/i18n/language.h; English's when nothing fits.
 std::string startup_language();
 
 /// Keeps `code` for the next visit; a failure (read-only home, storage refused) only means the

@@ -34,7 +34,7 @@ std::string startup_language() {
   // The order POSIX gives them: the first one set decides.
   for (const char* name : {"LC_ALL", "LC_MESSAGES", "LANG"})
     if (const char* value = std::getenv(name); value && *value) return language_for_locale(value);
-  return "en";
+  return source_language().code;
 }
 
 }  // namespace swarmlab
