@@ -28,7 +28,7 @@ struct Situation {
   std::string lesson_place;
   std::size_t lesson_turn = 0;
   /// A notice said once, first, when it appears or changes, and not repeated with the rest
-  /// (lesson progress not kept as usual: app/ui/lesson_player/progress_record.h); "" when none.
+  /// (lesson progress not kept as usual: app/ui/state/progress_record.h); "" when none.
   std::string notice;
 };
 
