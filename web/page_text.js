@@ -1,40 +1,47 @@
 // The page's own texts (web/shell.html's loading, errors and message line, and what the page's
 // scripts show) in the reader's language, from the same tables as the app (assets/i18n/*.json,
-// keyed by the English text; docs/i18n.md). Loaded first by shell.html; build/web/page_texts.js,
-// generated at build time with only the keys the page uses, fills window.swarmlabPageTexts.
+// keyed by the English text; docs/i18n.md). build/web/page_texts.js, generated at build time by
+// scripts/i18n.py page and loaded just before this, holds the languages (window.swarmlabLanguages:
+// the rows of assets/i18n/languages.json) and only the keys the page uses
+// (window.swarmlabPageTexts).
 //
 //   pageText(english)                         the text in the page's language, else the English
 //   pageText(english, value, ...)             each %s, %d or %.1f in it filled by the next value
-//   window.swarmlabLanguage                   the language chosen: 'en', 'es', 'de', 'fr',
-//                                             'pt-BR', 'zh-CN' (or 'x-pseudo' for layout tests)
+//   window.swarmlabLanguage                   the code of the language chosen (a row of
+//                                             languages.json, the pseudo-language's for layout tests)
 //
 // The language: #lang=CODE in the address, else localStorage 'swarmlab.language', else the
-// first of navigator.languages that fits, by swarmlab::language_for_locale's rule
-// (app/i18n/language.cpp: es-MX -> es, pt and pt-PT -> pt-BR, zh* -> zh-CN), else English.
+// first of navigator.languages that fits, by swarmlab::language_for_locale's rule (a locale's
+// primary subtag among a language's aliases), else the first language (the texts' own).
 // scripts/i18n.py extract collects the keys: every pageText call whose first argument is one
 // string literal (in single or double quotes) in web/*.js and web/shell.html.
 (function () {
   'use strict';
-  var listed = ['en', 'es', 'de', 'fr', 'pt-BR', 'zh-CN'];
-  var pseudo = 'x-pseudo';
+  var rows = window.swarmlabLanguages || [];
+  var source = rows.length ? rows[0] : null;
+  var pseudo = null;
+  for (var r = 0; r < rows.length; ++r) if (rows[r].pseudo) pseudo = rows[r];
 
-  /// The listed language that best fits a locale or language tag, or null when none does.
-  function fits(locale) {
-    var tag = String(locale || '').split(/[.@]/)[0].toLowerCase().replace(/_/g, '-');
-    var primary = tag.split('-')[0];
-    if (primary === 'pt') return 'pt-BR';
-    if (primary === 'zh') return 'zh-CN';
-    for (var i = 0; i < listed.length; ++i)
-      if (listed[i].toLowerCase() === primary) return listed[i];
+  function row(code) {
+    for (var i = 0; i < rows.length; ++i) if (rows[i].code === code) return rows[i];
     return null;
   }
 
-  /// A code as given (#lang=, the stored choice): exact, or by the locale rule; null if none.
+  /// The listed language whose aliases hold a locale's primary subtag, or null when none does.
+  function fits(locale) {
+    var primary = String(locale || '').split(/[.@]/)[0].toLowerCase().replace(/_/g, '-').split('-')[0];
+    for (var i = 0; i < rows.length; ++i)
+      if (!rows[i].pseudo && rows[i].aliases.indexOf(primary) >= 0) return rows[i].code;
+    return null;
+  }
+
+  /// A code as given (#lang=, the stored choice): exact (the pseudo-language's too, regardless
+  /// of case for a listed one), or by the locale rule; null if none.
   function known(code) {
     if (!code) return null;
-    if (code === pseudo) return pseudo;
-    for (var i = 0; i < listed.length; ++i)
-      if (listed[i].toLowerCase() === String(code).toLowerCase()) return listed[i];
+    if (pseudo && code === pseudo.code) return code;
+    for (var i = 0; i < rows.length; ++i)
+      if (!rows[i].pseudo && rows[i].code.toLowerCase() === String(code).toLowerCase()) return rows[i].code;
     return fits(code);
   }
 
@@ -61,11 +68,20 @@
     return null;
   }
 
-  var language = fromAddress() || fromStorage() || fromBrowser() || 'en';
+  // Without the table (page_texts.js not loaded) the page speaks the English it is written in.
+  var language = fromAddress() || fromStorage() || fromBrowser() || (source ? source.code : '');
+  var speaking = row(language);
+  var isPseudo = !!(speaking && speaking.pseudo);
   window.swarmlabLanguage = language;
-  if (document.documentElement) document.documentElement.lang = language === pseudo ? 'en' : language;
+  /// The document's language for a code: the pseudo-language's texts are the source's, dressed up.
+  window.swarmlabDocumentLanguage = function (code) {
+    var r = row(code);
+    return r && r.pseudo && source ? source.code : code;
+  };
+  if (document.documentElement && language) document.documentElement.lang = window.swarmlabDocumentLanguage(language);
 
-  // The pseudo-language, as swarmlab::pseudo_text: letters accented, about 1.6x as long.
+  // The pseudo-language, as swarmlab::pseudo_text (app/i18n/translator.cpp): letters accented,
+  // about 1.6x as long, printf conversions kept.
   var accents = { a: 'à', e: 'é', i: 'î', o: 'õ', u: 'ü', c: 'ç', n: 'ñ', y: 'ý',
                   A: 'Å', E: 'É', I: 'Î', O: 'Ö', U: 'Û', C: 'Ç', N: 'Ñ' };
   var conversion = /%[-+ #0-9.*hlLzjt]*[a-zA-Z%]/g;
@@ -102,9 +118,9 @@
   /// the values after it put in its conversions.
   window.pageText = function (english) {
     var shown = english;
-    if (language === pseudo) {
+    if (isPseudo) {
       shown = pseudoText(english);
-    } else if (language !== 'en') {
+    } else if (speaking && speaking !== source) {
       if (!table) table = (window.swarmlabPageTexts || {})[language] || null;
       if (table && typeof table[english] === 'string' && table[english]) shown = table[english];
     }
@@ -117,7 +133,7 @@
   };
   /// A number as the page's language writes it: 7.5, or 7,5 where a comma separates decimals.
   window.pageNumber = function (text) {
-    var comma = language === pseudo || /^(es|de|fr|pt-BR)$/.test(language);
+    var comma = speaking && speaking.decimal_separator === ',';
     return comma ? String(text).replace(/(\d)\.(\d)/g, '$1,$2') : String(text);
   };
 })();

@@ -14,7 +14,7 @@ namespace {
 EM_JS(void, store_language, (const char* code), {
   var text = UTF8ToString(code);
   window.swarmlabLanguage = text;  // the page's own texts and shared links follow
-  if (text !== "x-pseudo") document.documentElement.lang = text;
+  document.documentElement.lang = window.swarmlabDocumentLanguage(text);
   try { window.localStorage.setItem("swarmlab.language", text); } catch (e) {}
 });
 
@@ -39,7 +39,7 @@ void remember_language(const std::string& code) { store_language(code.c_str()); 
 
 std::string startup_language() {
   const std::string code = taken(page_language());
-  return find_language(code) ? code : "en";
+  return find_language(code) ? code : source_language().code;
 }
 
 }  // namespace swarmlab
