@@ -145,6 +145,19 @@ export async function openApp(url, label, init = null) {
   return { page, started: started && !error, error };
 }
 
+/** Waits until fn(swarmlab.state(), arg) holds in the page (a lasting state: a window closed,
+ *  a menu open, the layout settled), or gives up after 20 s; returns the state it saw last, for
+ *  the check after it to judge and report. fn runs in the page: what it needs from here comes in
+ *  arg. */
+export async function until(page, fn, arg = null) {
+  try {
+    // A function made here: the page's CSP refuses the eval a predicate given as text needs.
+    await page.waitForFunction(new Function('arg', `return (${fn})(window.swarmlab.state(), arg);`), arg,
+                               { timeout: 20_000, polling: 'raf' });
+  } catch { /* the check after it reports what was seen */ }
+  return page.evaluate(() => window.swarmlab.state());
+}
+
 /** Runs in the page before its scripts (pass it to openApp as `(${recordLiveRegion})();`):
  *  every text the live region (#announcer) takes, in window.liveRegionSaid. */
 export function recordLiveRegion() {
@@ -293,7 +306,7 @@ export function cliMessage(json) {
 /** Opens the browser at viewport (CSS pixels) with touch when asked; serviceWorkers: 'block'
  *  keeps the offline worker out (a route of the page's own then sees every fetch). */
 export async function launchBrowser({ width = 1280, height = 720, hasTouch = false, isMobile = false,
-                                      serviceWorkers = 'allow' } = {}) {
+                                      serviceWorkers = 'allow', locale = undefined } = {}) {
   mkdirSync(outDir, { recursive: true });
   profile = mkdtempSync(join(tmpdir(), 'swarmlab-chromium-'));
   context = await chromium.launchPersistentContext(profile, {
@@ -301,6 +314,7 @@ export async function launchBrowser({ width = 1280, height = 720, hasTouch = fal
     headless: true,
     viewport: { width, height },
     hasTouch, isMobile, serviceWorkers,
+    ...(locale ? { locale } : {}),  // the browser's language (navigator.languages), as a reader set it
     acceptDownloads: true,
     timeout: 30_000,
     args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',

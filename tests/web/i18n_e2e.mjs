@@ -6,7 +6,7 @@
 // carries the language, and beats a remembered choice; windows opened in one language (the
 // Lesson progress notice, the panels) are named in the next. Then, per language, a lesson step at a
 // laptop size and on a phone, and the welcome on a phone, saved to build/web-test/i18n/ to be
-// looked at.
+// looked at. Last, a browser set to a locale that only an alias of languages.json names.
 // window.swarmlab is only read.
 import { readFileSync, mkdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -16,11 +16,13 @@ import { person } from './person.mjs';
 const { root, outDir, check, openApp, launchBrowser, closeBrowser, runSuite, pageErrors, shipped, base64url } = harness;
 
 const table = (code) => JSON.parse(readFileSync(join(root, 'assets/i18n', `${code}.json`), 'utf8'));
-const LANGUAGES = ['en', 'es', 'de', 'fr', 'pt-BR', 'zh-CN'];
-const NATIVE = { en: 'English', es: 'Español', de: 'Deutsch', fr: 'Français', 'pt-BR': 'Português (Brasil)',
-                 'zh-CN': '中文（简体）' };
+// The languages of the View > Language menu (assets/i18n/languages.json), the texts' own first.
+const ROWS = table('languages');
+const LANGUAGES = ROWS.filter((l) => !l.pseudo).map((l) => l.code);
+const SOURCE = LANGUAGES[0];
+const NATIVE = Object.fromEntries(ROWS.map((l) => [l.code, l.native_name]));
 // The text a language shows for an English one (the table's, else the English).
-const words = (code, english) => (code === 'en' ? english : table(code)[english] || english);
+const words = (code, english) => (code === SOURCE ? english : table(code)[english] || english);
 const firstLesson = JSON.parse(readFileSync(join(root, 'assets/lessons/01-one-period.json'), 'utf8'));
 
 const language = (page) => page.evaluate(() => window.swarmlab.state().language);
@@ -170,6 +172,29 @@ async function main(url) {
     }
     await page.close();
   }
+  await closeBrowser();
+
+  // 9. A browser set to a language by its locale, by the table's aliases (web/page_text.js reads
+  //    them from page_texts.js): each language whose code is not its alias (Portugal's
+  //    Portuguese gets Brazil's) starts in it, and the pseudo-language's page is marked as the
+  //    texts' own language for screen readers.
+  const byAlias = ROWS.filter((l) => !l.pseudo && l.aliases.length && l.aliases[0] !== l.code.toLowerCase());
+  for (const l of byAlias) {
+    const locale = `${l.aliases[0]}-PT`;  // any region: only the primary subtag counts
+    await launchBrowser({ width: 1280, height: 720, locale });
+    ({ page, started, error } = await openApp(url, `i18n-locale-${l.code}`));
+    check(`a browser set to ${locale} starts in ${l.code} (its aliases: ${l.aliases.join(', ')})`,
+          started && await until(page, l.code), error || await language(page));
+    await page.close();
+    await closeBrowser();
+  }
+  await launchBrowser({ width: 1280, height: 720 });
+  const pseudo = ROWS.find((r) => r.pseudo).code;
+  ({ page, started, error } = await openApp(`${url}#lang=${pseudo}`, 'i18n-pseudo'));
+  check(`#lang=${pseudo}: the app speaks it, and the page is marked ${SOURCE}`,
+        started && await until(page, pseudo) && await page.evaluate(() => document.documentElement.lang) === SOURCE,
+        error || await page.evaluate(() => document.documentElement.lang));
+  await page.close();
   await closeBrowser();
   console.log('      screenshots -> build/web-test/i18n/');
   check('no page errors', pageErrors.length === 0, pageErrors.join(' | '));

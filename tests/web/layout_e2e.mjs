@@ -14,7 +14,7 @@ import { person } from './person.mjs';
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 
-const { check, openApp, launchBrowser, runSuite, outDir, pageErrors, consoleErrors } = harness;
+const { check, openApp, launchBrowser, runSuite, outDir, pageErrors, consoleErrors, until } = harness;
 
 const shotDir = join(outDir, 'layout');
 // LAYOUT_LANG=de (fr, zh-CN...) looks at a real language instead, in the dark theme (the View
@@ -22,28 +22,12 @@ const shotDir = join(outDir, 'layout');
 const LANG = process.env.LAYOUT_LANG || 'x-pseudo';
 const SIZES = process.env.LAYOUT_SIZES ? JSON.parse(process.env.LAYOUT_SIZES) : [[390, 844], [844, 390], [1024, 768], [1366, 768], [1280, 720], [1920, 1080]];
 
-// The pseudo-language's text for an English one, by the rule of app/i18n/translator.cpp
-// (pseudo_text), as the parallel DOM names it (trimmed).
-const ACCENTED = { a: 'à', e: 'é', i: 'î', o: 'õ', u: 'ü', c: 'ç', n: 'ñ', y: 'ý',
-                   A: 'Å', E: 'É', I: 'Î', O: 'Ö', U: 'Û', C: 'Ç', N: 'Ñ' };
-export function pseudo(english) {
-  let out = '[';
-  for (const ch of english) out += ACCENTED[ch] || ch;
-  const extra = Math.max(3, Math.ceil(0.6 * [...english].length));
-  const filler = ['ë', 'ï', 'ô', 'â', 'û', ' '];
-  for (let k = 0; k < extra; ++k) out += filler[k % 6];
-  return (out + ']').trim();
-}
-
 const appState = (page) => page.evaluate(() => window.swarmlab.state());
-async function until(page, fn, arg = null) {
-  try {
-    // A function made here: the page's CSP refuses the eval a predicate given as text needs.
-    await page.waitForFunction(new Function('arg', `return (${fn})(window.swarmlab.state(), arg);`), arg,
-                               { timeout: 20_000, polling: 'raf' });
-  } catch { /* the check after it reports what was seen */ }
-  return appState(page);
-}
+// The text the page shows for an English one in its language (web/page_text.js's pageText,
+// which in the pseudo-language is swarmlab::pseudo_text's), as the parallel DOM names it
+// (trimmed): the app's menus must carry the same names for the finds below to succeed.
+const shown = (page, english) => page.evaluate((e) => window.pageText(e).trim(), english);
+
 // The app has laid the canvas out at W x H, the layout holds, and the page's mirror has
 // followed two frames drawn since, or the loop sleeps (the items' rectangles are the settled ones).
 async function settled(page, W, H) {
@@ -168,17 +152,18 @@ async function main(url) {
     return;
   }
   const who = person(page, 'mouse');
+  const view = await shown(page, 'View'), lightTheme = await shown(page, 'Light theme');
   await page.waitForFunction((n) => !!document.querySelector(`#parallel-dom [aria-label="${n}"]`) ||
                              [...document.querySelectorAll('#parallel-dom button')].some((e) => e.textContent === n),
-                             pseudo('View'), { timeout: 20_000 }).catch(() => {});
-  check('the menus are in the pseudo-language', await who.find('menuitem', pseudo('View')).count() === 1, pseudo('View'));
+                             view, { timeout: 20_000 }).catch(() => {});
+  check('the menus are in the pseudo-language', view !== 'View' && await who.find('menuitem', view).count() === 1, view);
 
   for (const theme of ['dark', 'light']) {
     if (theme === 'light') {
       await page.setViewportSize({ width: 1280, height: 720 });
       await settled(page, 1280, 720);
-      await who.press('menuitem', pseudo('View'));
-      await who.press('menuitem', pseudo('Light theme'));
+      await who.press('menuitem', view);
+      await who.press('menuitem', lightTheme);
       const s = await until(page, (st) => st.theme === 'light');
       if (!check('View > Light theme sets the light theme', s.theme === 'light', s.theme)) return;
     }

@@ -14,7 +14,7 @@ import * as harness from './harness.mjs';
 
 import { join } from 'node:path';
 
-const { check, openApp, launchBrowser, runSuite, keepsDrawing, outDir, pageErrors, consoleErrors } = harness;
+const { check, openApp, launchBrowser, runSuite, keepsDrawing, outDir, pageErrors, consoleErrors, until } = harness;
 
 const api = (page, fn, arg) => page.evaluate(fn, arg);
 const appState = (page) => api(page, () => window.swarmlab.state());
@@ -44,17 +44,6 @@ function handClock(stepMs = 16) {
   return () => (t += stepMs / 1000);
 }
 
-// Waits until fn(state(), arg) holds in the page (a lasting state: a window closed, a menu
-// open, the run at a time), or gives up after 20 s; returns the state it saw last. fn runs in
-// the page: what it needs from here comes in arg.
-async function until(page, fn, arg = null) {
-  try {
-    // A function made here: the page's CSP refuses the eval a predicate given as text needs.
-    await page.waitForFunction(new Function('arg', `return (${fn})(window.swarmlab.state(), arg);`), arg,
-                               { timeout: 20_000, polling: 'raf' });
-  } catch { /* the check after it reports what was seen */ }
-  return appState(page);
-}
 // Until the app has laid the canvas out at W x H and the layout holds (the heights it measured
 // are the ones it used).
 const settledAt = (page, W, H) => until(page, (st, a) => st.display.width === a.W && st.display.height === a.H && st.layout_settled, { W, H });
