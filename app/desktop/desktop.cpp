@@ -83,10 +83,6 @@ int run_desktop(const DesktopOptions& options) {
     std::fprintf(stderr, "error: %s\n", error.c_str());
     return 1;
   }
-  if (options.threads > 0) {
-    f.app->state().engine_threads = options.threads;
-    f.app->state().restart();
-  }
   // A lesson file (swarmlab LESSON.json) opens as a lesson over the default preset.
   std::string lesson_text, lesson_read_error;
   if (!options.preset_path.empty()) {
@@ -118,6 +114,10 @@ int run_desktop(const DesktopOptions& options) {
     f.app.reset();
     close_window(f.window);
     return 1;
+  }
+  if (options.threads > 0) {
+    f.app->state().engine_threads = options.threads;
+    f.app->state().restart();
   }
   if (options.select > 0) {
     // Selected as by a click, with its x(t) plot open (the instruments' screenshot).
