@@ -72,6 +72,7 @@ void PeriodMeter::cross(double t, int direction) {
   if (const std::optional<double>& previous = last_crossing_[direction]) {
     period_sum_ += t - *previous;
     ++count_;
+    ++pairs_[direction];
     status_ = PeriodStatus::measured;
   }
   last_crossing_[direction] = t;

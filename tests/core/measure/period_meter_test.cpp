@@ -54,6 +54,28 @@ TEST_CASE("the period meter finds 2 pi / sqrt(J M) from the analytic orbits, for
   }
 }
 
+TEST_CASE("the period meter counts the periods that passed, not its crossings") {
+  // x = cos(omega t + phase) sampled 20 times a period for a duration of D periods: the
+  // crossings in one direction are a period apart, so the whole periods between the first
+  // and the last of them are floor(D) or floor(D) - 1 (the first crossing comes within one
+  // period of the start), whatever the phase; never the about 2 D that counting every pair
+  // of either direction gives (21 at t = 51 for a period of 4.44, issue 39).
+  const double omega = 1.415, period = 2 * M_PI / omega;
+  for (double periods : {1.3, 3.0, 11.5, 40.25})
+    for (double phase : {0.0, 0.7, 1.9, 3.3, 5.1}) {
+      PeriodMeter meter(omega * omega);
+      const double h = period / 20;
+      for (double t = 0; t <= periods * period; t += h)
+        meter.add(t, Vec3(std::cos(omega * t + phase), 0, 0), Vec3(-omega * std::sin(omega * t + phase), 0, 0));
+      CAPTURE(periods);
+      CAPTURE(phase);
+      const int whole = int(std::floor(periods));
+      CHECK(meter.periods_measured() <= whole);
+      CHECK(meter.periods_measured() >= whole - 1);
+      if (whole >= 2) CHECK(*meter.period() == Approx(period).epsilon(1e-4));
+    }
+}
+
 TEST_CASE("the period meter is accurate with few samples per period (Hermite interpolation)") {
   // One oscillator x = cos(omega t) + 0.3 sin(omega t) sampled n times per period, with a
   // phase offset so that no sample falls on a crossing. The error bound in period_meter.h is

@@ -44,8 +44,10 @@ class PeriodMeter {
   PeriodStatus status() const { return status_; }
   /// The mean of every period measured so far (time), once status() is measured.
   std::optional<double> period() const;
-  /// The periods measured so far: crossings in the same direction, each pair counted once.
-  int periods_measured() const { return count_; }
+  /// The whole periods timed so far: the pairs of successive crossings in one direction (the
+  /// direction with more). The mean also takes the other direction's pairs, which overlap
+  /// these by half a period, so it is not this count that divides period_sum_.
+  int periods_measured() const { return pairs_[0] > pairs_[1] ? pairs_[0] : pairs_[1]; }
   /// The formula's period 2 pi / sqrt(J M), none when J M <= 0.
   std::optional<double> formula_period() const;
   /// (measured - formula) / formula, when both exist.
@@ -67,7 +69,8 @@ class PeriodMeter {
   // periods measured: the mean is their sum over their count.
   std::optional<double> last_crossing_[2];
   double period_sum_ = 0;
-  int count_ = 0;
+  int count_ = 0;          // pairs in both directions, behind the mean
+  int pairs_[2] = {0, 0};  // pairs in each direction
   int gaps_ = 0;
 };
 
