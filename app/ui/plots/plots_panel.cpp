@@ -32,47 +32,6 @@ std::uint32_t colour_of(swarm::Method m, const AppState& state) {
       .packed();
 }
 
-/// The sample series of the primary run, with P and T averaged over a trailing time window.
-/// Rebuilt only when a sample arrives or the window changes.
-struct SampleSeries {
-  long run = 0;  // LiveRun::id()
-  std::size_t count = 0;
-  double window = -1;
-  std::vector<double> t, P, T, P_mean, T_mean;  // from the second sample on
-  std::vector<double> t_all, KE, PE, E, drift;  // every sample
-
-  void update(LiveRun& live, double average_window) {
-    const auto& samples = live.primary().samples();
-    if (run == live.id() && count == samples.size() && window == average_window) return;
-    run = live.id();
-    count = samples.size();
-    window = average_window;
-    for (auto* v : {&t, &P, &T, &P_mean, &T_mean, &t_all, &KE, &PE, &E, &drift}) v->clear();
-    // P and T over a trailing window, by the core's one definition of a wall average.
-    const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(samples);
-    const std::vector<swarm::WallReading> means =
-        swarm::windowed_wall_averages(intervals, average_window, 0);
-    for (std::size_t i = 0; i < intervals.size(); ++i) {
-      const swarm::WallReading& w = intervals[i].reading;
-      t.push_back(intervals[i].t_end);
-      P.push_back(w.P);
-      // Without a hit there is no temperature: a gap in the curve, not T = 0.
-      T.push_back(w.hits > 0 ? w.T : std::nan(""));
-      P_mean.push_back(means[i].P);
-      T_mean.push_back(means[i].hits > 0 ? means[i].T : std::nan(""));
-    }
-    for (const swarm::Sample& s : samples) {
-      t_all.push_back(s.t);
-      KE.push_back(s.KE);
-      PE.push_back(s.PE);
-      E.push_back(s.E);
-      drift.push_back(swarm::relative_energy_change(samples.front(), s.E));
-    }
-  }
-};
-
-SampleSeries series;
-
 std::optional<double> window_start(const AppState& state, double now) {
   if (state.plots.scroll_window <= 0) return std::nullopt;
   return std::max(0.0, now - state.plots.scroll_window);
@@ -98,6 +57,7 @@ void draw_wall_tab(AppState& state, float plot_height) {
   state.plots.scroll_window = std::max(0.0, state.plots.scroll_window);
   help_marker(tr("Scroll: show only this much of the most recent time (0: the whole run)."));
 
+  SampleSeries& series = state.sample_series;
   series.update(*state.run, state.plots.average_window);
   const std::string empty = tr("waiting for the first samples");
   PlotSpec p;
@@ -125,6 +85,7 @@ void draw_wall_tab(AppState& state, float plot_height) {
 }
 
 void draw_energy_tab(AppState& state, float plot_height) {
+  SampleSeries& series = state.sample_series;
   series.update(*state.run, state.plots.average_window);
   // Timing the energy plot's swings gives half the period, a trap worth naming.
   if (swarm::regime_of(swarm::stiffness(state.run->system())) == swarm::Regime::attractive)

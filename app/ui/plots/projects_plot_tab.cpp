@@ -1,12 +1,11 @@
 // The plots of the Appendix B projects that fit the running preset: the centre of mass's
 // height and the swarm's size, the energy books, the P-V loop of a moving wall, and the
 // speeds against the Maxwellian. The numbers come from the run's samples and the core's speed
-// histogram (project_plots.h, report/pv_loop.h); this file only draws them.
+// histogram (state/project_plots.h, report/pv_loop.h), kept between frames in
+// AppState::project_cache (state/plot_series.h); this file only draws them.
 
 #include <imgui.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 
 #include "i18n/translator.h"
@@ -14,42 +13,10 @@
 #include "ui/kit/theme_style.h"
 #include "ui/panels/panels.h"
 #include "ui/plots/plot_widget.h"
-#include "ui/plots/project_plots.h"
+#include "ui/state/project_plots.h"
 
 namespace swarmlab {
 namespace {
-
-/// The series, rebuilt only when a sample arrives or the run restarts.
-struct ProjectCache {
-  long run = 0;  // LiveRun::id()
-  std::size_t count = 0;
-  ProjectSeries series;
-  report::PvLoop loop;
-  swarm::SpeedCheck speeds;
-  HistogramSeries histogram;
-
-  void update(AppState& state, const ProjectPlots& plots) {
-    const auto& samples = state.run->primary().samples();
-    if (run == state.run->id() && count == samples.size()) return;
-    run = state.run->id();
-    count = samples.size();
-    series = project_series(samples);
-    // Each sample's P is over a few hits: the loop is drawn with the running wall average
-    // over 3 % of the run, as in the CLI's pv-loop figure.
-    if (plots.pv_loop)
-      loop = report::pv_loop(samples, 0.015 * state.preset.duration,
-                             state.preset.sphere_radius.value_or(0.0));
-    if (plots.speeds) {
-      // About sqrt(n) bins: enough particles in each to see the shape.
-      const std::size_t n = state.run->system().particles.size();
-      const int bins = std::clamp(int(std::lround(std::sqrt(double(n)))), 5, 40);
-      speeds = swarm::check_speeds(state.run->system(), bins);
-      histogram = histogram_series(speeds.histogram);
-    }
-  }
-};
-
-ProjectCache cache;
 
 ImU32 line(const Colour& c) { return c.packed(); }
 
@@ -69,7 +36,8 @@ void draw_projects_tab(AppState& state, float plot_height) {
         "'Walls and spheres', or open a project preset under Scenario."));
     return;
   }
-  cache.update(state, plots);
+  ProjectCache& cache = state.project_cache;
+  cache.update(*state.run, state.preset, plots);
   const Palette& c = palette(state.presentation.theme);
   const ProjectSeries& s = cache.series;
   const PlotAxis time{tr("t (time)"), false, std::nullopt, std::nullopt};

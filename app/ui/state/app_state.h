@@ -16,6 +16,7 @@
 #include "ui/state/lesson_session.h"
 #include "ui/state/live_run.h"
 #include "ui/state/plot_exports.h"
+#include "ui/state/plot_series.h"
 #include "ui/state/plot_tab.h"
 #include "ui/state/preset_store.h"
 #include "ui/state/save_request.h"
@@ -191,6 +192,9 @@ struct AppState {
   ViewOptions view;
   PlotOptions plots;
   PlotExports plot_exports;  ///< a plot's export on its way to the save dialog (plot_exports.h)
+  /// The plots' series computed from the live run, kept between frames (plot_series.h).
+  SampleSeries sample_series;
+  ProjectCache project_cache;
   SaveDialog save_dialog;  ///< save, export and quit dialogs (save_request.h)
   Layout layout;
   Presentation presentation;

@@ -1,4 +1,4 @@
-#include "ui/plots/project_plots.h"
+#include "ui/state/project_plots.h"
 
 namespace swarmlab {
 
