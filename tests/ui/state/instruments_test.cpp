@@ -86,8 +86,6 @@ TEST_CASE("instruments: P and T at the wall only in a container, over the averag
   CHECK(direct.mean.hits > 0);
 }
 
-}  // namespace swarmlab
-
 TEST_CASE("instruments: a gas released from a small ball is out of virial balance, by 2 KE") {
   // J = 0, 400 particles within half the container's radius: until they reach the wall they
   // fly free, so G = sum m r.v grows as 2 KE t while P stays 0, and over a window before the
@@ -111,3 +109,5 @@ TEST_CASE("instruments: a gas released from a small ball is out of virial balanc
   in.update(run, std::nullopt, 0.2, true);
   CHECK(in.virial->imbalance == imbalance);
 }
+
+}  // namespace swarmlab
