@@ -42,7 +42,7 @@ const ImGuiWindow* window_at(float x, float y) {
 /// are missing (cjk_font.h).
 std::string drawn_language(const std::string& chosen) {
   const Language* language = find_language(chosen);
-  return language && language->needs_cjk_font && cjk_font_missing() ? "en" : chosen;
+  return language && language->needs_cjk_font && cjk_font_missing() ? source_language().code : chosen;
 }
 
 /// What a finger landing at x, y acts on. While a menu or popup is open, a tap anywhere goes to

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "access/theme_palette.h"
+#include "i18n/language.h"
 #include "ui/state/camera.h"
 #include "ui/state/colour_map.h"
 #include "ui/state/instruments.h"
@@ -131,7 +132,7 @@ struct Presentation {
 /// The language the UI speaks (app/i18n/), and the one asked for: a new language may need another
 /// font atlas, so the main loop switches between frames.
 struct LanguageChoice {
-  std::string code = "en";
+  std::string code = source_language().code;
   std::string pending;  ///< "" when none is asked for
   /// Remember the choice for the next visit (View > Language, a link's #lang=); a scripted or
   /// tested run does not.
