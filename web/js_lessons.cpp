@@ -12,7 +12,10 @@
 #include <vector>
 
 #include "i18n/translator.h"
+#include "lessons/device_words.h"
+#include "lessons/lesson.h"
 #include "lessons/lesson_link.h"
+#include "ui/lesson_player/input_kind.h"
 #include "ui/lesson_player/lesson_scene.h"
 #include "web_app.h"
 
@@ -37,6 +40,13 @@ const std::string& refuse_lesson(swarmlab::AppState& s, std::string error) {
   s.status_is_error = true;
   lesson_open_error = std::move(error);
   return lesson_open_error;
+}
+
+/// Feedback as the lesson panel shows it to this student: in the language in use, the device's
+/// words chosen ({tap|click} read for the input used last), without the *emphasis* marks.
+std::string plain_feedback(const swarmlab::AppState& app, const std::string& feedback) {
+  return swarmlab::without_emphasis(
+      swarmlab::device_words(swarmlab::tr(feedback.c_str()), swarmlab::input_kind(app)));
 }
 
 json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
@@ -67,7 +77,7 @@ json lesson_state(swarmlab::AppState& app) {
     }
     if (const auto& m = lessons.marking())
       task["answered"] = {{"correct", m->correct ? json(*m->correct) : json(nullptr)},
-                          {"feedback", m->feedback}};
+                          {"feedback", plain_feedback(app, m->feedback)}};
     else
       task["answered"] = nullptr;
   }
@@ -179,7 +189,8 @@ EMSCRIPTEN_KEEPALIVE const char* swarmlab_lesson_answer(double value) {
     const swarmlab::Marking m = step->task->kind == swarmlab::LessonTask::Kind::measure
                                     ? s.lessons.answer_number(*s.run, value)
                                     : swarmlab::answer_lesson_option(s, std::size_t(value));
-    out = {{"correct", m.correct ? json(*m.correct) : json(nullptr)}, {"feedback", m.feedback}};
+    out = {{"correct", m.correct ? json(*m.correct) : json(nullptr)},
+           {"feedback", plain_feedback(s, m.feedback)}};
   }
   answer_text = out.dump();
   return answer_text.c_str();

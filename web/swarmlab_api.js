@@ -46,7 +46,8 @@
 //   swarmlab.lessonState() { id, title, step, steps, text, task } or null; task is null or
 //                          { kind, prompt, ... } (web/README.md)
 //   swarmlab.lessonAnswer(value) answers the task (a number, or an option's index):
-//                          { correct, feedback } (correct null for a prediction)
+//                          { correct, feedback } (correct null for a prediction; feedback
+//                          in plain text as the panel shows it, words for the device in use)
 //   swarmlab.lessonNext(), swarmlab.lessonBack() move a step; return lessonState()
 //   swarmlab.lessonFinish(), swarmlab.lessonRestart() the summary, or step 1 afresh; return
 //                          lessonState()
@@ -302,10 +303,11 @@
 
   function pageAddress() { return location.href.split('#')[0]; }
 
-  /// A shared link opens in the language it was shared in: #lang= first, then the fragment.
+  /// A shared link opens in the language it was shared in: #lang= first, then the fragment
+  /// (only the fragment from a page without web/page_text.js, which knows no language).
   function withLanguage(fragment) {
-    var code = window.swarmlabLanguage || 'en';
-    return '#lang=' + encodeURIComponent(code) + '&' + fragment.replace(/^#/, '');
+    var code = window.swarmlabLanguage;
+    return (code ? '#lang=' + encodeURIComponent(code) + '&' : '#') + fragment.replace(/^#/, '');
   }
 
   // The seeks under way (swarmlab.seek), by id: { t, resolve, reject, onprogress }. The app

@@ -204,6 +204,15 @@ async function main(url) {
   await page.evaluate(() => window.swarmlab.lessonAnswer(window.swarmlab.lessonState().task.reading));
   hidden = await api(page, 'lessonState');
   check('answered right, they come back', !hidden.hidden.readouts && !hidden.hidden.card, JSON.stringify(hidden.hidden));
+  // The API's feedback is the text the panel shows: the outcome's "{tap|click|click} another
+  // ball" read for the device, not the lesson's markup (step 3's prediction).
+  await api(page, 'lessonNext');
+  const predicted = await api(page, 'lessonAnswer', 2);
+  const shownFeedback = (await api(page, 'lessonState')).task.answered.feedback;
+  for (const [where, f] of [['lessonAnswer', predicted.feedback], ['lessonState', shownFeedback]])
+    check(`${where}'s feedback is plain text with the device's words`,
+          /then (click|tap) another ball/.test(f) && !/[{}|*]/.test(f), f);
+  await api(page, 'lessonBack');  // the pair again, for 5d
 
   // 5d. A step's run never ends while it is read: lesson 1's pair (its preset ends at t = 8.9)
   // runs on to t = 1000; lesson 5's Fig. 4 (ends at t = 3.2) loops.
