@@ -4,9 +4,11 @@
 # 95 % intervals, each beside its dt systematic (--dt-check: the same seeds again at dt / 2), and
 # the ensembles' band figures into docs/figures/ensembles/. Every report is made by one build,
 # which it names (provenance.swarmlab); a folder of another build's runs is started again.
-# The first seven presets take about 45 minutes on a 2-core machine; the Fig. 4 runs of 40,000
-# particles and the Fig. 5 long runs, last, take hours more (a Fig. 4 run about 1.7 minutes of
-# a shared core, three runs a seed with the dt / 2 pair); a killed run resumes.
+# Measured on a 2-core machine with the rest of it busy (2026-12-08, build e084a9b575e0): the
+# first seven presets 26 minutes, the Fig. 4 runs of 40,000 particles 18 more; a killed run
+# resumes. Fig. 5 long at 32 seeds with its dt / 2 pair is 1.02e13 particle-steps, past what
+# `swarmlab ensemble` takes on one machine (8e12 with 2 jobs): it stops there, naming
+# `swarmlab plan`, which has no dt / 2 check yet; its report in docs/ is an older build's.
 # Usage: scripts/ensembles.sh [--seeds N] [--no-dt-check] [PRESET...]
 #   (default: 32 seeds, every preset below)
 # The ensembles stay in build/ensembles/PRESET (report.json, runs.csv, runs/); the reports are
