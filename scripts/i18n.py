@@ -112,7 +112,8 @@ def read_languages(folder=tables):
                 raise BadTable(f"{where}.{name}: missing (every language has all seven fields)")
         code = row["code"]
         if not isinstance(code, str) or not language_tag.fullmatch(code):
-            raise BadTable(f"{where}.code: must be a BCP 47 language tag such as \"pt-BR\"")
+            raise BadTable(f"{where}.code: must be a BCP 47 language tag (parts of 1 to 8 letters or digits "
+                           "joined by '-', the first of letters)")
         if any(r["code"] == code for r in rows[:i]):
             raise BadTable(f"{where}.code: {code!r} is another row's code already")
         if not isinstance(row["native_name"], str) or not row["native_name"] or control_character(row["native_name"]):

@@ -24,7 +24,7 @@ const std::vector<Language>& languages();
 /// The language the texts are written in: languages().front().
 const Language& source_language();
 
-/// The pseudo-language for layout tests only (#lang=x-pseudo): every text longer, with accents.
+/// The pseudo-language for layout tests only (#lang= and its code): every text longer, with accents.
 const Language& pseudo_language();
 
 /// The language with this exact code (a listed one or the pseudo-language), or null.

@@ -17,7 +17,7 @@ const char* const kFields[] = {"code", "native_name", "decimal_separator", "alia
 constexpr std::string_view kUiFont = "DejaVu Sans", kCjkFont = "Noto Sans CJK SC";
 
 /// BCP 47's shape, enough for a file name: parts of 1 to 8 letters or digits joined by '-', the
-/// first of letters only ("pt-BR", "x-pseudo").
+/// first of letters only (a region or a private use after the language).
 bool is_language_tag(const std::string& s) {
   std::size_t part = 0;
   bool first = true;
@@ -65,8 +65,8 @@ std::string read_row(const json& row, Language& l) {
 
   const json& code = row["code"];
   if (!code.is_string() || !is_language_tag(code.get<std::string>()))
-    return ".code: must be a BCP 47 language tag such as \"pt-BR\" (letters and digits, in parts "
-           "joined by '-'), the name of its table assets/i18n/<code>.json";
+    return ".code: must be a BCP 47 language tag (parts of 1 to 8 letters or digits joined by '-', the "
+           "first of letters), the name of its table assets/i18n/<code>.json";
   l.code = code.get<std::string>();
 
   const json& name = row["native_name"];
