@@ -14,23 +14,18 @@ struct Box {
   double x, y, w, h;
 };
 
+/// The first <rect> with x, y, width and height whose attributes go on with `then` (a regex).
+Box rect_with(const std::string& svg, const std::string& then) {
+  const std::regex rect("<rect x=\"([-0-9.]+)\" y=\"([-0-9.]+)\" width=\"([-0-9.]+)\" "
+                        "height=\"([-0-9.]+)\"" + then);
+  std::smatch m;
+  REQUIRE(std::regex_search(svg, m, rect));
+  return {std::stod(m[1]), std::stod(m[2]), std::stod(m[3]), std::stod(m[4])};
+}
 /// The legend's box: the one rect with rounded corners (the frame and background have none).
-Box legend_box(const std::string& svg) {
-  const std::regex rect(
-      "<rect x=\"([-0-9.]+)\" y=\"([-0-9.]+)\" width=\"([-0-9.]+)\" height=\"([-0-9.]+)\"[^>]* rx=\"3\"");
-  std::smatch m;
-  REQUIRE(std::regex_search(svg, m, rect));
-  return {std::stod(m[1]), std::stod(m[2]), std::stod(m[3]), std::stod(m[4])};
-}
-
+Box legend_box(const std::string& svg) { return rect_with(svg, "[^>]* rx=\"3\""); }
 /// The plot area: the frame drawn over the data (fill none).
-Box plot_frame(const std::string& svg) {
-  const std::regex rect(
-      "<rect x=\"([-0-9.]+)\" y=\"([-0-9.]+)\" width=\"([-0-9.]+)\" height=\"([-0-9.]+)\" fill=\"none\"");
-  std::smatch m;
-  REQUIRE(std::regex_search(svg, m, rect));
-  return {std::stod(m[1]), std::stod(m[2]), std::stod(m[3]), std::stod(m[4])};
-}
+Box plot_frame(const std::string& svg) { return rect_with(svg, " fill=\"none\""); }
 
 double svg_height(const std::string& svg) {
   std::smatch m;
