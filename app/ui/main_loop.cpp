@@ -196,7 +196,7 @@ bool run_frame(Frontend& f, void (*before_present)(Frontend&)) {
     new_fonts = true;
   }
   if (new_fonts) {
-    // Numbers in fields and on sliders as the language writes them (imgui_hooks.cmake).
+    // Numbers in fields and on sliders as the language writes them (third_party/imgui/patches/05-decimal-separator.patch).
     ImGui::GetCurrentContext()->PlatformLocaleDecimalPoint = translator().language().decimal_separator;
     layout.resize_panels = true;
     apply_ui_scale(layout.ui_scale, f.app->state().presentation.theme);
