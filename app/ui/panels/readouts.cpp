@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "i18n/printed.h"
 #include "i18n/translator.h"
 #include "swarm/measure/speed_distribution.h"
 #include "swarm/measure/virial_balance.h"
@@ -19,6 +20,7 @@
 #include "ui/lesson_player/lesson_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/parallel_dom/parallel_dom.h"
+#include "ui/state/instruments.h"
 
 namespace swarmlab {
 namespace {
@@ -123,8 +125,13 @@ void format_estimate(char* out, std::size_t size, double v, const std::optional<
     std::snprintf(out, size, "%.4g", v);
 }
 
-/// Where the ± comes from, in a few words for the row and a sentence for its tooltip.
-const char* error_source_words(const swarm::WallEstimate& w) {
+/// Where the ± comes from, in a few words for the row and a sentence for its tooltip; `out`
+/// holds the words while P's ± from the window's parts is withheld (shown_wall_error).
+const char* error_source_words(const swarm::WallEstimate& w, char* out, std::size_t size) {
+  if (w.source == swarm::WallErrorSource::parts && !shown_wall_error(w.mean.P, w.P_stderr, w.source)) {
+    std::snprintf(out, size, tr("± after %.0f windows"), swarm::kWallHistoryWindows);
+    return out;
+  }
   switch (w.source) {
     case swarm::WallErrorSource::history:
       return tr("± from past windows");
@@ -142,7 +149,7 @@ void wall_rows(const swarm::WallEstimate& w) {
     row("P", tr("waiting for samples"), tr("Wall pressure, once the first samples arrive."));
     return;
   }
-  format_estimate(value, sizeof value, w.mean.P, w.P_stderr);
+  format_estimate(value, sizeof value, w.mean.P, shown_wall_error(w.mean.P, w.P_stderr, w.source));
   // Each tooltip one whole text, the window's length and samples put into it.
   std::snprintf(help, sizeof help,
                 tr("P = Σ |Δpᵣ| / (4π R² t) over the last %.4g of time (%d samples; the plots' "
@@ -151,7 +158,7 @@ void wall_rows(const swarm::WallEstimate& w) {
                 w.window, w.intervals);
   row("P", value, translator().numbers(help).c_str());
   if (w.mean.hits > 0)
-    format_estimate(value, sizeof value, w.mean.T, w.T_stderr);
+    format_estimate(value, sizeof value, w.mean.T, shown_wall_error(w.mean.T, w.T_stderr, w.source));
   else
     // True whether none has hit yet or the swarm has drawn in from the wall since ("yet" was
     // read after a shrinking swarm's last hit long ago).
@@ -163,7 +170,9 @@ void wall_rows(const swarm::WallEstimate& w) {
                    "whole run). ±: the standard error of that window's mean (see 'P, T over')."),
                 w.window, w.intervals);
   row("T", value, translator().numbers(help).c_str());
-  std::snprintf(value, sizeof value, tr("last %.4g; %s"), w.window, error_source_words(w));
+  char words[120];
+  std::snprintf(value, sizeof value, tr("last %.4g; %s"), w.window,
+                error_source_words(w, words, sizeof words));
   // The two tooltips share their start, each one whole text for a translator.
   if (w.source == swarm::WallErrorSource::history)
     std::snprintf(help, sizeof help,
@@ -185,6 +194,15 @@ void wall_rows(const swarm::WallEstimate& w) {
                      "With fewer than %d samples in the window there is no ± yet rather than a "
                      "wrong one."),
                   swarm::kWallHistoryWindows, int(swarm::kWallPartsIntervals));
+  if (w.source != swarm::WallErrorSource::history) {
+    const std::size_t used = std::strlen(help);
+    std::snprintf(help + used, sizeof help - used, "\n\n%s",
+                  printed(tr("A ± from the parts as large as P or T itself says nothing yet, so "
+                             "it is not shown until it is smaller than the value or %.0f "
+                             "windows of history give it."),
+                          swarm::kWallHistoryWindows)
+                      .c_str());
+  }
   // What the ± is about, the same for both sources.
   const std::size_t used = std::strlen(help);
   std::snprintf(help + used, sizeof help - used, "\n\n%s",

@@ -72,6 +72,13 @@ void update_wall(Instruments& in, LiveRun& run, double average_window) {
 
 }  // namespace
 
+std::optional<double> shown_wall_error(double value, const std::optional<double>& error,
+                                       swarm::WallErrorSource source) {
+  if (!error || source == swarm::WallErrorSource::none) return std::nullopt;
+  if (source == swarm::WallErrorSource::parts && !(*error < std::abs(value))) return std::nullopt;
+  return error;
+}
+
 void Instruments::update(LiveRun& run, std::optional<std::size_t> selected,
                          double average_window, bool container) {
   stopwatch.observe(run.time());

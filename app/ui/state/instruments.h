@@ -27,6 +27,13 @@ struct ParticleTrack {
   double last_t = 0;
 };
 
+/// The ± to show beside a wall reading (P or T). The error from history always; the error from
+/// the window's own parts (the short-history fallback, 0.9x to 1.8x the true error at best and
+/// more at short windows, thermometry.h) only while it is smaller than the value: a ± as large
+/// as the mean says nothing yet ("84 ± 1.7e+02"), so it is withheld until it means something.
+std::optional<double> shown_wall_error(double value, const std::optional<double>& error,
+                                       swarm::WallErrorSource source);
+
 struct Instruments {
   swarm::Stopwatch stopwatch;
   std::optional<ParticleTrack> track;  ///< while a particle is selected

@@ -110,4 +110,19 @@ TEST_CASE("instruments: a gas released from a small ball is out of virial balanc
   CHECK(in.virial->imbalance == imbalance);
 }
 
+TEST_CASE("instruments: the short history's ± is shown only while it is smaller than the value") {
+  using swarm::WallErrorSource;
+  // The reported case: P = 84.26 with a ± of 170 from the window's parts is shown bare.
+  CHECK_FALSE(shown_wall_error(84.26, 170.0, WallErrorSource::parts));
+  CHECK_FALSE(shown_wall_error(84.26, 84.26, WallErrorSource::parts));
+  CHECK_FALSE(shown_wall_error(-2.0, 3.0, WallErrorSource::parts));
+  CHECK(shown_wall_error(84.26, 1.7, WallErrorSource::parts) == 1.7);
+  CHECK(shown_wall_error(-2.0, 0.5, WallErrorSource::parts) == 0.5);
+  // From history it is measured where it is defined: shown whatever its size.
+  CHECK(shown_wall_error(84.26, 170.0, WallErrorSource::history) == 170.0);
+  CHECK_FALSE(shown_wall_error(84.26, std::nullopt, WallErrorSource::history));
+  CHECK_FALSE(shown_wall_error(84.26, 1.0, WallErrorSource::none));
+  CHECK_FALSE(shown_wall_error(84.26, std::nan(""), WallErrorSource::parts));
+}
+
 }  // namespace swarmlab
