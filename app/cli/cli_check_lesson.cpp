@@ -50,7 +50,7 @@ bool listed(const swarm::Preset& p) {
 }
 
 /// Run k of a side, as `swarmlab ensemble` runs it: the record's values, the first and last
-/// sample's energies and size, and the final speeds' kinetic temperature.
+/// sample's energies and size, and T_kinetic where the record has none (the end's).
 RunResult run_one(const RunJob& job, int threads) {
   RunResult out;
   swarm::Preset preset = *job.preset;

@@ -54,7 +54,8 @@ struct LessonClaim {
 /// The quantities a claim can name: the ensemble record's time averages and books (P, T,
 /// energy_drift, wall_hits, work, heat, fit.P_V, fit.T_V, fit.P_T), the run's first and last
 /// sample (E_start, E_end, KE_start, KE_end, size_start, size_end) and T_kinetic = (2/3) KE / N
-/// in the CM frame (over the wall's window where the record has one, else at the end), which
+/// in the CM frame (over the wall's window where the record has one: a container, no
+/// expansion; else at the end), which
 /// the wall's T equals only for Maxwellian speeds.
 const std::vector<std::string>& claim_quantities();
 

@@ -15,13 +15,14 @@ std::vector<double> numbers(const json& a) {
 }
 
 /// The mean as a line and the 95 % interval as two thin lines of the same colour, leaving out
-/// the points without an interval (one run).
+/// the points without an interval (one run). The interval is named in the legend by a
+/// panel's first band only (`name_interval`): the thin lines of every colour mean the same.
 void add_band(Panel& panel, const std::vector<double>& x, const json& band, const std::string& name,
-              int colour, bool points) {
+              int colour, bool points, bool name_interval = true) {
   const std::vector<double> mean = numbers(band.at("mean")), lo = numbers(band.at("lo")),
                             hi = numbers(band.at("hi"));
   Series m{name, {}, {}, points ? Mark::line_and_points : Mark::line, colour};
-  Series l{"95 % interval over runs", {}, {}, Mark::line, colour};
+  Series l{name_interval ? "95 % interval over runs" : "", {}, {}, Mark::line, colour};
   Series h{"", {}, {}, Mark::line, colour};
   l.thin = h.thin = true;
   for (std::size_t i = 0; i < x.size() && i < mean.size(); ++i) {
@@ -55,7 +56,8 @@ void add_band_figures(std::vector<NamedFigure>& out, const json& bands, long run
     add_band(P, t, b.at("P"), "P", 0, false);
     Panel T{{"time t", "time"}, {"temperature T", "energy", false, true}};
     add_band(T, t, b.at("T"), "T at the wall", 1, false);
-    add_band(T, t, b.at("T_kinetic"), "T kinetic, (2/3) KE/N", 2, false);
+    // Reports merged before run records carried T kinetic (format 4) have none.
+    if (b.contains("T_kinetic")) add_band(T, t, b.at("T_kinetic"), "T kinetic, (2/3) KE/N", 2, false, false);
     f.panels = {P, T};
     out.push_back({prefix + "ensemble-time", f});
   }
@@ -67,7 +69,7 @@ void add_band_figures(std::vector<NamedFigure>& out, const json& bands, long run
     add_band(P, V, b.at("P"), "P", 0, true);
     Panel T{{"volume V", "length³", true}, {"temperature T", "energy", true}};
     add_band(T, V, b.at("T"), "T at the wall", 1, true);
-    add_band(T, V, b.at("T_kinetic"), "T kinetic, (2/3) KE/N", 2, true);
+    if (b.contains("T_kinetic")) add_band(T, V, b.at("T_kinetic"), "T kinetic, (2/3) KE/N", 2, true, false);
     f.panels = {P, T};
     out.push_back({prefix + "ensemble-stages", f});
   }

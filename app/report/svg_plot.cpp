@@ -156,7 +156,8 @@ void draw_series(std::ostringstream& svg, const Series& s, const PlotArea& area)
 }
 
 /// Where a panel's legend goes: the corner of the plot area that covers no drawn point, or,
-/// when every corner would cover one, a box under the panel (the figure grows to hold it),
+/// when every corner would cover one, a box under the panel (under its axis title; between
+/// two panels that share the x axis, in the gap it widens), and the figure grows to hold it,
 /// so that no point is hidden.
 struct LegendPlace {
   std::vector<const Series*> entries;

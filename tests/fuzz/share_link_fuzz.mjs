@@ -63,7 +63,12 @@ async function readChecked(hash) {
   let out;
   try {
     out = Link.read(hash);
-    if (out !== null) out = await out;
+    // A read that never settles is a hang: the race ends it at the wall-time bound.
+    let timer;
+    const hung = new Promise((resolve) => { timer = setTimeout(() => resolve(hung), 10_000); });
+    if (out !== null) out = await Promise.race([out, hung]);
+    clearTimeout(timer);
+    if (out === hung) return fail('read() never settled (10 s)', hash);
   } catch (e) {
     return fail(`read() threw or rejected (${e && e.message})`, hash);
   }

@@ -22,8 +22,10 @@ Box rect_with(const std::string& svg, const std::string& then) {
   REQUIRE(std::regex_search(svg, m, rect));
   return {std::stod(m[1]), std::stod(m[2]), std::stod(m[3]), std::stod(m[4])};
 }
+
 /// The legend's box: the one rect with rounded corners (the frame and background have none).
 Box legend_box(const std::string& svg) { return rect_with(svg, "[^>]* rx=\"3\""); }
+
 /// The plot area: the frame drawn over the data (fill none).
 Box plot_frame(const std::string& svg) { return rect_with(svg, " fill=\"none\""); }
 

@@ -118,14 +118,15 @@ async function main(url) {
         unanswered === null, `${task.kind} of ${task.options.length}: ${wrapped}; answered ${JSON.stringify(unanswered)}`);
 
   // The virial warning. A gas of 1,600 whose every particle starts with an outward drift (1,
-  // beside thermal speeds of T = 0.3) has G = sum m r.v about 600, far above the spread its
-  // equilibrium keeps (about 25 of its errors): over the read-outs' default window, the whole
-  // run, mean(3PV) - mean(2KE) = -(G(t) - G(0)) / t stays several errors off however long it
-  // runs (an independent simulation of this gas: 3.1-3.2 errors at t = 30, 3.8-3.9 at 50,
-  // 5.3-5.4 at 100; the flag is at 2), and the read-outs say so when a student averages over
-  // it. Over the last 10 time units, as the warning's help suggests, it goes: that window
-  // starts long after the gas forgot its start (0.02-1.3 errors there). Opened by a link, read
-  // and typed in the parallel DOM as a screen reader and a keyboard do.
+  // beside thermal speeds of T = 0.3) has G = sum m r.v about 600, where its equilibrium
+  // keeps G within a few tens. Averaged over the whole run (0 in 'average over'),
+  // mean(3PV) - mean(2KE) = -(G(t) - G(0)) / t, and its error sqrt(2 mean G^2) / t still
+  // holds G(0)^2: an independent simulation of this gas (free flight, specular walls, in
+  // plain JS outside the repository) gave 3.1-3.2 errors at t = 30, 3.8-3.9 at 50 and 5.3-5.4
+  // at 100, growing with t; the flag is at 2. Over the last 10 time units (the default, 20
+  // samples, is about that here) the window starts long after the gas forgot its start
+  // (0.02-1.3 errors there in the same simulation), and the warning goes. Opened by a link,
+  // read and typed in the parallel DOM as a screen reader and a keyboard do.
   const outward = [];
   let state = 12345;
   const uniform = () => ((state = (state * 16807) % 2147483647) / 2147483647);
@@ -145,8 +146,8 @@ async function main(url) {
   if (check('a link opens the outward-drifting gas', gas.started, gas.error || '')) {
     const warning = gas.page.locator('#parallel-dom').getByText(/not in equilibrium yet: the virial balance is off by/);
     // Long after the gas has crossed the sphere many times (speeds about 1, radius 1), the
-    // student averages over the whole run (0 in 'average over'; a run this long starts with
-    // the last 10.5 time units).
+    // student averages over the whole run (0 in 'average over'; the read-outs start with the
+    // last 20 samples, 10.5 time units here).
     await gas.page.waitForFunction(() => window.swarmlab.time() > 40, null, { timeout: 120_000 }).catch(() => {});
     const keyboard = person(gas.page, 'keyboard');
     await keyboard.type('average over', '0');

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <utility>
 
 #include "run/advance_to_end.h"
@@ -208,8 +209,9 @@ void Run::step_once() {
       const WallReading w = stage_meter_.reading();
       const EnergyParts energy = energy_now();
       Stage stage{R, wall_volume(R), w.P, w.T, energy.kinetic + energy.potential, w.hits};
-      stage.T_kinetic =
-          stage_kinetic_steps_ > 0 ? stage_kinetic_sum_ / double(stage_kinetic_steps_) : 0.0;
+      // An empty window (thermalize 1) reads no T kinetic, as it reads no wall T.
+      stage.T_kinetic = stage_kinetic_steps_ > 0 ? stage_kinetic_sum_ / double(stage_kinetic_steps_)
+                                                 : std::numeric_limits<double>::quiet_NaN();
       stages_.push_back(stage);
       stage_meter_.reset();
       stage_kinetic_sum_ = 0;

@@ -49,7 +49,7 @@ struct Stage {
   bool by_hand = false;   ///< ended by "Expand now" rather than by the protocol
   /// (2/3) KE / N in the CM frame, averaged over the window P and T are (read at evenly
   /// spaced steps of it: kinetic_stride in run.cpp); a stage by hand's is the value at its end
-  /// (its steps are not kept)
+  /// (its steps are not kept); NaN for an empty window (thermalize 1), like its T
   double T_kinetic = 0;
 };
 
