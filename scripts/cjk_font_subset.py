@@ -26,6 +26,8 @@ def wide(text):
 
 
 def subset(characters, out):
+    # The build's generated/ folder may not exist yet when this is the first thing made in it.
+    pathlib.Path(out).parent.mkdir(parents=True, exist_ok=True)
     with tempfile.NamedTemporaryFile("w", suffix=".txt", encoding="utf-8", delete=False) as f:
         f.write("".join(sorted(characters)) or "中")
     subprocess.run(["pyftsubset", SOURCE, f"--font-number={SC}", f"--text-file={f.name}",
