@@ -18,6 +18,15 @@ void put(RunRecord& r, const std::string& name, double value, std::optional<doub
   if (std::isfinite(value)) r.values[name] = {value, se};
 }
 
+/// The mean T kinetic of the samples that end intervals [first, last): interval i runs from
+/// sample i to sample i + 1. A plain mean: samples are evenly spaced but for a shorter last one.
+double mean_T_kinetic(const std::vector<swarm::Sample>& samples, std::size_t first,
+                      std::size_t last) {
+  double sum = 0;
+  for (std::size_t i = first; i < last; ++i) sum += samples[i + 1].T_kinetic;
+  return sum / double(last - first);
+}
+
 /// The wall intervals in at most kSeriesPoints stretches, each read as one meter would.
 void fill_series(RunRecord& r, const std::vector<swarm::Sample>& samples) {
   const std::vector<swarm::WallInterval> intervals = swarm::wall_intervals(samples);
@@ -30,9 +39,7 @@ void fill_series(RunRecord& r, const std::vector<swarm::Sample>& samples) {
     r.P.push_back(w.P);
     r.T.push_back(w.hits > 0 ? w.T : NAN);  // no hits: no temperature (null in the file)
     r.R.push_back(samples[last].R);
-    double T_kinetic = 0;  // interval i runs from sample i to sample i + 1
-    for (std::size_t i = first; i < last; ++i) T_kinetic += samples[i + 1].T_kinetic;
-    r.T_kinetic.push_back(T_kinetic / double(last - first));
+    r.T_kinetic.push_back(mean_T_kinetic(samples, first, last));
   }
 }
 
@@ -131,12 +138,9 @@ RunRecord record_of(const RunIdentity& id, swarm::Run& run) {
         swarm::wall_estimate({all.end() - a.intervals, all.end()}, 0);
     if (a.P) put(r, "P", a.P->mean, e.P_stderr);
     if (a.T) put(r, "T", a.T->mean, e.T_stderr);
-    if (a.intervals > 0) {
-      double T_kinetic = 0;  // the samples that end the window's intervals
-      for (std::size_t i = samples.size() - std::size_t(a.intervals); i < samples.size(); ++i)
-        T_kinetic += samples[i].T_kinetic;
-      put(r, "T_kinetic", T_kinetic / double(a.intervals));
-    }
+    if (a.intervals > 0)  // the window is the last a.intervals of the samples.size() - 1
+      put(r, "T_kinetic", mean_T_kinetic(samples, samples.size() - 1 - std::size_t(a.intervals),
+                                         samples.size() - 1));
   }
   if (samples.size() > 1) fill_series(r, samples);
   for (std::size_t k = 0; k < run.stages().size(); ++k) {
