@@ -129,8 +129,10 @@ std::string request_samples_csv(AppState& state) {
 }
 
 std::string request_stages_csv(AppState& state) {
-  return request_csv(state, tr("the expansion stages as CSV (R,V,P,T,E,hits,T_kinetic)"), "-stages.csv",
-                     report::stages_csv(state.run->primary().stages()));
+  // The columns from the writer's own header, so that a new column changes one place.
+  char what[200];
+  std::snprintf(what, sizeof what, tr("the expansion stages as CSV (%s)"), report::kStagesCsvHeader);
+  return request_csv(state, what, "-stages.csv", report::stages_csv(state.run->primary().stages()));
 }
 
 void request_quit(AppState& state) {
